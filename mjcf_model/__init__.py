@@ -1,0 +1,53 @@
+"""mjcf-model: MuJoCo's MJCF as a typed, immutable value.
+
+Frozen attrs nodes stand in for ElementTree elements; pure functions return
+changed copies; :mod:`serializers` reads and writes MJCF without losing anything.
+
+>>> from mjcf_model import Body, Geom, Joint
+>>> arm = Body(name="arm", children=[Joint(name="elbow", type="hinge"), Geom(size=[0.05])])
+>>> arm.joints[0].name
+'elbow'
+"""
+
+from mjcf_model.base import (
+    AttributeMap,
+    Comment,
+    Element,
+    GenericElement,
+    Node,
+    TypedElement,
+    attribute_items,
+    get_attribute,
+    with_attributes,
+)
+from mjcf_model.errors import (
+    MjcfError,
+    MjcfIncludeError,
+    MjcfLookupError,
+    MjcfSecurityError,
+    MjcfSyntaxError,
+    MjcfValueError,
+)
+from mjcf_model.nodes import *  # noqa: F403
+from mjcf_model.nodes import __all__ as _node_names
+
+__all__ = sorted(
+    [
+        "AttributeMap",
+        "Comment",
+        "Element",
+        "GenericElement",
+        "MjcfError",
+        "MjcfIncludeError",
+        "MjcfLookupError",
+        "MjcfSecurityError",
+        "MjcfSyntaxError",
+        "MjcfValueError",
+        "Node",
+        "TypedElement",
+        "attribute_items",
+        "get_attribute",
+        "with_attributes",
+        *_node_names,
+    ]
+)

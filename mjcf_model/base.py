@@ -1,0 +1,348 @@
+"""The node base classes: comments, typed elements and the generic element.
+
+Every node is a frozen attrs instance. An element keeps its children in one
+ordered ``children`` tuple (MuJoCo numbers objects in document order), the
+attributes its class does not model in :class:`AttributeMap` ``extra``, and the
+order its attributes had in the source in ``attribute_order`` (not part of
+equality: two elements that differ only in attribute order are equal).
+
+>>> from mjcf_model import Geom
+>>> g = Geom(name="ball", type="sphere", size=[0.1])
+>>> g.size
+(0.1,)
+>>> attribute_items(g)
+[('name', 'ball'), ('type', 'sphere'), ('size', (0.1,))]
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Iterable, Iterator, Mapping
+from typing import Any, ClassVar, TypeVar
+
+import attrs
+
+from mjcf_model.errors import MjcfValueError
+from mjcf_model.values import Value, format_value
+
+__all__ = [
+    "AnyElement",
+    "AttributeMap",
+    "Comment",
+    "Element",
+    "GenericElement",
+    "Node",
+    "TypedElement",
+    "attribute_items",
+    "field_table",
+    "get_attribute",
+    "to_attribute_map",
+    "to_children",
+    "with_attributes",
+    "xml_name",
+]
+
+_T = TypeVar("_T")
+
+
+class AttributeMap(Mapping[str, str]):
+    """An immutable, ordered, hashable mapping of XML attribute names to text.
+
+    Equality ignores order, like XML itself.
+
+    Example:
+        >>> m = AttributeMap({"b": "1", "a": "2"})
+        >>> list(m), m == AttributeMap({"a": "2", "b": "1"})
+        (['b', 'a'], True)
+    """
+
+    __slots__ = ("_data", "_hash")
+
+    def __init__(self, items: Mapping[str, str] | Iterable[tuple[str, str]] = ()) -> None:
+        data = dict(items)
+        for key, value in data.items():
+            if not isinstance(key, str) or not isinstance(value, str):
+                raise MjcfValueError(
+                    f"attribute names and values must be text, found {key!r}={value!r}"
+                )
+        self._data = data
+        self._hash: int | None = None
+
+    def __getitem__(self, key: str) -> str:
+        return self._data[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._data)
+
+    def __len__(self) -> int:
+        return len(self._data)
+
+    def __hash__(self) -> int:
+        if self._hash is None:
+            self._hash = hash(frozenset(self._data.items()))
+        return self._hash
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, AttributeMap):
+            return self._data == other._data
+        if isinstance(other, Mapping):
+            return self._data == dict(other)
+        return NotImplemented
+
+    def __repr__(self) -> str:
+        return f"AttributeMap({self._data!r})"
+
+    def replaced(self, changes: Mapping[str, str | None]) -> AttributeMap:
+        """Return a copy with ``changes`` applied; ``None`` removes a key.
+
+        Example:
+            >>> AttributeMap({"a": "1"}).replaced({"a": None, "b": "2"})
+            AttributeMap({'b': '2'})
+        """
+        data = dict(self._data)
+        for key, value in changes.items():
+            if value is None:
+                data.pop(key, None)
+            else:
+                data[key] = value
+        return AttributeMap(data)
+
+
+_EMPTY = AttributeMap()
+
+
+def to_attribute_map(value: Mapping[str, str] | Iterable[tuple[str, str]] | None) -> AttributeMap:
+    """Converter: any mapping or pair sequence becomes an :class:`AttributeMap`.
+
+    Example:
+        >>> to_attribute_map({"x": "1"})
+        AttributeMap({'x': '1'})
+    """
+    if isinstance(value, AttributeMap):
+        return value
+    if not value:
+        return _EMPTY
+    return AttributeMap(value)
+
+
+def to_children(value: Iterable[Node] | None) -> tuple[Node, ...]:
+    """Converter: any iterable of nodes becomes a tuple, checking each item is a node.
+
+    Example:
+        >>> to_children([Comment(text=" hi ")])
+        (Comment(text=' hi '),)
+    """
+    if value is None:
+        return ()
+    items = value if isinstance(value, tuple) else tuple(value)
+    for item in items:
+        if not isinstance(item, Node):
+            raise MjcfValueError(f"children must be nodes, found {type(item).__name__}: {item!r}")
+    return items
+
+
+@attrs.frozen(kw_only=True)
+class Node:
+    """Anything that can stand in an element's ``children``: an element or a comment."""
+
+
+def _check_comment(_instance: Any, _attribute: Any, value: str) -> None:
+    if not isinstance(value, str):
+        raise MjcfValueError(f"comment text must be a string, found {value!r}")
+    if "--" in value or value.endswith("-"):
+        raise MjcfValueError(f"an XML comment cannot contain '--' or end with '-': {value!r}")
+
+
+@attrs.frozen(kw_only=True)
+class Comment(Node):
+    """An XML comment, kept where it stood.
+
+    Example:
+        >>> Comment(text=" left arm ")
+        Comment(text=' left arm ')
+    """
+
+    #: The text between ``<!--`` and ``-->``, spaces included.
+    text: str = attrs.field(validator=_check_comment)
+
+
+def _optional_text(_instance: Any, _attribute: Any, value: str | None) -> None:
+    if value is not None and not isinstance(value, str):
+        raise MjcfValueError(f"element text must be a string, found {value!r}")
+
+
+@attrs.frozen(kw_only=True)
+class Element(Node):
+    """Base of every element node, typed or generic."""
+
+    #: Child elements and comments, in document order.
+    children: tuple[Node, ...] = attrs.field(default=(), converter=to_children)
+    #: Character data inside the element, unless it is only white space.
+    text: str | None = attrs.field(default=None, validator=_optional_text)
+
+    def _of_type(self, cls: type[_T]) -> tuple[_T, ...]:
+        return tuple(c for c in self.children if isinstance(c, cls))
+
+    def _first(self, cls: type[_T]) -> _T | None:
+        for child in self.children:
+            if isinstance(child, cls):
+                return child
+        return None
+
+    @property
+    def elements(self) -> tuple[AnyElement, ...]:
+        """The child elements, comments left out."""
+        return tuple(c for c in self.children if isinstance(c, (TypedElement, GenericElement)))
+
+
+@attrs.frozen(kw_only=True, repr=False)
+class TypedElement(Element):
+    """Base of the typed element classes (``Geom``, ``Body``, ...).
+
+    Subclasses set the class variable ``tag`` and declare one field per MJCF
+    attribute, spelled as in MJCF (``class`` is ``dclass``). ``None`` means
+    "not written".
+    """
+
+    #: The XML tag of this element type.
+    tag: ClassVar[str]
+    #: Attributes this class does not model, in source order, as text.
+    extra: AttributeMap = attrs.field(factory=AttributeMap, converter=to_attribute_map)
+    #: XML attribute names in the order they stood in the source (ignored by ``==``).
+    attribute_order: tuple[str, ...] = attrs.field(default=(), eq=False, repr=False)
+
+    def __repr__(self) -> str:
+        """Show only the attributes that are written, then extras and children."""
+        table = field_table(type(self))
+        parts = [
+            f"{field}={getattr(self, field)!r}"
+            for field in table.values()
+            if getattr(self, field) is not None
+        ]
+        if self.extra:
+            parts.append(f"extra={self.extra!r}")
+        if self.text is not None:
+            parts.append(f"text={self.text!r}")
+        if self.children:
+            parts.append(f"children={self.children!r}")
+        return f"{type(self).__name__}({', '.join(parts)})"
+
+
+@attrs.frozen(kw_only=True)
+class GenericElement(Element):
+    """An element without a typed class: future MJCF, plugins' configuration, ``visual``...
+
+    Example:
+        >>> e = GenericElement(tag="replicate", attributes={"count": "3"})
+        >>> e.attributes["count"]
+        '3'
+    """
+
+    #: The XML tag.
+    tag: str = attrs.field(validator=attrs.validators.instance_of(str))
+    #: All attributes, as text, in source order.
+    attributes: AttributeMap = attrs.field(factory=AttributeMap, converter=to_attribute_map)
+
+
+#: Either kind of element.
+AnyElement = TypedElement | GenericElement
+_E = TypeVar("_E", bound=TypedElement | GenericElement)
+
+_BASE_FIELDS = frozenset({"children", "text", "extra", "attribute_order"})
+
+
+def xml_name(field: attrs.Attribute[Any]) -> str:
+    """The MJCF attribute name of a node field (``dclass`` is ``class``)."""
+    return str(field.metadata.get("xml", field.name))
+
+
+@functools.cache
+def field_table(cls: type[TypedElement]) -> dict[str, str]:
+    """Map each MJCF attribute name a typed class models to its field name.
+
+    Example:
+        >>> from mjcf_model import Geom
+        >>> field_table(Geom)["class"]
+        'dclass'
+    """
+    table = {xml_name(f): f.name for f in attrs.fields(cls) if f.name not in _BASE_FIELDS}
+    if "name" in table:  # the name first: it is what people look for
+        table = {"name": "name", **table}
+    return table
+
+
+def attribute_items(element: AnyElement) -> list[tuple[str, Value]]:
+    """The element's written attributes as ``(xml name, value)``, in source order.
+
+    Attributes that were not in the source (set in Python) follow in field order;
+    typed values stay typed, unknown ones are text.
+
+    Example:
+        >>> from mjcf_model import Joint
+        >>> attribute_items(Joint(name="j", range=(0, 1)))
+        [('name', 'j'), ('range', (0.0, 1.0))]
+    """
+    if isinstance(element, GenericElement):
+        return list(element.attributes.items())
+    table = field_table(type(element))
+    values: dict[str, Value] = {}
+    for xml, field in table.items():
+        value = getattr(element, field)
+        if value is not None:
+            values[xml] = value
+    values.update(element.extra)
+    if not element.attribute_order:
+        return list(values.items())
+    ordered = [(k, values.pop(k)) for k in element.attribute_order if k in values]
+    ordered.extend(values.items())
+    return ordered
+
+
+def get_attribute(element: AnyElement, name: str) -> Value | None:
+    """The value of the MJCF attribute ``name``, or ``None`` when not written.
+
+    Example:
+        >>> from mjcf_model import Geom
+        >>> get_attribute(Geom(dclass="arm"), "class")
+        'arm'
+    """
+    if isinstance(element, GenericElement):
+        return element.attributes.get(name)
+    field = field_table(type(element)).get(name)
+    if field is not None:
+        value: Value | None = getattr(element, field)
+        return value
+    return element.extra.get(name)
+
+
+def with_attributes(element: _E, changes: Mapping[str, Value | None]) -> _E:
+    """Return a copy with MJCF attributes set (``None`` removes one).
+
+    Typed fields receive typed values (converted as usual); other attributes go
+    to ``extra`` as text. The source order is kept; new attributes go last.
+
+    Example:
+        >>> from mjcf_model import Site
+        >>> with_attributes(Site(name="s"), {"name": "p_s", "class": "c"}).dclass
+        'c'
+    """
+    if not changes:
+        return element
+    if isinstance(element, GenericElement):
+        text = {k: None if v is None else format_value(v) for k, v in changes.items()}
+        return attrs.evolve(element, attributes=element.attributes.replaced(text))
+    assert isinstance(element, TypedElement)
+    table = field_table(type(element))
+    fields: dict[str, Any] = {}
+    extra: dict[str, str | None] = {}
+    for key, value in changes.items():
+        field = table.get(key)
+        if field is not None:
+            fields[field] = value
+        elif value is None or isinstance(value, str):
+            extra[key] = value
+        else:
+            extra[key] = format_value(value)
+    if extra:
+        fields["extra"] = element.extra.replaced(extra)
+    return attrs.evolve(element, **fields)

@@ -1,0 +1,107 @@
+"""The exceptions mjcf-model raises.
+
+Every error derives from :class:`MjcfError`. Each subclass also derives from the
+builtin exception that existing code already catches (``ValueError``,
+``KeyError``, ``OSError``), so ``except ValueError`` keeps working.
+
+A message says *where* (file, line and element path, as far as they are
+known), *what was expected* and *what was found*:
+
+>>> from serializers import loads
+>>> loads('<mujoco><worldbody><geom pos="0 1"/></worldbody></mujoco>')
+Traceback (most recent call last):
+    ...
+mjcf_model.errors.MjcfValueError: <string>:1: /mujoco/worldbody/geom: attribute 'pos': expected 3 numbers, found 2 in '0 1'
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "MjcfError",
+    "MjcfIncludeError",
+    "MjcfLookupError",
+    "MjcfSecurityError",
+    "MjcfSyntaxError",
+    "MjcfValueError",
+]
+
+
+class MjcfError(Exception):
+    """Root of every error raised by mjcf-model.
+
+    Attributes:
+        file: The file the problem was found in, ``"<string>"`` for text, or ``None``.
+        line: The 1-based line number, or ``None`` when not known.
+        path: The element path (``/mujoco/worldbody/body[@name='torso']/geom[2]``) or ``None``.
+        detail: The message without the location prefix.
+    """
+
+    def __init__(
+        self,
+        detail: str,
+        *,
+        file: str | None = None,
+        line: int | None = None,
+        path: str | None = None,
+    ) -> None:
+        self.detail = detail
+        self.file = file
+        self.line = line
+        self.path = path
+        super().__init__(self._render())
+
+    def _render(self) -> str:
+        where = ""
+        if self.file is not None:
+            where = self.file if self.line is None else f"{self.file}:{self.line}"
+        elif self.line is not None:
+            where = f"line {self.line}"
+        parts = [p for p in (where, self.path) if p]
+        return ": ".join([*parts, self.detail])
+
+    def __str__(self) -> str:
+        return self._render()
+
+    def located(
+        self, *, file: str | None = None, line: int | None = None, path: str | None = None
+    ) -> MjcfError:
+        """Return a copy of this error with missing location parts filled in.
+
+        Example:
+            >>> err = MjcfValueError("bad").located(file="a.xml", line=3)
+            >>> str(err)
+            'a.xml:3: bad'
+        """
+        return type(self)(
+            self.detail,
+            file=self.file if self.file is not None else file,
+            line=self.line if self.line is not None else line,
+            path=self.path if self.path is not None else path,
+        )
+
+
+class MjcfSyntaxError(MjcfError, ValueError):
+    """The text is not well-formed XML, or not MJCF at all (wrong root element)."""
+
+
+class MjcfValueError(MjcfError, ValueError):
+    """An attribute value has the wrong form: count of numbers, number syntax, keyword."""
+
+
+class MjcfLookupError(MjcfError, KeyError):
+    """A name, tag or attribute that was asked for does not exist; lists those that do."""
+
+    def __str__(self) -> str:
+        # KeyError would otherwise quote the message with repr().
+        return self._render()
+
+
+class MjcfIncludeError(MjcfError, OSError):
+    """An ``<include>`` names a file that cannot be read, or files include each other."""
+
+    def __str__(self) -> str:
+        return self._render()
+
+
+class MjcfSecurityError(MjcfError, ValueError):
+    """The XML declares a DTD or entities; mjcf-model never expands or fetches them."""

@@ -1,0 +1,120 @@
+"""The root ``<mujoco>`` element and ``<include>``.
+
+>>> from mjcf_model.nodes.body import Worldbody
+>>> Mujoco(model="m", children=[Worldbody()]).worldbody
+Worldbody(children=(), extra=AttributeMap({}))
+"""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+import attrs
+
+from mjcf_model.base import TypedElement
+from mjcf_model.values import to_str
+
+__all__ = ["Include", "Mujoco"]
+
+
+@attrs.frozen(kw_only=True, repr=False)
+class Include(TypedElement):
+    """Includes another MJCF file's elements here."""
+
+    tag: ClassVar[str] = "include"
+    #: File name, relative to the model (or asset) directory.
+    file: str | None = attrs.field(default=None, converter=to_str)
+
+
+@attrs.frozen(kw_only=True, repr=False)
+class Mujoco(TypedElement):
+    """The root of an MJCF model."""
+
+    tag: ClassVar[str] = "mujoco"
+    #: Name of the model asset.
+    model: str | None = attrs.field(default=None, converter=to_str)
+
+    @property
+    def compiler(self) -> Compiler | None:
+        """The first ``<compiler>`` section, or ``None``."""
+        return self._first(Compiler)
+
+    @property
+    def option(self) -> Option | None:
+        """The first ``<option>`` section, or ``None``."""
+        return self._first(Option)
+
+    @property
+    def size(self) -> Size | None:
+        """The first ``<size>`` section, or ``None``."""
+        return self._first(Size)
+
+    @property
+    def statistic(self) -> Statistic | None:
+        """The first ``<statistic>`` section, or ``None``."""
+        return self._first(Statistic)
+
+    @property
+    def visual(self) -> Visual | None:
+        """The first ``<visual>`` section, or ``None``."""
+        return self._first(Visual)
+
+    @property
+    def default(self) -> Default | None:
+        """The first ``<default>`` section, or ``None``."""
+        return self._first(Default)
+
+    @property
+    def asset(self) -> Asset | None:
+        """The first ``<asset>`` section, or ``None``."""
+        return self._first(Asset)
+
+    @property
+    def worldbody(self) -> Worldbody | None:
+        """The first ``<worldbody>`` section, or ``None``."""
+        return self._first(Worldbody)
+
+    @property
+    def deformable(self) -> Deformable | None:
+        """The first ``<deformable>`` section, or ``None``."""
+        return self._first(Deformable)
+
+    @property
+    def contact(self) -> Contact | None:
+        """The first ``<contact>`` section, or ``None``."""
+        return self._first(Contact)
+
+    @property
+    def equality(self) -> Equality | None:
+        """The first ``<equality>`` section, or ``None``."""
+        return self._first(Equality)
+
+    @property
+    def tendon(self) -> Tendon | None:
+        """The first ``<tendon>`` section, or ``None``."""
+        return self._first(Tendon)
+
+    @property
+    def actuator(self) -> Actuator | None:
+        """The first ``<actuator>`` section, or ``None``."""
+        return self._first(Actuator)
+
+    @property
+    def sensor(self) -> Sensor | None:
+        """The first ``<sensor>`` section, or ``None``."""
+        return self._first(Sensor)
+
+    @property
+    def keyframe(self) -> Keyframe | None:
+        """The first ``<keyframe>`` section, or ``None``."""
+        return self._first(Keyframe)
+
+    @property
+    def custom(self) -> Custom | None:
+        """The first ``<custom>`` section, or ``None``."""
+        return self._first(Custom)
+
+    @property
+    def extension(self) -> Extension | None:
+        """The first ``<extension>`` section, or ``None``."""
+        return self._first(Extension)

@@ -1,0 +1,291 @@
+"""Attribute values: the one place where MJCF text becomes Python values and back.
+
+Node fields hold ``str``, ``int``, ``float``, ``bool`` or tuples of numbers. The
+converters below are the attrs converters of those fields: they accept MJCF
+text (as the reader hands it over), Python numbers, any sequence and numpy
+arrays, and raise :class:`~mjcf_model.errors.MjcfValueError` on a wrong count
+or a non-number. :func:`format_value` is their inverse and the only place that
+formats numbers: floats are written with the shortest text that reads back to
+the same double, so MuJoCo compiles the written model bit for bit the same.
+
+>>> to_vec3("0 0.1 2")
+(0.0, 0.1, 2.0)
+>>> format_value((0.0, 0.1, 2.0))
+'0 0.1 2'
+>>> format_value(True)
+'true'
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Collection, Iterable
+from typing import Any
+
+from mjcf_model.errors import MjcfValueError
+
+__all__ = [
+    "Floats",
+    "Ints",
+    "Value",
+    "format_float",
+    "format_value",
+    "one_of",
+    "to_bool",
+    "to_float",
+    "to_floats",
+    "to_int",
+    "to_ints",
+    "to_str",
+    "to_vec1to3",
+    "to_vec2",
+    "to_vec2to3",
+    "to_vec3",
+    "to_vec3to5",
+    "to_vec4",
+    "to_vec5",
+    "to_vec6",
+]
+
+#: A vector of numbers as a node stores it.
+Floats = tuple[float, ...]
+#: A vector of integers as a node stores it.
+Ints = tuple[int, ...]
+#: Anything a node field may hold.
+Value = str | int | float | bool | Floats | Ints
+
+
+def _parse_float(token: Any, original: object) -> float:
+    if isinstance(token, bool):
+        raise MjcfValueError(f"expected a number, found {original!r}")
+    try:
+        return float(token)
+    except (TypeError, ValueError):
+        raise MjcfValueError(f"expected a number, found {token!r}") from None
+
+
+def _parse_int(token: Any, original: object) -> int:
+    if isinstance(token, bool):
+        raise MjcfValueError(f"expected an integer, found {original!r}")
+    if isinstance(token, int):
+        return token
+    if isinstance(token, float):
+        if token.is_integer():
+            return int(token)
+        raise MjcfValueError(f"expected an integer, found {token!r}")
+    if hasattr(token, "__index__"):  # numpy integers
+        return int(token)
+    try:
+        return int(token)
+    except (TypeError, ValueError):
+        raise MjcfValueError(f"expected an integer, found {token!r}") from None
+
+
+def _tokens(value: object) -> list[Any]:
+    if isinstance(value, str):
+        return value.split()
+    if isinstance(value, Iterable):
+        return list(value)
+    if hasattr(value, "tolist"):  # numpy scalar
+        return [value.tolist()]
+    return [value]
+
+
+def _count_phrase(lo: int, hi: int | None) -> str:
+    if hi == lo:
+        return f"{lo} number" + ("" if lo == 1 else "s")
+    if hi is None:
+        return f"at least {lo} numbers"
+    return f"{lo} to {hi} numbers"
+
+
+def _floats(value: object, lo: int, hi: int | None) -> Floats:
+    if isinstance(value, tuple) and value and all(type(v) is float for v in value):
+        items: Floats = value
+    else:
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            value = (value,)
+        items = tuple(_parse_float(t, value) for t in _tokens(value))
+    n = len(items)
+    if n < lo or (hi is not None and n > hi):
+        found = value if isinstance(value, str) else items
+        raise MjcfValueError(f"expected {_count_phrase(lo, hi)}, found {n} in {found!r}")
+    return items
+
+
+def to_str(value: str | None) -> str | None:
+    """Accept a string (names, references, keywords, file names) unchanged.
+
+    Example:
+        >>> to_str("torso")
+        'torso'
+    """
+    if value is None or isinstance(value, str):
+        return value
+    raise MjcfValueError(f"expected text, found {value!r}")
+
+
+def to_float(value: str | float | None) -> float | None:
+    """Convert text or a number to one float.
+
+    Example:
+        >>> to_float("1e-3")
+        0.001
+    """
+    if value is None or type(value) is float:
+        return value
+    if isinstance(value, str):
+        (item,) = _floats(value, 1, 1)
+        return item
+    return _parse_float(value, value)
+
+
+def to_int(value: str | int | None) -> int | None:
+    """Convert text or an integral number to an int.
+
+    Example:
+        >>> to_int("3")
+        3
+    """
+    if value is None or type(value) is int:
+        return value
+    if isinstance(value, str):
+        tokens = value.split()
+        if len(tokens) != 1:
+            raise MjcfValueError(f"expected one integer, found {value!r}")
+        return _parse_int(tokens[0], value)
+    return _parse_int(value, value)
+
+
+def to_bool(value: str | bool | None) -> bool | None:
+    """Convert MJCF ``"true"``/``"false"`` (or a bool) to a bool.
+
+    Example:
+        >>> to_bool("false")
+        False
+    """
+    if value is None or isinstance(value, bool):
+        return value
+    if value == "true":
+        return True
+    if value == "false":
+        return False
+    if hasattr(value, "dtype") and getattr(value, "dtype", None) == bool:  # numpy bool
+        return bool(value)
+    raise MjcfValueError(f"expected 'true' or 'false', found {value!r}")
+
+
+def to_floats(value: object) -> Floats | None:
+    """Convert text, a sequence or an array to any number of floats.
+
+    Example:
+        >>> to_floats([1, 2.5])
+        (1.0, 2.5)
+    """
+    return None if value is None else _floats(value, 0, None)
+
+
+def to_ints(value: object) -> Ints | None:
+    """Convert text, a sequence or an array to any number of ints.
+
+    Example:
+        >>> to_ints("0 1 2")
+        (0, 1, 2)
+    """
+    if value is None:
+        return None
+    return tuple(_parse_int(t, value) for t in _tokens(value))
+
+
+def to_vec2(value: object) -> Floats | None:
+    """Exactly two floats (ranges, ``solref``)."""
+    return None if value is None else _floats(value, 2, 2)
+
+
+def to_vec3(value: object) -> Floats | None:
+    """Exactly three floats (positions, axes, Euler angles)."""
+    return None if value is None else _floats(value, 3, 3)
+
+
+def to_vec4(value: object) -> Floats | None:
+    """Exactly four floats (quaternions, ``rgba``, ``axisangle``)."""
+    return None if value is None else _floats(value, 4, 4)
+
+
+def to_vec5(value: object) -> Floats | None:
+    """Exactly five floats (``polycoef``)."""
+    return None if value is None else _floats(value, 5, 5)
+
+
+def to_vec6(value: object) -> Floats | None:
+    """Exactly six floats (``fromto``, ``xyaxes``, ``fullinertia``)."""
+    return None if value is None else _floats(value, 6, 6)
+
+
+def to_vec1to3(value: object) -> Floats | None:
+    """One to three floats (geom and site ``size``, ``friction``)."""
+    return None if value is None else _floats(value, 1, 3)
+
+
+def to_vec2to3(value: object) -> Floats | None:
+    """Two or three floats."""
+    return None if value is None else _floats(value, 2, 3)
+
+
+def to_vec3to5(value: object) -> Floats | None:
+    """Three to five floats (``solimp``)."""
+    return None if value is None else _floats(value, 3, 5)
+
+
+def one_of(choices: Collection[str]) -> Callable[[Any, Any, str | None], None]:
+    """Make an attrs validator that accepts ``None`` or one of the MJCF keywords.
+
+    Example:
+        >>> check = one_of({"box", "sphere"})
+        >>> check(None, None, "cube")
+        Traceback (most recent call last):
+            ...
+        mjcf_model.errors.MjcfValueError: expected one of 'box', 'sphere', found 'cube'
+    """
+    allowed = frozenset(choices)
+    listing = ", ".join(repr(c) for c in sorted(allowed))
+
+    def validate(_instance: Any, _attribute: Any, value: str | None) -> None:
+        if value is not None and value not in allowed:
+            raise MjcfValueError(f"expected one of {listing}, found {value!r}")
+
+    return validate
+
+
+def format_float(value: float) -> str:
+    """Write a float as the shortest text that reads back to the same double.
+
+    Integral values drop the ``.0`` (``1.0`` becomes ``"1"``); ``-0.0`` keeps its sign.
+
+    Example:
+        >>> format_float(0.1), format_float(2.0), format_float(-0.0), format_float(1e-08)
+        ('0.1', '2', '-0', '1e-08')
+    """
+    if value.is_integer() and abs(value) < 1e16:
+        if value == 0.0 and math.copysign(1.0, value) < 0:
+            return "-0"
+        return str(int(value))
+    return repr(value)
+
+
+def format_value(value: Value) -> str:
+    """Write a field value as MJCF attribute text.
+
+    Example:
+        >>> format_value((1.0, 0.5)), format_value(3), format_value(False), format_value("a")
+        ('1 0.5', '3', 'false', 'a')
+    """
+    if isinstance(value, str):
+        return value
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return format_float(value)
+    if isinstance(value, int):
+        return str(value)
+    return " ".join(format_float(v) if isinstance(v, float) else str(v) for v in value)

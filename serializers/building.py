@@ -1,0 +1,124 @@
+"""Turning one parsed element (tag, attributes, children) into a node.
+
+Both readers, the text reader and :func:`serializers.from_etree`, hand every
+element to :func:`build_element`, so the two cannot disagree.
+
+>>> node = build_element("body/geom", "geom", [("name", "g"), ("size", "0.1")], [], None)
+>>> node.name, node.size
+('g', (0.1,))
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement, field_table
+from mjcf_model.errors import MjcfValueError
+from mjcf_model.namespaces import child_key
+from mjcf_model.registry import CLASS_BY_KEY
+
+__all__ = ["build_element", "children_context", "element_step", "guess_context"]
+
+#: Contexts tried, in order, for an element read without its parents.
+_CONTEXTS = (None, "mujoco", "body", "asset", "default", "actuator", "sensor", "tendon",
+             "equality", "contact", "keyframe", "custom", "deformable", "extension")
+
+
+def children_context(key: str | None, parent_context: str | None) -> str | None:
+    """The context an element's children are read in.
+
+    An element the table does not know (``key`` is ``None``), and an include, pass
+    their parent's context on, so future wrapper elements keep their contents typed.
+
+    Example:
+        >>> children_context("body/frame", "body"), children_context(None, "body")
+        ('body/frame', 'body')
+    """
+    if key is None or key == "include":
+        return parent_context
+    return key
+
+
+def guess_context(tag: str) -> str | None:
+    """The most likely parent context of a ``tag`` element read on its own.
+
+    Example:
+        >>> guess_context("mujoco"), guess_context("geom"), guess_context("motor")
+        (None, 'body', 'actuator')
+    """
+    for context in _CONTEXTS:
+        if child_key(context, tag) is not None:
+            return context
+    return None
+
+
+def element_step(tag: str, attributes: Sequence[tuple[str, str]], index: int) -> str:
+    """One step of an element path: ``body[@name='arm']`` or ``geom[3]`` (1-based).
+
+    Example:
+        >>> element_step("body", [("name", "arm")], 1), element_step("geom", [], 3)
+        ("body[@name='arm']", 'geom[3]')
+    """
+    for key, value in attributes:
+        if key == "name":
+            return f"{tag}[@name={value!r}]"
+    return tag if index == 1 else f"{tag}[{index}]"
+
+
+def build_element(
+    key: str | None,
+    tag: str,
+    attributes: Sequence[tuple[str, str]],
+    children: Sequence[Node],
+    text: str | None,
+) -> AnyElement:
+    """Build the node for one element from its parsed parts.
+
+    Args:
+        key: The element's schema key (see :func:`mjcf_model.namespaces.child_key`).
+        tag: The XML tag.
+        attributes: ``(name, text)`` pairs in source order.
+        children: The already built child nodes.
+        text: Character data, or ``None`` when there is none but white space.
+
+    Raises:
+        MjcfValueError: An attribute value does not fit its field; the message
+            names the attribute (the caller adds file, line and path).
+    """
+    cls = CLASS_BY_KEY.get(key) if key is not None else None
+    if cls is None or cls.tag != tag:
+        return GenericElement(tag=tag, attributes=attributes, children=children, text=text)
+    table = field_table(cls)
+    fields: dict[str, str] = {}
+    extra: list[tuple[str, str]] = []
+    for name, value in attributes:
+        field = table.get(name)
+        if field is None:
+            extra.append((name, value))
+        else:
+            fields[field] = value
+    try:
+        return cls(
+            **fields,
+            extra=extra,
+            children=children,
+            text=text,
+            attribute_order=tuple(name for name, _ in attributes),
+        )
+    except MjcfValueError:
+        raise _blame_attribute(cls, table, attributes) from None
+
+
+def _blame_attribute(
+    cls: type[TypedElement], table: dict[str, str], attributes: Sequence[tuple[str, str]]
+) -> MjcfValueError:
+    """Find the attribute whose value the class rejects (only on the error path)."""
+    for name, value in attributes:
+        field = table.get(name)
+        if field is None:
+            continue
+        try:
+            cls(**{field: value})
+        except MjcfValueError as error:
+            return MjcfValueError(f"attribute {name!r}: {error.detail}")
+    return MjcfValueError(f"<{cls.tag}> rejects the combination of its attributes")

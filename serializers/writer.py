@@ -1,0 +1,156 @@
+"""Writing MJCF: nodes into text, files and ElementTree.
+
+The mirror of :mod:`serializers.reader`. Attribute values are formatted by
+:func:`mjcf_model.values.format_value`, the one place numbers become text, and
+come out in the order they had in the source.
+
+>>> from mjcf_model import Geom, Mujoco, Worldbody
+>>> print(dumps(Mujoco(children=[Worldbody(children=[Geom(size=[0.1])])])), end="")
+<mujoco>
+  <worldbody>
+    <geom size="0.1"/>
+  </worldbody>
+</mujoco>
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import tempfile
+import xml.etree.ElementTree as ET
+from pathlib import Path
+from typing import IO
+
+from mjcf_model.base import AnyElement, Comment, GenericElement, Node, attribute_items
+from mjcf_model.errors import MjcfValueError
+from mjcf_model.values import format_value
+
+__all__ = ["attribute_texts", "dump", "dumps", "to_etree"]
+
+_ATTRIBUTE_ESCAPES = str.maketrans(
+    {"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "\n": "&#10;", "\r": "&#13;",
+     "\t": "&#9;"}
+)
+_TEXT_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;"})
+
+
+def attribute_texts(element: AnyElement) -> list[tuple[str, str]]:
+    """The element's attributes as ``(name, text)`` pairs, as they will be written.
+
+    Example:
+        >>> from mjcf_model import Joint
+        >>> attribute_texts(Joint(name="j", range=[-1, 1.5]))
+        [('name', 'j'), ('range', '-1 1.5')]
+    """
+    if isinstance(element, GenericElement):
+        return list(element.attributes.items())
+    return [(name, format_value(value)) for name, value in attribute_items(element)]
+
+
+def _tag(element: AnyElement) -> str:
+    return element.tag
+
+
+def _write(node: Node, depth: int, indent: str, out: list[str]) -> None:
+    pad = indent * depth
+    if isinstance(node, Comment):
+        out.append(f"{pad}<!--{node.text}-->\n")
+        return
+    if not isinstance(node, AnyElement):
+        raise MjcfValueError(f"cannot write {type(node).__name__}: not an element or a comment")
+    tag = _tag(node)
+    attrs = "".join(
+        f' {name}="{text.translate(_ATTRIBUTE_ESCAPES)}"' for name, text in attribute_texts(node)
+    )
+    if not node.children and node.text is None:
+        out.append(f"{pad}<{tag}{attrs}/>\n")
+        return
+    if not node.children:
+        out.append(f"{pad}<{tag}{attrs}>{node.text.translate(_TEXT_ESCAPES)}</{tag}>\n")  # type: ignore[union-attr]
+        return
+    out.append(f"{pad}<{tag}{attrs}>")
+    if node.text is not None:
+        out.append(node.text.translate(_TEXT_ESCAPES))
+    out.append("\n")
+    for child in node.children:
+        _write(child, depth + 1, indent, out)
+    out.append(f"{pad}</{tag}>\n")
+
+
+def dumps(node: Node, *, indent: str = "  ") -> str:
+    """Write a node (usually a whole :class:`~mjcf_model.Mujoco`) as MJCF text.
+
+    Args:
+        node: The node to write.
+        indent: The indentation of one nesting level.
+
+    Example:
+        >>> from mjcf_model import Site
+        >>> dumps(Site(name="tip", pos=(0, 0, 0.1)))
+        '<site name="tip" pos="0 0 0.1"/>\\n'
+    """
+    out: list[str] = []
+    _write(node, 0, indent, out)
+    return "".join(out)
+
+
+def dump(
+    node: Node,
+    target: str | os.PathLike[str] | IO[str],
+    *,
+    indent: str = "  ",
+) -> None:
+    """Write a node to a file path or an open text file.
+
+    Writing to a path is atomic: the text goes to a temporary file beside the
+    target, which then replaces it. If anything fails, the old file is untouched
+    and no partial file is left.
+
+    Example:
+        >>> import tempfile, pathlib
+        >>> from mjcf_model import Mujoco
+        >>> path = pathlib.Path(tempfile.mkdtemp()) / "out.xml"
+        >>> dump(Mujoco(model="m"), path)
+        >>> path.read_text()
+        '<mujoco model="m"/>\\n'
+    """
+    text = dumps(node, indent=indent)
+    if not isinstance(target, (str, os.PathLike)):
+        target.write(text)
+        return
+    path = Path(target)
+    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(handle, "w", encoding="utf-8") as stream:
+            stream.write(text)
+            stream.flush()
+            os.fsync(stream.fileno())
+        if path.exists():
+            with contextlib.suppress(OSError):
+                os.chmod(temporary, path.stat().st_mode & 0o7777)
+        os.replace(temporary, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(temporary)
+        raise
+
+
+def to_etree(node: Node) -> ET.Element:
+    """Convert a node and its subtree to ElementTree.
+
+    Comments become ``ET.Comment`` elements; attribute order is kept.
+
+    Example:
+        >>> from mjcf_model import Body, Geom
+        >>> ET.tostring(to_etree(Body(name="b", children=[Geom(size=[1])])), encoding="unicode")
+        '<body name="b"><geom size="1" /></body>'
+    """
+    if isinstance(node, Comment):
+        return ET.Comment(node.text)
+    if not isinstance(node, AnyElement):
+        raise MjcfValueError(f"cannot convert {type(node).__name__}: not an element or a comment")
+    element = ET.Element(_tag(node), dict(attribute_texts(node)))
+    element.text = node.text
+    element.extend(to_etree(child) for child in node.children)
+    return element
