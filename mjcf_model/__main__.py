@@ -1,0 +1,7 @@
+"""``python -m mjcf_model``: the same as the ``mjcf-model`` command."""
+
+import sys
+
+from mjcf_model.cli import main
+
+sys.exit(main())
