@@ -19,7 +19,7 @@ the same double, so MuJoCo compiles the written model bit for bit the same.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Collection, Iterable
+from collections.abc import Collection, Iterable
 from typing import Any
 
 from mjcf_model.errors import MjcfValueError
@@ -27,6 +27,7 @@ from mjcf_model.errors import MjcfValueError
 __all__ = [
     "Floats",
     "Ints",
+    "OneOf",
     "Value",
     "format_float",
     "format_value",
@@ -237,24 +238,40 @@ def to_vec3to5(value: object) -> Floats | None:
     return None if value is None else _floats(value, 3, 5)
 
 
-def one_of(choices: Collection[str]) -> Callable[[Any, Any, str | None], None]:
-    """Make an attrs validator that accepts ``None`` or one of the MJCF keywords.
+class OneOf:
+    """An attrs validator that accepts ``None`` or one of a set of MJCF keywords.
 
     Example:
-        >>> check = one_of({"box", "sphere"})
+        >>> check = OneOf({"box", "sphere"})
         >>> check(None, None, "cube")
         Traceback (most recent call last):
             ...
         mjcf_model.errors.MjcfValueError: expected one of 'box', 'sphere', found 'cube'
     """
-    allowed = frozenset(choices)
-    listing = ", ".join(repr(c) for c in sorted(allowed))
 
-    def validate(_instance: Any, _attribute: Any, value: str | None) -> None:
-        if value is not None and value not in allowed:
-            raise MjcfValueError(f"expected one of {listing}, found {value!r}")
+    __slots__ = ("allowed", "_listing")
 
-    return validate
+    def __init__(self, choices: Collection[str]) -> None:
+        #: The keywords accepted.
+        self.allowed = frozenset(choices)
+        self._listing = ", ".join(repr(c) for c in sorted(self.allowed))
+
+    def __call__(self, _instance: Any, _attribute: Any, value: str | None) -> None:
+        if value is not None and value not in self.allowed:
+            raise MjcfValueError(f"expected one of {self._listing}, found {value!r}")
+
+    def __repr__(self) -> str:
+        return f"OneOf({sorted(self.allowed)!r})"
+
+
+def one_of(choices: Collection[str]) -> OneOf:
+    """Make a validator for a keyword field (see :class:`OneOf`).
+
+    Example:
+        >>> one_of({"hinge"}).allowed
+        frozenset({'hinge'})
+    """
+    return OneOf(choices)
 
 
 def format_float(value: float) -> str:

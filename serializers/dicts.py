@@ -1,13 +1,14 @@
 """Nodes to and from plain dicts (JSON-safe), through one cattrs converter.
 
-Every node becomes a dict whose ``"node"`` key names its class (a
-tag-discriminated union over all node classes); only written attributes appear.
+Every node becomes a dict whose ``"_node"`` key names its class (a
+tag-discriminated union over all node classes; no MJCF attribute starts with
+``_``, so the key never collides); only written attributes appear.
 Non-finite floats become the strings ``"inf"``, ``"-inf"`` and ``"nan"`` so the
 result passes ``json.dumps(..., allow_nan=False)``.
 
 >>> from mjcf_model import Geom
 >>> to_dict(Geom(name="g", size=[0.1]))
-{'node': 'Geom', 'name': 'g', 'size': [0.1]}
+{'name': 'g', 'size': [0.1], '_node': 'Geom'}
 >>> from_dict(to_dict(Geom(name="g", size=[0.1]))) == Geom(name="g", size=[0.1])
 True
 """
@@ -49,7 +50,7 @@ converter.register_structure_hook(AttributeMap, lambda value, _: AttributeMap(va
 
 
 def _union(cl: Any, conv: cattrs.Converter) -> None:
-    configure_tagged_union(cl, conv, tag_name="node")
+    configure_tagged_union(cl, conv, tag_name="_node")
 
 
 include_subclasses(Node, converter, union_strategy=_union)
@@ -61,7 +62,7 @@ def to_dict(node: Node) -> dict[str, Any]:
     Example:
         >>> from mjcf_model import Joint
         >>> to_dict(Joint(range=(0, float("inf"))))
-        {'node': 'Joint', 'range': [0.0, 'inf']}
+        {'range': [0.0, 'inf'], '_node': 'Joint'}
     """
     result: dict[str, Any] = converter.unstructure(node, Node)
     return result
@@ -74,7 +75,7 @@ def from_dict(data: Mapping[str, Any]) -> Node:
         MjcfValueError: The dict does not describe a node; the message says where.
 
     Example:
-        >>> from_dict({"node": "Site", "name": "s"})
+        >>> from_dict({"_node": "Site", "name": "s"})
         Site(name='s')
     """
     try:
