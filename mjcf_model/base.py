@@ -16,7 +16,6 @@ equality: two elements that differ only in attribute order are equal).
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Iterable, Iterator, Mapping
 from typing import Any, ClassVar, TypeVar
 
@@ -54,6 +53,7 @@ class AttributeMap(Mapping[str, str]):
         >>> m = AttributeMap({"b": "1", "a": "2"})
         >>> list(m), m == AttributeMap({"a": "2", "b": "1"})
         (['b', 'a'], True)
+
     """
 
     __slots__ = ("_data", "_hash")
@@ -98,6 +98,7 @@ class AttributeMap(Mapping[str, str]):
         Example:
             >>> AttributeMap({"a": "1"}).replaced({"a": None, "b": "2"})
             AttributeMap({'b': '2'})
+
         """
         data = dict(self._data)
         for key, value in changes.items():
@@ -117,6 +118,7 @@ def to_attribute_map(value: Mapping[str, str] | Iterable[tuple[str, str]] | None
     Example:
         >>> to_attribute_map({"x": "1"})
         AttributeMap({'x': '1'})
+
     """
     if isinstance(value, AttributeMap):
         return value
@@ -131,6 +133,7 @@ def to_children(value: Iterable[Node] | None) -> tuple[Node, ...]:
     Example:
         >>> to_children([Comment(text=" hi ")])
         (Comment(text=' hi '),)
+
     """
     if value is None:
         return ()
@@ -160,6 +163,7 @@ class Comment(Node):
     Example:
         >>> Comment(text=" left arm ")
         Comment(text=' left arm ')
+
     """
 
     #: The text between ``<!--`` and ``-->``, spaces included.
@@ -227,6 +231,10 @@ class TypedElement(Element):
             parts.append(f"children={self.children!r}")
         return f"{type(self).__name__}({', '.join(parts)})"
 
+    def _repr_pretty_(self, printer: Any, cycle: bool) -> None:
+        """Print the compact repr in IPython and in hypothesis' failure reports."""
+        printer.text(repr(self))
+
 
 @attrs.frozen(kw_only=True)
 class GenericElement(Element):
@@ -236,6 +244,7 @@ class GenericElement(Element):
         >>> e = GenericElement(tag="replicate", attributes={"count": "3"})
         >>> e.attributes["count"]
         '3'
+
     """
 
     #: The XML tag.
@@ -256,7 +265,9 @@ def xml_name(field: attrs.Attribute[Any]) -> str:
     return str(field.metadata.get("xml", field.name))
 
 
-@functools.cache
+_FIELD_TABLES: dict[type[TypedElement], dict[str, str]] = {}
+
+
 def field_table(cls: type[TypedElement]) -> dict[str, str]:
     """Map each MJCF attribute name a typed class models to its field name.
 
@@ -264,10 +275,14 @@ def field_table(cls: type[TypedElement]) -> dict[str, str]:
         >>> from mjcf_model import Geom
         >>> field_table(Geom)["class"]
         'dclass'
+
     """
-    table = {xml_name(f): f.name for f in attrs.fields(cls) if f.name not in _BASE_FIELDS}
-    if "name" in table:  # the name first: it is what people look for
-        table = {"name": "name", **table}
+    table = _FIELD_TABLES.get(cls)
+    if table is None:
+        table = {xml_name(f): f.name for f in attrs.fields(cls) if f.name not in _BASE_FIELDS}
+        if "name" in table:  # the name first: it is what people look for
+            table = {"name": "name", **table}
+        _FIELD_TABLES[cls] = table
     return table
 
 
@@ -281,6 +296,7 @@ def attribute_items(element: AnyElement) -> list[tuple[str, Value]]:
         >>> from mjcf_model import Joint
         >>> attribute_items(Joint(name="j", range=(0, 1)))
         [('name', 'j'), ('range', (0.0, 1.0))]
+
     """
     if isinstance(element, GenericElement):
         return list(element.attributes.items())
@@ -305,6 +321,7 @@ def get_attribute(element: AnyElement, name: str) -> Value | None:
         >>> from mjcf_model import Geom
         >>> get_attribute(Geom(dclass="arm"), "class")
         'arm'
+
     """
     if isinstance(element, GenericElement):
         return element.attributes.get(name)
@@ -325,6 +342,7 @@ def with_attributes(element: _E, changes: Mapping[str, Value | None]) -> _E:
         >>> from mjcf_model import Site
         >>> with_attributes(Site(name="s"), {"name": "p_s", "class": "c"}).dclass
         'c'
+
     """
     if not changes:
         return element

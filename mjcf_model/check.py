@@ -56,6 +56,7 @@ def check_file(path: str | os.PathLike[str], *, inline_includes: bool = False) -
     Example:
         >>> check_file("/no/such/file.xml").status
         'error'
+
     """
     import mujoco
 

@@ -9,6 +9,7 @@ model that ships with the package.
 Example:
     >>> main(["check", "--example", "--quiet"])
     0
+
 """
 
 from __future__ import annotations
@@ -35,6 +36,7 @@ def example_path() -> str:
     Example:
         >>> example_path().endswith("arm.xml")
         True
+
     """
     return str(resources.files("mjcf_model") / "examples" / "arm.xml")
 
@@ -133,6 +135,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     Example:
         >>> main(["check", "--example", "--quiet"])
         0
+
     """
     arguments = _parser().parse_args(argv)
     status: int = arguments.run(arguments)

@@ -3,8 +3,8 @@
 >>> import mujoco
 >>> a = mujoco.MjModel.from_xml_string("<mujoco><worldbody><geom size='1'/></worldbody></mujoco>")
 >>> b = mujoco.MjModel.from_xml_string("<mujoco><worldbody><geom size='2'/></worldbody></mujoco>")
->>> model_differences(a, a), model_differences(a, b)[:1]
-([], ['geom_size'])
+>>> model_differences(a, a), "geom_size" in model_differences(a, b)
+([], True)
 """
 
 from __future__ import annotations
@@ -30,6 +30,7 @@ def model_fields() -> tuple[str, ...]:
     Example:
         >>> "body_pos" in model_fields()
         True
+
     """
     import mujoco
 
@@ -76,6 +77,7 @@ def model_differences(a: Any, b: Any) -> list[str]:
         >>> m = mujoco.MjModel.from_xml_string("<mujoco/>")
         >>> model_differences(m, m)
         []
+
     """
     differing = [name for name in model_fields() if not _equal(getattr(a, name), getattr(b, name))]
     for struct in ("opt", "stat"):
@@ -104,6 +106,7 @@ def compile_text_beside(text: str, original: str | os.PathLike[str]) -> Any:
         >>> path = pathlib.Path(tempfile.mkdtemp()) / "m.xml"
         >>> compile_text_beside("<mujoco/>", path).nbody
         1
+
     """
     import mujoco
 

@@ -8,10 +8,11 @@ A message says *where* (file, line and element path, as far as they are
 known), *what was expected* and *what was found*:
 
 >>> from serializers import loads
->>> loads('<mujoco><worldbody><geom pos="0 1"/></worldbody></mujoco>')
-Traceback (most recent call last):
-    ...
-mjcf_model.errors.MjcfValueError: <string>:1: /mujoco/worldbody/geom: attribute 'pos': expected 3 numbers, found 2 in '0 1'
+>>> try:
+...     loads('<mujoco><worldbody><geom pos="0 1"/></worldbody></mujoco>')
+... except MjcfValueError as error:
+...     print(error)
+<string>:1: /mujoco/worldbody/geom: attribute 'pos': expected 3 numbers, found 2 in '0 1'
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ class MjcfError(Exception):
         line: The 1-based line number, or ``None`` when not known.
         path: The element path (``/mujoco/worldbody/body[@name='torso']/geom[2]``) or ``None``.
         detail: The message without the location prefix.
+
     """
 
     def __init__(
@@ -71,6 +73,7 @@ class MjcfError(Exception):
             >>> err = MjcfValueError("bad").located(file="a.xml", line=3)
             >>> str(err)
             'a.xml:3: bad'
+
         """
         return type(self)(
             self.detail,

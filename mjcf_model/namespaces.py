@@ -17,7 +17,7 @@ Each attribute is written plain, or annotated:
 Prefixing, reference checks and the hypothesis strategies all read this table;
 typed and generic nodes alike.
 
->>> SCHEMA["body/geom"].declares
+>>> dict(SCHEMA["body/geom"].declares)
 {'name': 'geom'}
 >>> SCHEMA["actuator/motor"].references["joint"]
 'joint'
@@ -52,6 +52,7 @@ class ElementSpec:
         >>> spec = SCHEMA["contact/pair"]
         >>> sorted(spec.references.items())[:2]
         [('class', 'class'), ('geom1', 'geom')]
+
     """
 
     #: The schema key, e.g. ``"body/geom"``.
@@ -535,6 +536,7 @@ def child_key(context: str | None, tag: str) -> str | None:
     Example:
         >>> child_key(None, "mujoco"), child_key("body", "body"), child_key("body", "wheel")
         ('mujoco', 'body', None)
+
     """
     if tag == "include":
         return "include"
@@ -555,6 +557,7 @@ def spec_for(key: str | None) -> ElementSpec | None:
     Example:
         >>> spec_for("body/site").declares["name"]
         'site'
+
     """
     return None if key is None else SCHEMA.get(key)
 
@@ -569,6 +572,7 @@ def reference_namespace(
     Example:
         >>> reference_namespace(SCHEMA["sensor/framepos"], "objname", {"objtype": "xbody"})
         'body'
+
     """
     namespace = spec.references.get(attribute)
     if namespace is None or not namespace.startswith("@"):

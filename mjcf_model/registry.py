@@ -10,22 +10,24 @@ from collections.abc import Mapping
 from types import MappingProxyType
 
 from mjcf_model.base import TypedElement
-from mjcf_model.nodes import compiler
-from mjcf_model.nodes import visual
-from mjcf_model.nodes import default
-from mjcf_model.nodes import plugin
-from mjcf_model.nodes import asset
-from mjcf_model.nodes import geom
-from mjcf_model.nodes import body
-from mjcf_model.nodes import deformable
-from mjcf_model.nodes import contact
-from mjcf_model.nodes import tendon
-from mjcf_model.nodes import equality
-from mjcf_model.nodes import actuator
-from mjcf_model.nodes import sensor
-from mjcf_model.nodes import custom
-from mjcf_model.nodes import keyframe
-from mjcf_model.nodes import root
+from mjcf_model.nodes import (
+    actuator,
+    asset,
+    body,
+    compiler,
+    contact,
+    custom,
+    default,
+    deformable,
+    equality,
+    geom,
+    keyframe,
+    plugin,
+    root,
+    sensor,
+    tendon,
+    visual,
+)
 
 __all__ = ["CLASS_BY_KEY"]
 

@@ -19,6 +19,7 @@ Example:
     ... def test_round_trip(model):
     ...     assert loads(dumps(model)) == model
     >>> test_round_trip()
+
 """
 
 from __future__ import annotations
@@ -97,6 +98,7 @@ def comments() -> st.SearchStrategy[Comment]:
     Example:
         >>> isinstance(comments().example(), Comment)
         True
+
     """
     return st.builds(lambda t: Comment(text=f" {t} "), _COMMENT_TEXT)
 
@@ -136,6 +138,7 @@ def geoms(draw: _Draw[Any], name: str | None = None, material: str | None = None
     Example:
         >>> geoms().example().type in {"sphere", "capsule", "cylinder", "box", "ellipsoid"}
         True
+
     """
     geom_type = draw(st.sampled_from(sorted(_SIZE_COUNT)))
     size = draw(st.tuples(*[_length() for _ in range(_SIZE_COUNT[geom_type])]))
@@ -159,6 +162,7 @@ def joints(draw: _Draw[Any], name: str | None = None, scalar: bool = False) -> J
     Example:
         >>> joints(scalar=True).example().type in {"hinge", "slide"}
         True
+
     """
     kinds = ["hinge", "slide"] if scalar else ["hinge", "slide", "ball"]
     joint_type = draw(st.sampled_from(kinds))
@@ -184,6 +188,7 @@ def sites(draw: _Draw[Any], name: str | None = None) -> Site:
     Example:
         >>> sites(name="tip").example().name
         'tip'
+
     """
     return Site(name=name, pos=draw(st.none() | _vec(3)), size=(draw(_length(0.005, 0.05)),))
 
@@ -195,6 +200,7 @@ def materials(draw: _Draw[Any], name: str, texture: str | None = None) -> Materi
     Example:
         >>> materials(name="m").example().name
         'm'
+
     """
     return Material(
         name=name,
@@ -245,6 +251,7 @@ def bodies(
     Example:
         >>> len(bodies().example().geoms) >= 1
         True
+
     """
     reg = registry if registry is not None else _Registry()
     name = reg.names("body")
@@ -314,8 +321,13 @@ def _assets(draw: _Draw[Any], reg: _Registry) -> Asset:
             texture = reg.names("texture")
             children.append(
                 Texture(
-                    name=texture, type="2d", builtin="checker", width=32, height=32,
-                    rgb1=draw(_vec(3, 0.0, 1.0)), rgb2=draw(_vec(3, 0.0, 1.0)),
+                    name=texture,
+                    type="2d",
+                    builtin="checker",
+                    width=32,
+                    height=32,
+                    rgb1=draw(_vec(3, 0.0, 1.0)),
+                    rgb2=draw(_vec(3, 0.0, 1.0)),
                 )
             )
         name = reg.names("material")
@@ -334,11 +346,14 @@ def models(draw: _Draw[Any], max_trees: int = 3) -> Mujoco:
         >>> model = models().example()
         >>> mujoco.MjModel.from_xml_string(dumps(model)).nbody >= 2
         True
+
     """
     reg = _Registry()
     defaults = _defaults(draw, reg)
     assets = _assets(draw, reg)
-    trees: list[Node] = [draw(bodies(registry=reg, top=True)) for _ in range(draw(st.integers(1, max_trees)))]
+    trees: list[Node] = [
+        draw(bodies(registry=reg, top=True)) for _ in range(draw(st.integers(1, max_trees)))
+    ]
     world = Worldbody(children=_maybe_comment(draw, trees))
     sections: list[Node] = [defaults, assets, world]
     actuators: list[Node] = []
@@ -346,7 +361,9 @@ def models(draw: _Draw[Any], max_trees: int = 3) -> Mujoco:
         kind = draw(st.sampled_from([None, Motor, Position, Velocity]))
         if kind is not None:
             actuators.append(kind(name=reg.names("actuator"), joint=joint, ctrlrange=(-1.0, 1.0)))
-    sensors: list[Node] = [JointPos(name=reg.names("sensor"), joint=j) for j in reg.scalar_joints[:2]]
+    sensors: list[Node] = [
+        JointPos(name=reg.names("sensor"), joint=j) for j in reg.scalar_joints[:2]
+    ]
     for site in reg.sites[:2]:
         sensors.append(FramePos(name=reg.names("sensor"), objtype="site", objname=site))
         sensors.append(Touch(name=reg.names("sensor"), site=site))
@@ -359,11 +376,15 @@ def models(draw: _Draw[Any], max_trees: int = 3) -> Mujoco:
         parts = [TendonJoint(joint=first, coef=1.0), TendonJoint(joint=second, coef=-0.5)]
         sections.append(Tendon(children=[Fixed(name=reg.names("tendon"), children=parts)]))
         sections.append(
-            Equality(children=[EqualityJoint(name=reg.names("equality"), joint1=first, joint2=second)])
+            Equality(
+                children=[EqualityJoint(name=reg.names("equality"), joint1=first, joint2=second)]
+            )
         )
     contact: list[Node] = []
     if len(reg.bodies) >= 2:
-        contact.append(Exclude(name=reg.names("exclude"), body1=reg.bodies[0], body2=reg.bodies[-1]))
+        contact.append(
+            Exclude(name=reg.names("exclude"), body1=reg.bodies[0], body2=reg.bodies[-1])
+        )
     if len(reg.geoms) >= 2:
         contact.append(Pair(name=reg.names("pair"), geom1=reg.geoms[0], geom2=reg.geoms[-1]))
     if contact:
@@ -371,8 +392,12 @@ def models(draw: _Draw[Any], max_trees: int = 3) -> Mujoco:
     nq = sum(reg.joint_sizes)
     if nq and draw(st.booleans()):
         qpos = None if 7 in reg.joint_sizes or 4 in reg.joint_sizes else draw(_vec(nq))
-        key = Key(name=reg.names("key"), time=draw(_length(0.0, 1.0)), qpos=qpos,
-                  ctrl=tuple(0.0 for _ in actuators) or None)
+        key = Key(
+            name=reg.names("key"),
+            time=draw(_length(0.0, 1.0)),
+            qpos=qpos,
+            ctrl=tuple(0.0 for _ in actuators) or None,
+        )
         sections.append(Keyframe(children=[key]))
     if draw(st.booleans()):
         sections.append(Custom(children=[Numeric(name=reg.names("numeric"), data=draw(_vec(2)))]))
@@ -418,10 +443,9 @@ def elements(cls: type[_E]) -> st.SearchStrategy[_E]:
     Example:
         >>> elements(Geom).example().tag
         'geom'
+
     """
-    values = {
-        name: st.none() | strategy for name, strategy in _field_values(cls).items()
-    }
+    values = {name: st.none() | strategy for name, strategy in _field_values(cls).items()}
     validated = {
         f.name: f for f in attrs.fields(cls) if f.validator is not None and f.name in values
     }
@@ -430,4 +454,3 @@ def elements(cls: type[_E]) -> st.SearchStrategy[_E]:
         if allowed:
             values[name] = st.none() | st.sampled_from(sorted(allowed))
     return st.builds(cls, **values)
-

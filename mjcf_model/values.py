@@ -22,6 +22,8 @@ import math
 from collections.abc import Collection, Iterable
 from typing import Any
 
+import numpy as np
+
 from mjcf_model.errors import MjcfValueError
 
 __all__ = [
@@ -120,6 +122,7 @@ def to_str(value: str | None) -> str | None:
     Example:
         >>> to_str("torso")
         'torso'
+
     """
     if value is None or isinstance(value, str):
         return value
@@ -132,6 +135,7 @@ def to_float(value: str | float | None) -> float | None:
     Example:
         >>> to_float("1e-3")
         0.001
+
     """
     if value is None or type(value) is float:
         return value
@@ -147,6 +151,7 @@ def to_int(value: str | int | None) -> int | None:
     Example:
         >>> to_int("3")
         3
+
     """
     if value is None or type(value) is int:
         return value
@@ -164,6 +169,7 @@ def to_bool(value: str | bool | None) -> bool | None:
     Example:
         >>> to_bool("false")
         False
+
     """
     if value is None or isinstance(value, bool):
         return value
@@ -171,7 +177,7 @@ def to_bool(value: str | bool | None) -> bool | None:
         return True
     if value == "false":
         return False
-    if hasattr(value, "dtype") and getattr(value, "dtype", None) == bool:  # numpy bool
+    if isinstance(value, np.bool_):
         return bool(value)
     raise MjcfValueError(f"expected 'true' or 'false', found {value!r}")
 
@@ -182,6 +188,7 @@ def to_floats(value: object) -> Floats | None:
     Example:
         >>> to_floats([1, 2.5])
         (1.0, 2.5)
+
     """
     return None if value is None else _floats(value, 0, None)
 
@@ -192,6 +199,7 @@ def to_ints(value: object) -> Ints | None:
     Example:
         >>> to_ints("0 1 2")
         (0, 1, 2)
+
     """
     if value is None:
         return None
@@ -247,9 +255,10 @@ class OneOf:
         Traceback (most recent call last):
             ...
         mjcf_model.errors.MjcfValueError: expected one of 'box', 'sphere', found 'cube'
+
     """
 
-    __slots__ = ("allowed", "_listing")
+    __slots__ = ("_listing", "allowed")
 
     def __init__(self, choices: Collection[str]) -> None:
         #: The keywords accepted.
@@ -257,6 +266,7 @@ class OneOf:
         self._listing = ", ".join(repr(c) for c in sorted(self.allowed))
 
     def __call__(self, _instance: Any, _attribute: Any, value: str | None) -> None:
+        """Raise :class:`MjcfValueError` unless ``value`` is ``None`` or allowed."""
         if value is not None and value not in self.allowed:
             raise MjcfValueError(f"expected one of {self._listing}, found {value!r}")
 
@@ -270,6 +280,7 @@ def one_of(choices: Collection[str]) -> OneOf:
     Example:
         >>> one_of({"hinge"}).allowed
         frozenset({'hinge'})
+
     """
     return OneOf(choices)
 
@@ -282,6 +293,7 @@ def format_float(value: float) -> str:
     Example:
         >>> format_float(0.1), format_float(2.0), format_float(-0.0), format_float(1e-08)
         ('0.1', '2', '-0', '1e-08')
+
     """
     if value.is_integer() and abs(value) < 1e16:
         if value == 0.0 and math.copysign(1.0, value) < 0:
@@ -296,6 +308,7 @@ def format_value(value: Value) -> str:
     Example:
         >>> format_value((1.0, 0.5)), format_value(3), format_value(False), format_value("a")
         ('1 0.5', '3', 'false', 'a')
+
     """
     if isinstance(value, str):
         return value

@@ -11,17 +11,32 @@ element to :func:`build_element`, so the two cannot disagree.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement, field_table
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.namespaces import child_key
 from mjcf_model.registry import CLASS_BY_KEY
 
-__all__ = ["build_element", "children_context", "element_step", "guess_context"]
+__all__ = ["build_element", "children_context", "element_step", "element_text", "guess_context"]
 
 #: Contexts tried, in order, for an element read without its parents.
-_CONTEXTS = (None, "mujoco", "body", "asset", "default", "actuator", "sensor", "tendon",
-             "equality", "contact", "keyframe", "custom", "deformable", "extension")
+_CONTEXTS = (
+    None,
+    "mujoco",
+    "body",
+    "asset",
+    "actuator",
+    "sensor",
+    "tendon",
+    "equality",
+    "contact",
+    "keyframe",
+    "custom",
+    "deformable",
+    "extension",
+    "default",
+)
 
 
 def children_context(key: str | None, parent_context: str | None) -> str | None:
@@ -33,6 +48,7 @@ def children_context(key: str | None, parent_context: str | None) -> str | None:
     Example:
         >>> children_context("body/frame", "body"), children_context(None, "body")
         ('body/frame', 'body')
+
     """
     if key is None or key == "include":
         return parent_context
@@ -45,11 +61,32 @@ def guess_context(tag: str) -> str | None:
     Example:
         >>> guess_context("mujoco"), guess_context("geom"), guess_context("motor")
         (None, 'body', 'actuator')
+
     """
     for context in _CONTEXTS:
         if child_key(context, tag) is not None:
             return context
     return None
+
+
+def element_text(chunks: Sequence[str | None], has_children: bool) -> str | None:
+    r"""The text an element keeps from its character data chunks.
+
+    An element with only text keeps it exactly (``<text>`` content). Where text
+    stands between child elements (mixed content, which MuJoCo ignores), each
+    chunk is stripped and the non-blank ones are joined by a space, so that
+    re-indenting on write does not change the text. White space alone is ``None``.
+
+    Example:
+        >>> element_text(["  a b "], False), element_text(["\n  ", " > ", "\n"], True)
+        ('  a b ', '>')
+
+    """
+    if has_children:
+        joined = " ".join(c.strip() for c in chunks if c and c.strip())
+        return joined or None
+    text = "".join(c for c in chunks if c)
+    return text if text.strip() else None
 
 
 def element_step(tag: str, attributes: Sequence[tuple[str, str]], index: int) -> str:
@@ -58,6 +95,7 @@ def element_step(tag: str, attributes: Sequence[tuple[str, str]], index: int) ->
     Example:
         >>> element_step("body", [("name", "arm")], 1), element_step("geom", [], 3)
         ("body[@name='arm']", 'geom[3]')
+
     """
     for key, value in attributes:
         if key == "name":
@@ -84,12 +122,13 @@ def build_element(
     Raises:
         MjcfValueError: An attribute value does not fit its field; the message
             names the attribute (the caller adds file, line and path).
+
     """
     cls = CLASS_BY_KEY.get(key) if key is not None else None
     if cls is None or cls.tag != tag:
         return GenericElement(tag=tag, attributes=attributes, children=children, text=text)
     table = field_table(cls)
-    fields: dict[str, str] = {}
+    fields: dict[str, Any] = {}
     extra: list[tuple[str, str]] = []
     for name, value in attributes:
         field = table.get(name)
@@ -117,8 +156,9 @@ def _blame_attribute(
         field = table.get(name)
         if field is None:
             continue
+        single: dict[str, Any] = {field: value}
         try:
-            cls(**{field: value})
+            cls(**single)
         except MjcfValueError as error:
             return MjcfValueError(f"attribute {name!r}: {error.detail}")
     return MjcfValueError(f"<{cls.tag}> rejects the combination of its attributes")

@@ -63,6 +63,7 @@ def to_dict(node: Node) -> dict[str, Any]:
         >>> from mjcf_model import Joint
         >>> to_dict(Joint(range=(0, float("inf"))))
         {'range': [0.0, 'inf'], '_node': 'Joint'}
+
     """
     result: dict[str, Any] = converter.unstructure(node, Node)
     return result
@@ -77,14 +78,17 @@ def from_dict(data: Mapping[str, Any]) -> Node:
     Example:
         >>> from_dict({"_node": "Site", "name": "s"})
         Site(name='s')
+
     """
     try:
         node: Node = converter.structure(dict(data), Node)
     except MjcfValueError:
         raise
     except (cattrs.BaseValidationError, KeyError, TypeError, ValueError) as error:
-        detail = "; ".join(cattrs.transform_error(error)) if isinstance(
-            error, cattrs.BaseValidationError
-        ) else str(error)
+        detail = (
+            "; ".join(cattrs.transform_error(error))
+            if isinstance(error, cattrs.BaseValidationError)
+            else str(error)
+        )
         raise MjcfValueError(f"not a node dict: {detail}") from None
     return node

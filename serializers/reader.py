@@ -28,7 +28,13 @@ from mjcf_model.errors import (
 )
 from mjcf_model.namespaces import child_key
 from mjcf_model.nodes.root import Include, Mujoco
-from serializers.building import build_element, children_context, element_step, guess_context
+from serializers.building import (
+    build_element,
+    children_context,
+    element_step,
+    element_text,
+    guess_context,
+)
 
 __all__ = ["from_etree", "load", "loads"]
 
@@ -131,11 +137,9 @@ class _Reader:
 
     def end(self, _tag: str) -> None:
         item = self.stack.pop()
-        text = "".join(item.text)
+        text = element_text(item.text, bool(item.children))
         try:
-            node = build_element(
-                item.key, item.tag, item.attributes, item.children, text if text.strip() else None
-            )
+            node = build_element(item.key, item.tag, item.attributes, item.children, text)
         except MjcfError as error:
             raise error.located(file=self.filename, line=item.line, path=item.path) from None
         siblings = self.stack[-1].children if self.stack else self.top
@@ -157,13 +161,15 @@ class _Reader:
         """The nodes an ``<include>`` stands for, read in the including element's context."""
         if not node.file:
             raise MjcfIncludeError(
-                "<include> needs a 'file' attribute", file=self.filename, line=item.line,
+                "<include> needs a 'file' attribute",
+                file=self.filename,
+                line=item.line,
                 path=item.path,
             )
         path = self.resolve_include(node.file, item)
         chain = self.session.include_chain
         if path in chain:
-            cycle = " -> ".join(str(p) for p in (*chain[chain.index(path):], path))
+            cycle = " -> ".join(str(p) for p in (*chain[chain.index(path) :], path))
             raise MjcfIncludeError(
                 f"include cycle: {cycle}", file=self.filename, line=item.line, path=item.path
             )
@@ -173,15 +179,19 @@ class _Reader:
         except OSError as error:
             raise MjcfIncludeError(
                 f"cannot read included file {str(path)!r}: {error.strerror}",
-                file=self.filename, line=item.line, path=item.path,
+                file=self.filename,
+                line=item.line,
+                path=item.path,
             ) from None
         parent_context = self.stack[-1].context if self.stack else None
         root = _read(data, str(path), session, parent_context or "mujoco")
         return list(root.children)
 
     def resolve_include(self, file: str, item: _Open) -> Path:
-        """Find an included file as MuJoCo does: beside the main model first, then beside
-        the including file."""
+        """Find an included file as MuJoCo does.
+
+        MuJoCo looks beside the main model first, then beside the including file.
+        """
         candidates: list[Path] = []
         if self.session.main_dir is not None:
             candidates.append(self.session.main_dir / file)
@@ -195,7 +205,9 @@ class _Reader:
         looked = ", ".join(repr(str(c)) for c in candidates) or "nowhere (no base directory)"
         raise MjcfIncludeError(
             f"included file {file!r} not found; looked in {looked}",
-            file=self.filename, line=item.line, path=item.path,
+            file=self.filename,
+            line=item.line,
+            path=item.path,
         )
 
     # -- driver -------------------------------------------------------------------
@@ -208,7 +220,9 @@ class _Reader:
             message = expat.errors.messages[error.code] if error.code else str(error)
             raise MjcfSyntaxError(
                 f"malformed XML: {message} (column {error.offset + 1})",
-                file=self.filename, line=error.lineno, path=path,
+                file=self.filename,
+                line=error.lineno,
+                path=path,
             ) from None
         return self.top
 
@@ -262,6 +276,7 @@ def loads(
     Example:
         >>> loads("<mujoco><!-- hi --></mujoco>").children
         (Comment(text=' hi '),)
+
     """
     session = _Session(
         inline_includes=inline_includes, main_dir=Path(base_dir) if base_dir is not None else None
@@ -286,6 +301,7 @@ def load(
         >>> _ = path.write_text('<mujoco model="m"/>')
         >>> load(path).model
         'm'
+
     """
     if isinstance(source, (str, os.PathLike)):
         path = Path(source)
@@ -321,6 +337,7 @@ def from_etree(element: ET.Element, *, context: str | None = None) -> Node:
         >>> import xml.etree.ElementTree as ET
         >>> from_etree(ET.fromstring('<geom size="0.1"/>')).size
         (0.1,)
+
     """
     if element.tag is ET.Comment:  # type: ignore[comparison-overlap]
         return Comment(text=element.text or "")
@@ -335,12 +352,14 @@ def _from_etree(element: ET.Element, context: str | None, parent_path: str) -> A
     path = f"{parent_path}/{element_step(element.tag, attributes, 1)}"
     inner = children_context(key, context)
     children: list[Node] = []
+    chunks = [element.text]
     for child in element:
         if child.tag is ET.Comment:  # type: ignore[comparison-overlap]
             children.append(Comment(text=child.text or ""))
         elif isinstance(child.tag, str):
             children.append(_from_etree(child, inner, path))
-    text = element.text if element.text and element.text.strip() else None
+        chunks.append(child.tail)
+    text = element_text(chunks, bool(children))
     try:
         return build_element(key, element.tag, attributes, children, text)
     except MjcfError as error:

@@ -29,8 +29,15 @@ from mjcf_model.values import format_value
 __all__ = ["attribute_texts", "dump", "dumps", "to_etree"]
 
 _ATTRIBUTE_ESCAPES = str.maketrans(
-    {"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "\n": "&#10;", "\r": "&#13;",
-     "\t": "&#9;"}
+    {
+        "&": "&amp;",
+        "<": "&lt;",
+        ">": "&gt;",
+        '"': "&quot;",
+        "\n": "&#10;",
+        "\r": "&#13;",
+        "\t": "&#9;",
+    }
 )
 _TEXT_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;"})
 
@@ -42,6 +49,7 @@ def attribute_texts(element: AnyElement) -> list[tuple[str, str]]:
         >>> from mjcf_model import Joint
         >>> attribute_texts(Joint(name="j", range=[-1, 1.5]))
         [('name', 'j'), ('range', '-1 1.5')]
+
     """
     if isinstance(element, GenericElement):
         return list(element.attributes.items())
@@ -79,7 +87,7 @@ def _write(node: Node, depth: int, indent: str, out: list[str]) -> None:
 
 
 def dumps(node: Node, *, indent: str = "  ") -> str:
-    """Write a node (usually a whole :class:`~mjcf_model.Mujoco`) as MJCF text.
+    r"""Write a node (usually a whole :class:`~mjcf_model.Mujoco`) as MJCF text.
 
     Args:
         node: The node to write.
@@ -88,7 +96,8 @@ def dumps(node: Node, *, indent: str = "  ") -> str:
     Example:
         >>> from mjcf_model import Site
         >>> dumps(Site(name="tip", pos=(0, 0, 0.1)))
-        '<site name="tip" pos="0 0 0.1"/>\\n'
+        '<site name="tip" pos="0 0 0.1"/>\n'
+
     """
     out: list[str] = []
     _write(node, 0, indent, out)
@@ -101,7 +110,7 @@ def dump(
     *,
     indent: str = "  ",
 ) -> None:
-    """Write a node to a file path or an open text file.
+    r"""Write a node to a file path or an open text file.
 
     Writing to a path is atomic: the text goes to a temporary file beside the
     target, which then replaces it. If anything fails, the old file is untouched
@@ -113,7 +122,8 @@ def dump(
         >>> path = pathlib.Path(tempfile.mkdtemp()) / "out.xml"
         >>> dump(Mujoco(model="m"), path)
         >>> path.read_text()
-        '<mujoco model="m"/>\\n'
+        '<mujoco model="m"/>\n'
+
     """
     text = dumps(node, indent=indent)
     if not isinstance(target, (str, os.PathLike)):
@@ -145,9 +155,11 @@ def to_etree(node: Node) -> ET.Element:
         >>> from mjcf_model import Body, Geom
         >>> ET.tostring(to_etree(Body(name="b", children=[Geom(size=[1])])), encoding="unicode")
         '<body name="b"><geom size="1" /></body>'
+
     """
     if isinstance(node, Comment):
-        return ET.Comment(node.text)
+        comment: ET.Element = ET.Comment(node.text)  # type: ignore[assignment]
+        return comment
     if not isinstance(node, AnyElement):
         raise MjcfValueError(f"cannot convert {type(node).__name__}: not an element or a comment")
     element = ET.Element(_tag(node), dict(attribute_texts(node)))

@@ -2,100 +2,6 @@
 
 from __future__ import annotations
 
-from mjcf_model.nodes.compiler import (
-    Compiler,
-    LengthRange,
-    Option,
-    OptionFlag,
-    Size,
-    Statistic,
-)
-from mjcf_model.nodes.visual import (
-    Visual,
-    VisualGlobal,
-    VisualHeadlight,
-    VisualMap,
-    VisualQuality,
-    VisualRgba,
-    VisualScale,
-)
-from mjcf_model.nodes.default import (
-    Default,
-    DefaultEquality,
-    DefaultTendon,
-)
-from mjcf_model.nodes.plugin import (
-    Extension,
-    ExtensionPlugin,
-    Plugin,
-    PluginConfig,
-    PluginInstance,
-    PluginUse,
-)
-from mjcf_model.nodes.asset import (
-    Asset,
-    Bone,
-    Hfield,
-    Material,
-    MaterialLayer,
-    Mesh,
-    Model,
-    Skin,
-    Texture,
-)
-from mjcf_model.nodes.geom import (
-    Camera,
-    Geom,
-    Light,
-    Oriented,
-    Site,
-)
-from mjcf_model.nodes.body import (
-    Attach,
-    Body,
-    Frame,
-    FreeJoint,
-    Inertial,
-    Joint,
-    Replicate,
-    TreeViews,
-    Worldbody,
-)
-from mjcf_model.nodes.deformable import (
-    Deformable,
-    Flex,
-    FlexContact,
-    FlexEdge,
-    FlexElasticity,
-    Flexcomp,
-    FlexcompEdge,
-    FlexcompPin,
-)
-from mjcf_model.nodes.contact import (
-    Contact,
-    Exclude,
-    Pair,
-)
-from mjcf_model.nodes.tendon import (
-    Fixed,
-    Pulley,
-    Spatial,
-    Tendon,
-    TendonElement,
-    TendonGeom,
-    TendonJoint,
-    TendonSite,
-)
-from mjcf_model.nodes.equality import (
-    Connect,
-    Equality,
-    EqualityElement,
-    EqualityFlex,
-    EqualityFlexStrain,
-    EqualityJoint,
-    EqualityTendon,
-    Weld,
-)
 from mjcf_model.nodes.actuator import (
     Actuator,
     ActuatorElement,
@@ -113,6 +19,96 @@ from mjcf_model.nodes.actuator import (
     Position,
     TransmissionActuator,
     Velocity,
+)
+from mjcf_model.nodes.asset import (
+    Asset,
+    Bone,
+    Hfield,
+    Material,
+    MaterialLayer,
+    Mesh,
+    Model,
+    Skin,
+    Texture,
+)
+from mjcf_model.nodes.body import (
+    Attach,
+    Body,
+    Frame,
+    FreeJoint,
+    Inertial,
+    Joint,
+    Replicate,
+    TreeViews,
+    Worldbody,
+)
+from mjcf_model.nodes.compiler import (
+    Compiler,
+    LengthRange,
+    Option,
+    OptionFlag,
+    Size,
+    Statistic,
+)
+from mjcf_model.nodes.contact import (
+    Contact,
+    Exclude,
+    Pair,
+)
+from mjcf_model.nodes.custom import (
+    Custom,
+    Numeric,
+    Text,
+    Tuple,
+    TupleElement,
+)
+from mjcf_model.nodes.default import (
+    Default,
+    DefaultEquality,
+    DefaultTendon,
+)
+from mjcf_model.nodes.deformable import (
+    Deformable,
+    Flex,
+    Flexcomp,
+    FlexcompEdge,
+    FlexcompPin,
+    FlexContact,
+    FlexEdge,
+    FlexElasticity,
+)
+from mjcf_model.nodes.equality import (
+    Connect,
+    Equality,
+    EqualityElement,
+    EqualityFlex,
+    EqualityFlexStrain,
+    EqualityJoint,
+    EqualityTendon,
+    Weld,
+)
+from mjcf_model.nodes.geom import (
+    Camera,
+    Geom,
+    Light,
+    Oriented,
+    Site,
+)
+from mjcf_model.nodes.keyframe import (
+    Key,
+    Keyframe,
+)
+from mjcf_model.nodes.plugin import (
+    Extension,
+    ExtensionPlugin,
+    Plugin,
+    PluginConfig,
+    PluginInstance,
+    PluginUse,
+)
+from mjcf_model.nodes.root import (
+    Include,
+    Mujoco,
 )
 from mjcf_model.nodes.sensor import (
     Accelerometer,
@@ -177,20 +173,24 @@ from mjcf_model.nodes.sensor import (
     UserSensor,
     Velocimeter,
 )
-from mjcf_model.nodes.custom import (
-    Custom,
-    Numeric,
-    Text,
-    Tuple,
-    TupleElement,
+from mjcf_model.nodes.tendon import (
+    Fixed,
+    Pulley,
+    Spatial,
+    Tendon,
+    TendonElement,
+    TendonGeom,
+    TendonJoint,
+    TendonSite,
 )
-from mjcf_model.nodes.keyframe import (
-    Key,
-    Keyframe,
-)
-from mjcf_model.nodes.root import (
-    Include,
-    Mujoco,
+from mjcf_model.nodes.visual import (
+    Visual,
+    VisualGlobal,
+    VisualHeadlight,
+    VisualMap,
+    VisualQuality,
+    VisualRgba,
+    VisualScale,
 )
 
 __all__ = [

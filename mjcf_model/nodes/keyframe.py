@@ -11,7 +11,7 @@ from typing import ClassVar
 import attrs
 
 from mjcf_model.base import TypedElement
-from mjcf_model.values import Floats, to_float, to_floats, to_str, to_vec4
+from mjcf_model.values import Floats, to_float, to_floats, to_str
 
 __all__ = ["Key", "Keyframe"]
 
@@ -42,7 +42,7 @@ class Key(TypedElement):
     #: Mocap body positions.
     mpos: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Mocap body orientations.
-    mquat: Floats | None = attrs.field(default=None, converter=to_vec4)
+    mquat: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Plastic state.
     plastic: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Joint positions.

@@ -2,7 +2,7 @@
 
 >>> from mjcf_model.nodes.body import Worldbody
 >>> Mujoco(model="m", children=[Worldbody()]).worldbody
-Worldbody(children=(), extra=AttributeMap({}))
+Worldbody()
 """
 
 from __future__ import annotations
@@ -12,6 +12,20 @@ from typing import ClassVar
 import attrs
 
 from mjcf_model.base import TypedElement
+from mjcf_model.nodes.actuator import Actuator
+from mjcf_model.nodes.asset import Asset
+from mjcf_model.nodes.body import Worldbody
+from mjcf_model.nodes.compiler import Compiler, Option, Size, Statistic
+from mjcf_model.nodes.contact import Contact
+from mjcf_model.nodes.custom import Custom
+from mjcf_model.nodes.default import Default
+from mjcf_model.nodes.deformable import Deformable
+from mjcf_model.nodes.equality import Equality
+from mjcf_model.nodes.keyframe import Keyframe
+from mjcf_model.nodes.plugin import Extension
+from mjcf_model.nodes.sensor import Sensor
+from mjcf_model.nodes.tendon import Tendon
+from mjcf_model.nodes.visual import Visual
 from mjcf_model.values import to_str
 
 __all__ = ["Include", "Mujoco"]

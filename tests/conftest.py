@@ -1,0 +1,65 @@
+"""Shared test setup: hypothesis profiles and the real-world corpus.
+
+The profile comes from ``HYPOTHESIS_PROFILE``: ``ci`` (the default under
+``CI=true``; at least 200 examples per property) or ``dev`` (fewer, for quick
+local runs).
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+from pathlib import Path
+
+import mujoco
+from hypothesis import HealthCheck, settings
+
+settings.register_profile(
+    "ci",
+    max_examples=200,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+    print_blob=True,
+)
+settings.register_profile(
+    "dev", max_examples=50, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
+
+FIXTURES = Path(__file__).parent / "fixtures"
+
+
+def _package_dir(name: str) -> Path:
+    spec = importlib.util.find_spec(name)
+    assert spec is not None and spec.origin is not None, f"{name} is a test dependency"
+    return Path(spec.origin).parent
+
+
+def corpus_files() -> list[Path]:
+    """Every XML file shipped in the installed robosuite and dm_control wheels."""
+    files: list[Path] = []
+    for package in ("robosuite", "dm_control"):
+        files.extend(sorted(_package_dir(package).rglob("*.xml")))
+    return files
+
+
+def compiling_corpus() -> list[Path]:
+    """The corpus files that MuJoCo compiles as shipped."""
+    compiling = []
+    for path in corpus_files():
+        try:
+            mujoco.MjModel.from_xml_path(str(path))
+        except ValueError:
+            continue
+        compiling.append(path)
+    return compiling
+
+
+def corpus_id(path: Path) -> str:
+    """A short test id: the package and the path inside it."""
+    parts = path.parts
+    for package in ("robosuite", "dm_control"):
+        if package in parts:
+            index = len(parts) - 1 - parts[::-1].index(package)
+            return "/".join(parts[index:])
+    return path.name

@@ -1,0 +1,148 @@
+"""The namespace table and the node classes agree with the installed MuJoCo."""
+
+from __future__ import annotations
+
+import re
+
+import attrs
+import mujoco
+import pytest
+
+from mjcf_model import keywords
+from mjcf_model.base import field_table
+from mjcf_model.namespaces import NAMESPACES, OBJTYPE_NAMESPACES, SCHEMA, child_key
+from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.values import OneOf
+
+#: Elements MuJoCo reads outside the schema it prints.
+_OUTSIDE_PRINTED_SCHEMA = {"include", "body/frame", "body/replicate", "worldbody"}
+
+
+def _printed_schema() -> dict[str, set[str]]:
+    """Parse ``mj_printSchema`` into schema keys and attribute sets."""
+    entries: list[tuple[int, str, list[str]]] = []
+    for line in mujoco.mj_printSchema(False, False).splitlines():
+        match = re.match(r"^(\s*)(\S+) \((.)\)\s*(.*)$", line)
+        if match:
+            entries.append((len(match.group(1)) // 3, match.group(2), match.group(4).split()))
+        elif entries:
+            entries[-1][2].extend(line.split())
+    schema: dict[str, set[str]] = {}
+    stack: list[str] = []
+    for depth, tag, attributes in entries:
+        stack = [*stack[:depth], tag.replace("(world)", "")]
+        key = "/".join(stack[1:]) or "mujoco"
+        schema[key] = set(attributes)
+    return schema
+
+
+PRINTED = _printed_schema()
+
+
+def test_every_printed_element_is_in_the_table() -> None:
+    """Each element MuJoCo prints has a table entry (a new element fails here)."""
+    assert sorted(set(PRINTED) - set(SCHEMA)) == []
+
+
+@pytest.mark.parametrize("key", sorted(PRINTED))
+def test_every_printed_attribute_is_in_the_table(key: str) -> None:
+    """The table lists exactly the attributes MuJoCo prints for the element."""
+    assert SCHEMA[key].attributes == PRINTED[key]
+
+
+def test_table_has_nothing_mujoco_lacks() -> None:
+    """Entries outside the printed schema are the ones MuJoCo handles specially."""
+    assert set(SCHEMA) - set(PRINTED) == _OUTSIDE_PRINTED_SCHEMA
+
+
+def test_every_name_attribute_declares_a_namespace() -> None:
+    """Every element with a ``name`` attribute says which namespace the name lives in."""
+    missing = [k for k, s in SCHEMA.items() if "name" in s.attributes and "name" not in s.declares]
+    assert missing == []
+
+
+def test_references_point_to_declared_namespaces() -> None:
+    """Every referenced namespace is one some element declares names in."""
+    declared = {ns for spec in SCHEMA.values() for ns in spec.declares.values()}
+    referenced = {
+        ns for spec in SCHEMA.values() for ns in spec.references.values() if not ns.startswith("@")
+    }
+    assert referenced <= declared
+    assert declared | referenced == NAMESPACES
+
+
+def test_class_and_childclass_always_refer_to_default_classes() -> None:
+    """``class`` and ``childclass`` are class references wherever they appear (but on <default>)."""
+    for key, spec in SCHEMA.items():
+        for attribute in ("class", "childclass"):
+            if attribute in spec.attributes and key != "default":
+                assert spec.references[attribute] == "class", key
+
+
+def test_objtype_namespaces_cover_mujoco_object_types() -> None:
+    """Every object type keyword a sensor can name maps to a namespace."""
+    names = {
+        m[len("mjOBJ_") :].lower() for m in mujoco.mjtObj.__members__ if m.startswith("mjOBJ_")
+    }
+    unmapped = names - set(OBJTYPE_NAMESPACES) - {"unknown", "dof", "default", "model"}
+    assert unmapped == set()
+
+
+@pytest.mark.parametrize("key", sorted(CLASS_BY_KEY))
+def test_class_fields_are_attributes_of_their_element(key: str) -> None:
+    """A typed class models only attributes MuJoCo accepts on its elements, and all of them."""
+    cls = CLASS_BY_KEY[key]
+    assert cls.tag == SCHEMA[key].tag
+    served = set().union(*(SCHEMA[k].attributes for k, c in CLASS_BY_KEY.items() if c is cls))
+    assert set(field_table(cls)) == served
+
+
+def test_registry_covers_the_table() -> None:
+    """Every table entry has a typed class."""
+    assert set(CLASS_BY_KEY) == set(SCHEMA)
+
+
+@pytest.mark.parametrize(
+    ("keyword_set", "enum", "prefix", "exclude"),
+    [
+        (keywords.GEOM_TYPES, mujoco.mjtGeom, "mjGEOM_", None),
+        (keywords.JOINT_TYPES, mujoco.mjtJoint, "mjJNT_", None),
+        (keywords.LIGHT_TYPES, mujoco.mjtLightType, "mjLIGHT_", None),
+        (keywords.TRACKING_MODES, mujoco.mjtCamLight, "mjCAMLIGHT_", None),
+        (keywords.LIMITED, mujoco.mjtLimited, "mjLIMITED_", None),
+    ],
+)
+def test_keyword_sets_match_mujoco_enums(
+    keyword_set: frozenset[str], enum: type, prefix: str, exclude: None
+) -> None:
+    """Each validated keyword set is exactly the MuJoCo enum it stands for."""
+    members = list(enum.__members__)  # type: ignore[attr-defined]
+    if "mjNGEOMTYPES" in members:  # geom types stop at the count; the rest are decor
+        members = members[: members.index("mjNGEOMTYPES")]
+    assert {m[len(prefix) :].lower() for m in members} == set(keyword_set)
+
+
+def test_validated_keywords_compile() -> None:
+    """Every geom type keyword we accept is one MuJoCo's parser accepts."""
+    for geom_type in sorted(keywords.GEOM_TYPES - {"mesh", "hfield", "sdf"}):
+        xml = f'<mujoco><worldbody><geom type="{geom_type}" size="1 1 1"/></worldbody></mujoco>'
+        mujoco.MjModel.from_xml_string(xml)
+
+
+def test_child_keys_follow_the_tree() -> None:
+    """Context-dependent tags resolve to the right schema entry."""
+    assert child_key("equality", "joint") == "equality/joint"
+    assert child_key("tendon/fixed", "joint") == "tendon/fixed/joint"
+    assert child_key("body/frame", "joint") == "body/joint"
+    assert child_key("body/replicate", "body") == "body"
+    assert child_key("default", "default") == "default"
+    assert child_key("sensor", "contact") == "sensor/contact"
+    assert child_key("body", "composite") is None
+
+
+def test_keyword_validators_expose_their_keywords() -> None:
+    """Strategies can read the allowed keywords off every keyword field."""
+    for cls in set(CLASS_BY_KEY.values()):
+        for field in attrs.fields(cls):
+            if isinstance(field.validator, OneOf):
+                assert field.validator.allowed
