@@ -62,11 +62,7 @@ from mjcf_model.nodes.custom import (
     Tuple,
     TupleElement,
 )
-from mjcf_model.nodes.default import (
-    Default,
-    DefaultEquality,
-    DefaultTendon,
-)
+from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.deformable import (
     Deformable,
     Flex,
@@ -79,11 +75,13 @@ from mjcf_model.nodes.deformable import (
 )
 from mjcf_model.nodes.equality import (
     Connect,
+    DefaultEquality,
     Equality,
     EqualityElement,
     EqualityFlex,
     EqualityFlexStrain,
     EqualityJoint,
+    EqualitySettings,
     EqualityTendon,
     Weld,
 )
@@ -174,6 +172,7 @@ from mjcf_model.nodes.sensor import (
     Velocimeter,
 )
 from mjcf_model.nodes.tendon import (
+    DefaultTendon,
     Fixed,
     Pulley,
     Spatial,
@@ -181,6 +180,7 @@ from mjcf_model.nodes.tendon import (
     TendonElement,
     TendonGeom,
     TendonJoint,
+    TendonSettings,
     TendonSite,
 )
 from mjcf_model.nodes.visual import (
@@ -232,6 +232,7 @@ __all__ = [
     "EqualityFlex",
     "EqualityFlexStrain",
     "EqualityJoint",
+    "EqualitySettings",
     "EqualityTendon",
     "Exclude",
     "Extension",
@@ -330,6 +331,7 @@ __all__ = [
     "TendonLimitVel",
     "TendonPos",
     "TendonSensor",
+    "TendonSettings",
     "TendonSite",
     "TendonVel",
     "Text",

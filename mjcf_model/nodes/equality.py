@@ -24,11 +24,13 @@ from mjcf_model.values import (
 
 __all__ = [
     "Connect",
+    "DefaultEquality",
     "Equality",
     "EqualityElement",
     "EqualityFlex",
     "EqualityFlexStrain",
     "EqualityJoint",
+    "EqualitySettings",
     "EqualityTendon",
     "Weld",
 ]
@@ -42,19 +44,32 @@ class Equality(TypedElement):
 
 
 @attrs.frozen(kw_only=True, repr=False)
-class EqualityElement(TypedElement):
-    """Fields every equality constraint shares."""
+class EqualitySettings(TypedElement):
+    """The settings every equality constraint and ``<default><equality>`` share."""
 
-    #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
-    #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
     #: Whether the element is active initially.
     active: bool | None = attrs.field(default=None, converter=to_bool)
     #: Constraint solver impedance parameters.
     solimp: Floats | None = attrs.field(default=None, converter=to_vec3to5)
     #: Constraint solver reference parameters (timeconst, dampratio).
     solref: Floats | None = attrs.field(default=None, converter=to_vec2)
+
+
+@attrs.frozen(kw_only=True, repr=False)
+class EqualityElement(EqualitySettings):
+    """Fields every equality constraint shares: the settings plus a name and a class."""
+
+    #: Name, unique within its namespace.
+    name: str | None = attrs.field(default=None, converter=to_str)
+    #: Default class whose values this element takes (XML ``class``).
+    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+
+
+@attrs.frozen(kw_only=True, repr=False)
+class DefaultEquality(EqualitySettings):
+    """Default values for equality constraints (``<default><equality>``)."""
+
+    tag: ClassVar[str] = "equality"
 
 
 @attrs.frozen(kw_only=True, repr=False)

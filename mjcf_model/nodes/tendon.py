@@ -25,6 +25,7 @@ from mjcf_model.values import (
 )
 
 __all__ = [
+    "DefaultTendon",
     "Fixed",
     "Pulley",
     "Spatial",
@@ -32,6 +33,7 @@ __all__ = [
     "TendonElement",
     "TendonGeom",
     "TendonJoint",
+    "TendonSettings",
     "TendonSite",
 ]
 
@@ -44,13 +46,9 @@ class Tendon(TypedElement):
 
 
 @attrs.frozen(kw_only=True, repr=False)
-class TendonElement(TypedElement):
-    """Fields both tendon types share."""
+class TendonSettings(TypedElement):
+    """The tendon settings that both tendon types and ``<default><tendon>`` share."""
 
-    #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
-    #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
     #: Whether the total actuator force is clamped: ``true``, ``false`` or ``auto``.
     actuatorfrclimited: str | None = attrs.field(
         default=None, converter=to_str, validator=one_of(LIMITED)
@@ -87,6 +85,29 @@ class TendonElement(TypedElement):
     stiffness: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Custom user data (numbers).
     user: Floats | None = attrs.field(default=None, converter=to_floats)
+
+
+@attrs.frozen(kw_only=True, repr=False)
+class TendonElement(TendonSettings):
+    """Fields both tendon types share: the settings plus a name and a class."""
+
+    #: Name, unique within its namespace.
+    name: str | None = attrs.field(default=None, converter=to_str)
+    #: Default class whose values this element takes (XML ``class``).
+    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+
+
+@attrs.frozen(kw_only=True, repr=False)
+class DefaultTendon(TendonSettings):
+    """Default values for tendons (``<default><tendon>``)."""
+
+    tag: ClassVar[str] = "tendon"
+    #: Name of the material asset used for rendering.
+    material: str | None = attrs.field(default=None, converter=to_str)
+    #: Colour and transparency (r, g, b, a).
+    rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
+    #: Width.
+    width: float | None = attrs.field(default=None, converter=to_float)
 
 
 @attrs.frozen(kw_only=True, repr=False)
