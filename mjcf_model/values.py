@@ -40,11 +40,12 @@ __all__ = [
     "to_int",
     "to_ints",
     "to_str",
+    "to_vec1to2",
     "to_vec1to3",
+    "to_vec1to5",
     "to_vec2",
     "to_vec2to3",
     "to_vec3",
-    "to_vec3to5",
     "to_vec4",
     "to_vec5",
     "to_vec6",
@@ -231,6 +232,11 @@ def to_vec6(value: object) -> Floats | None:
     return None if value is None else _floats(value, 6, 6)
 
 
+def to_vec1to2(value: object) -> Floats | None:
+    """One or two floats (``solref``: MuJoCo fills a missing second value from defaults)."""
+    return None if value is None else _floats(value, 1, 2)
+
+
 def to_vec1to3(value: object) -> Floats | None:
     """One to three floats (geom and site ``size``, ``friction``)."""
     return None if value is None else _floats(value, 1, 3)
@@ -241,9 +247,9 @@ def to_vec2to3(value: object) -> Floats | None:
     return None if value is None else _floats(value, 2, 3)
 
 
-def to_vec3to5(value: object) -> Floats | None:
-    """Three to five floats (``solimp``)."""
-    return None if value is None else _floats(value, 3, 5)
+def to_vec1to5(value: object) -> Floats | None:
+    """One to five floats (``solimp``: MuJoCo fills missing values from defaults)."""
+    return None if value is None else _floats(value, 1, 5)
 
 
 class OneOf:

@@ -23,9 +23,10 @@ from mjcf_model.values import (
     to_floats,
     to_int,
     to_str,
+    to_vec1to2,
+    to_vec1to5,
     to_vec2,
     to_vec3,
-    to_vec3to5,
     to_vec6,
 )
 
@@ -141,13 +142,13 @@ class Joint(TypedElement):
     #: Reference position or angle of the joint.
     ref: float | None = attrs.field(default=None, converter=to_float)
     #: Solver impedance parameters of the friction constraint.
-    solimpfriction: Floats | None = attrs.field(default=None, converter=to_vec3to5)
+    solimpfriction: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Solver impedance parameters of the limit constraint.
-    solimplimit: Floats | None = attrs.field(default=None, converter=to_vec3to5)
+    solimplimit: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Solver reference parameters of the friction constraint.
-    solreffriction: Floats | None = attrs.field(default=None, converter=to_vec2)
+    solreffriction: Floats | None = attrs.field(default=None, converter=to_vec1to2)
     #: Solver reference parameters of the limit constraint.
-    solreflimit: Floats | None = attrs.field(default=None, converter=to_vec2)
+    solreflimit: Floats | None = attrs.field(default=None, converter=to_vec1to2)
     #: Spring-damper given as time constant and damping ratio.
     springdamper: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Joint position at which the spring force is zero.

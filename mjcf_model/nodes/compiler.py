@@ -19,9 +19,9 @@ from mjcf_model.values import (
     to_int,
     to_ints,
     to_str,
-    to_vec2,
+    to_vec1to2,
+    to_vec1to5,
     to_vec3,
-    to_vec3to5,
 )
 
 __all__ = ["Compiler", "LengthRange", "Option", "OptionFlag", "Size", "Statistic"]
@@ -149,9 +149,9 @@ class Option(TypedElement):
     #: Simulation option ``o_margin``; see the MuJoCo XML reference.
     o_margin: float | None = attrs.field(default=None, converter=to_float)
     #: Simulation option ``o_solimp``; see the MuJoCo XML reference.
-    o_solimp: Floats | None = attrs.field(default=None, converter=to_vec3to5)
+    o_solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Simulation option ``o_solref``; see the MuJoCo XML reference.
-    o_solref: Floats | None = attrs.field(default=None, converter=to_vec2)
+    o_solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
     #: Simulation option ``sdf_initpoints``; see the MuJoCo XML reference.
     sdf_initpoints: int | None = attrs.field(default=None, converter=to_int)
     #: Simulation option ``sdf_iterations``; see the MuJoCo XML reference.

@@ -11,7 +11,7 @@ from typing import ClassVar
 import attrs
 
 from mjcf_model.base import TypedElement
-from mjcf_model.values import Floats, to_float, to_floats, to_int, to_str, to_vec2, to_vec3to5
+from mjcf_model.values import Floats, to_float, to_floats, to_int, to_str, to_vec1to2, to_vec1to5
 
 __all__ = ["Contact", "Exclude", "Pair"]
 
@@ -47,11 +47,11 @@ class Pair(TypedElement):
     #: Distance at which contacts (or limits) become active.
     margin: float | None = attrs.field(default=None, converter=to_float)
     #: Constraint solver impedance parameters.
-    solimp: Floats | None = attrs.field(default=None, converter=to_vec3to5)
+    solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Constraint solver reference parameters (timeconst, dampratio).
-    solref: Floats | None = attrs.field(default=None, converter=to_vec2)
+    solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
     #: Solver reference parameters of the friction constraint.
-    solreffriction: Floats | None = attrs.field(default=None, converter=to_vec2)
+    solreffriction: Floats | None = attrs.field(default=None, converter=to_vec1to2)
 
 
 @attrs.frozen(kw_only=True, repr=False)

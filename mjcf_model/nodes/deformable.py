@@ -20,10 +20,10 @@ from mjcf_model.values import (
     to_int,
     to_ints,
     to_str,
+    to_vec1to2,
     to_vec1to3,
-    to_vec2,
+    to_vec1to5,
     to_vec3,
-    to_vec3to5,
     to_vec4,
 )
 
@@ -100,9 +100,9 @@ class FlexcompEdge(TypedElement):
     #: Whether edge equality constraints are generated.
     equality: str | None = attrs.field(default=None, converter=to_str)
     #: Constraint solver impedance parameters.
-    solimp: Floats | None = attrs.field(default=None, converter=to_vec3to5)
+    solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Constraint solver reference parameters (timeconst, dampratio).
-    solref: Floats | None = attrs.field(default=None, converter=to_vec2)
+    solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
     #: Spring stiffness (coefficients of a polynomial in MuJoCo 4).
     stiffness: Floats | None = attrs.field(default=None, converter=to_floats)
 
@@ -158,11 +158,11 @@ class FlexContact(TypedElement):
     #: Self-collision mode.
     selfcollide: str | None = attrs.field(default=None, converter=to_str)
     #: Constraint solver impedance parameters.
-    solimp: Floats | None = attrs.field(default=None, converter=to_vec3to5)
+    solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Weight for mixing solver parameters of two contacting geoms.
     solmix: float | None = attrs.field(default=None, converter=to_float)
     #: Constraint solver reference parameters (timeconst, dampratio).
-    solref: Floats | None = attrs.field(default=None, converter=to_vec2)
+    solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
 
 
 @attrs.frozen(kw_only=True, repr=False)

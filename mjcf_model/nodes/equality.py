@@ -17,9 +17,9 @@ from mjcf_model.values import (
     to_float,
     to_floats,
     to_str,
-    to_vec2,
+    to_vec1to2,
+    to_vec1to5,
     to_vec3,
-    to_vec3to5,
 )
 
 __all__ = [
@@ -50,9 +50,9 @@ class EqualitySettings(TypedElement):
     #: Whether the element is active initially.
     active: bool | None = attrs.field(default=None, converter=to_bool)
     #: Constraint solver impedance parameters.
-    solimp: Floats | None = attrs.field(default=None, converter=to_vec3to5)
+    solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Constraint solver reference parameters (timeconst, dampratio).
-    solref: Floats | None = attrs.field(default=None, converter=to_vec2)
+    solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
 
 
 @attrs.frozen(kw_only=True, repr=False)

@@ -22,10 +22,11 @@ from mjcf_model.values import (
     to_int,
     to_ints,
     to_str,
+    to_vec1to2,
     to_vec1to3,
+    to_vec1to5,
     to_vec2,
     to_vec3,
-    to_vec3to5,
     to_vec4,
     to_vec6,
 )
@@ -107,11 +108,11 @@ class Geom(Oriented):
     #: Whether mass is distributed over the surface rather than the volume.
     shellinertia: bool | None = attrs.field(default=None, converter=to_bool)
     #: Constraint solver impedance parameters.
-    solimp: Floats | None = attrs.field(default=None, converter=to_vec3to5)
+    solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Weight for mixing solver parameters of two contacting geoms.
     solmix: float | None = attrs.field(default=None, converter=to_float)
     #: Constraint solver reference parameters (timeconst, dampratio).
-    solref: Floats | None = attrs.field(default=None, converter=to_vec2)
+    solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
     #: Surface velocity of a conveyor-like geom.
     surfacevel: str | None = attrs.field(default=None, converter=to_str)
     #: Custom user data (numbers).

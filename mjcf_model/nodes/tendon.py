@@ -19,8 +19,9 @@ from mjcf_model.values import (
     to_floats,
     to_int,
     to_str,
+    to_vec1to2,
+    to_vec1to5,
     to_vec2,
-    to_vec3to5,
     to_vec4,
 )
 
@@ -70,13 +71,13 @@ class TendonSettings(TypedElement):
     #: Lower and upper limits.
     range: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Solver impedance parameters of the friction constraint.
-    solimpfriction: Floats | None = attrs.field(default=None, converter=to_vec3to5)
+    solimpfriction: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Solver impedance parameters of the limit constraint.
-    solimplimit: Floats | None = attrs.field(default=None, converter=to_vec3to5)
+    solimplimit: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Solver reference parameters of the friction constraint.
-    solreffriction: Floats | None = attrs.field(default=None, converter=to_vec2)
+    solreffriction: Floats | None = attrs.field(default=None, converter=to_vec1to2)
     #: Solver reference parameters of the limit constraint.
-    solreflimit: Floats | None = attrs.field(default=None, converter=to_vec2)
+    solreflimit: Floats | None = attrs.field(default=None, converter=to_vec1to2)
     #: Spring rest length (or dead band).
     springlength: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Yield threshold of the spring.
