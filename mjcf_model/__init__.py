@@ -9,7 +9,7 @@ changed copies; :mod:`serializers` reads and writes MJCF without losing anything
 'elbow'
 """
 
-from mjcf_model import nodes
+from mjcf_model import errors, nodes
 from mjcf_model.base import (
     AttributeMap,
     Comment,
@@ -21,14 +21,7 @@ from mjcf_model.base import (
     get_attribute,
     with_attributes,
 )
-from mjcf_model.errors import (
-    MjcfError,
-    MjcfIncludeError,
-    MjcfLookupError,
-    MjcfSecurityError,
-    MjcfSyntaxError,
-    MjcfValueError,
-)
+from mjcf_model.errors import *  # noqa: F403  (every error class; listed in errors.__all__)
 from mjcf_model.nodes import *  # noqa: F403  (every node class; listed in nodes.__all__)
 
 __all__ = [
@@ -36,16 +29,10 @@ __all__ = [
     "Comment",
     "Element",
     "GenericElement",
-    "MjcfError",
-    "MjcfIncludeError",
-    "MjcfLookupError",
-    "MjcfSecurityError",
-    "MjcfSyntaxError",
-    "MjcfValueError",
     "Node",
     "TypedElement",
     "attribute_items",
     "get_attribute",
     "with_attributes",
 ]
-__all__ += nodes.__all__
+__all__ += errors.__all__ + nodes.__all__
