@@ -50,7 +50,8 @@ class _Open:
     key: str | None
     context: str | None
     line: int
-    path: str
+    #: 1-based position among the parent's children with the same tag.
+    index: int
     children: list[Node] = attrs.field(factory=list)
     text: list[str] = attrs.field(factory=list)
     counts: dict[str, int] = attrs.field(factory=dict)
@@ -110,16 +111,25 @@ class _Reader:
             line=self.parser.CurrentLineNumber,
         )
 
+    def path_to(self, item: _Open | None) -> str:
+        """The element path of ``item`` (or of the innermost open element), for errors.
+
+        Built only when an error is raised: ``item`` has been closed, so the open
+        elements on the stack are its ancestors.
+        """
+        chain = self.stack if item is None else [*self.stack, item]
+        return "".join(f"/{element_step(o.tag, o.attributes, o.index)}" for o in chain)
+
     # -- events -------------------------------------------------------------------
 
     def start(self, tag: str, flat: list[str]) -> None:
         attributes = list(zip(flat[::2], flat[1::2], strict=True))
         if self.stack:
             parent = self.stack[-1]
-            context, parent_path = parent.context, parent.path
+            context = parent.context
             index = parent.counts[tag] = parent.counts.get(tag, 0) + 1
         else:
-            context, parent_path, index = None, "", 1
+            context, index = None, 1
         key = child_key(context, tag)
         inner = children_context(key, context)
         if not self.stack and key == "mujoco" and self.include_context is not None:
@@ -131,7 +141,7 @@ class _Reader:
                 key=key,
                 context=inner,
                 line=self.parser.CurrentLineNumber,
-                path=f"{parent_path}/{element_step(tag, attributes, index)}",
+                index=index,
             )
         )
 
@@ -141,7 +151,9 @@ class _Reader:
         try:
             node = build_element(item.key, item.tag, item.attributes, item.children, text)
         except MjcfError as error:
-            raise error.located(file=self.filename, line=item.line, path=item.path) from None
+            raise error.located(
+                file=self.filename, line=item.line, path=self.path_to(item)
+            ) from None
         siblings = self.stack[-1].children if self.stack else self.top
         if self.session.inline_includes and isinstance(node, Include):
             siblings.extend(self.included(node, item))
@@ -164,14 +176,17 @@ class _Reader:
                 "<include> needs a 'file' attribute",
                 file=self.filename,
                 line=item.line,
-                path=item.path,
+                path=self.path_to(item),
             )
         path = self.resolve_include(node.file, item)
         chain = self.session.include_chain
         if path in chain:
             cycle = " -> ".join(str(p) for p in (*chain[chain.index(path) :], path))
             raise MjcfIncludeError(
-                f"include cycle: {cycle}", file=self.filename, line=item.line, path=item.path
+                f"include cycle: {cycle}",
+                file=self.filename,
+                line=item.line,
+                path=self.path_to(item),
             )
         session = attrs.evolve(self.session, include_chain=(*chain, path))
         try:
@@ -181,7 +196,7 @@ class _Reader:
                 f"cannot read included file {str(path)!r}: {error.strerror}",
                 file=self.filename,
                 line=item.line,
-                path=item.path,
+                path=self.path_to(item),
             ) from None
         parent_context = self.stack[-1].context if self.stack else None
         root = _read(data, str(path), session, parent_context or "mujoco")
@@ -207,7 +222,7 @@ class _Reader:
             f"included file {file!r} not found; looked in {looked}",
             file=self.filename,
             line=item.line,
-            path=item.path,
+            path=self.path_to(item),
         )
 
     # -- driver -------------------------------------------------------------------
@@ -216,7 +231,7 @@ class _Reader:
         try:
             self.parser.Parse(data, True)
         except expat.ExpatError as error:
-            path = self.stack[-1].path if self.stack else None
+            path = self.path_to(None) if self.stack else None
             message = expat.errors.messages[error.code] if error.code else str(error)
             raise MjcfSyntaxError(
                 f"malformed XML: {message} (column {error.offset + 1})",
@@ -343,24 +358,41 @@ def from_etree(element: ET.Element, *, context: str | None = None) -> Node:
         return Comment(text=element.text or "")
     if context is None:
         context = guess_context(element.tag)
-    return _from_etree(element, context, "")
+    try:
+        return _from_etree(element, context)
+    except MjcfError as error:
+        raise _within(error, element, 1) from None
 
 
-def _from_etree(element: ET.Element, context: str | None, parent_path: str) -> AnyElement:
+def _from_etree(element: ET.Element, context: str | None) -> AnyElement:
+    """Convert one element; an error names no path yet: each caller adds its step."""
     key = child_key(context, element.tag)
-    attributes = list(element.attrib.items())
-    path = f"{parent_path}/{element_step(element.tag, attributes, 1)}"
     inner = children_context(key, context)
     children: list[Node] = []
     chunks = [element.text]
+    counts: dict[str, int] = {}
     for child in element:
         if child.tag is ET.Comment:  # type: ignore[comparison-overlap]
             children.append(Comment(text=child.text or ""))
         elif isinstance(child.tag, str):
-            children.append(_from_etree(child, inner, path))
+            index = counts[child.tag] = counts.get(child.tag, 0) + 1
+            try:
+                children.append(_from_etree(child, inner))
+            except MjcfError as error:
+                raise _within(error, child, index) from None
         chunks.append(child.tail)
-    text = element_text(chunks, bool(children))
-    try:
-        return build_element(key, element.tag, attributes, children, text)
-    except MjcfError as error:
-        raise error.located(path=path) from None
+    return build_element(
+        key,
+        element.tag,
+        list(element.attrib.items()),
+        children,
+        element_text(chunks, bool(children)),
+    )
+
+
+def _within(error: MjcfError, element: ET.Element, index: int) -> MjcfError:
+    """The error with ``element``'s step put in front of its path."""
+    step = element_step(element.tag, list(element.attrib.items()), index)
+    return type(error)(
+        error.detail, file=error.file, line=error.line, path=f"/{step}{error.path or ''}"
+    )

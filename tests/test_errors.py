@@ -197,3 +197,19 @@ def test_dump_replaces_on_success(tmp_path: Path) -> None:
     dump(Mujoco(model="new"), target)
     assert target.read_text() == '<mujoco model="new"/>\n'
     assert target.stat().st_mode & 0o777 == 0o640
+
+
+def test_from_etree_error_names_the_element_path() -> None:
+    """Errors from ElementTree input name the path, with the index among same-tag siblings."""
+    import xml.etree.ElementTree as ET
+
+    from serializers import from_etree
+
+    tree = ET.fromstring(
+        "<mujoco><worldbody><geom size='1'/><body name='b'><geom size='1'/>"
+        "<geom pos='0 1'/></body></worldbody></mujoco>"
+    )
+    with pytest.raises(MjcfValueError) as caught:
+        from_etree(tree)
+    assert caught.value.path == "/mujoco/worldbody/body[@name='b']/geom[2]"
+    assert "attribute 'pos': expected 3 numbers, found 2" in str(caught.value)
