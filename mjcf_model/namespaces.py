@@ -33,14 +33,12 @@ from types import MappingProxyType
 import attrs
 
 __all__ = [
-    "FALLBACK_REFERENCES",
     "NAMESPACES",
     "OBJTYPE_NAMESPACES",
     "SCHEMA",
     "ElementSpec",
     "child_key",
     "reference_namespace",
-    "spec_for",
 ]
 
 
@@ -515,17 +513,6 @@ OBJTYPE_NAMESPACES: Mapping[str, str] = MappingProxyType(
     }
 )
 
-#: For elements the table does not know (a future MuJoCo's), the namespace an
-#: attribute of that name usually refers to.
-FALLBACK_REFERENCES: Mapping[str, str] = MappingProxyType(
-    {
-        attribute: namespace
-        for spec in SCHEMA.values()
-        for attribute, namespace in spec.references.items()
-        if attribute not in spec.list_references and not namespace.startswith("@")
-    }
-)
-
 
 def child_key(context: str | None, tag: str) -> str | None:
     """The schema key of a ``tag`` element inside an element whose key is ``context``.
@@ -549,17 +536,6 @@ def child_key(context: str | None, tag: str) -> str | None:
         return base
     key = f"{base}/{tag}"
     return key if key in SCHEMA else None
-
-
-def spec_for(key: str | None) -> ElementSpec | None:
-    """The table entry for a schema key, or ``None``.
-
-    Example:
-        >>> spec_for("body/site").declares["name"]
-        'site'
-
-    """
-    return None if key is None else SCHEMA.get(key)
 
 
 def reference_namespace(

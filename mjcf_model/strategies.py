@@ -426,10 +426,8 @@ _VALUE_BY_CONVERTER: dict[str, st.SearchStrategy[Any]] = {
     "to_vec2": st.tuples(_FLOAT, _FLOAT),
     "to_vec3": st.tuples(_FLOAT, _FLOAT, _FLOAT),
     "to_vec4": st.tuples(_FLOAT, _FLOAT, _FLOAT, _FLOAT),
-    "to_vec5": st.tuples(*[_FLOAT] * 5),
     "to_vec6": st.tuples(*[_FLOAT] * 6),
     "to_vec1to3": st.lists(_FLOAT, min_size=1, max_size=3).map(tuple),
-    "to_vec2to3": st.lists(_FLOAT, min_size=2, max_size=3).map(tuple),
     "to_vec1to2": st.lists(_FLOAT, min_size=1, max_size=2).map(tuple),
     "to_vec1to5": st.lists(_FLOAT, min_size=1, max_size=5).map(tuple),
 }

@@ -44,10 +44,8 @@ __all__ = [
     "to_vec1to3",
     "to_vec1to5",
     "to_vec2",
-    "to_vec2to3",
     "to_vec3",
     "to_vec4",
-    "to_vec5",
     "to_vec6",
 ]
 
@@ -222,11 +220,6 @@ def to_vec4(value: object) -> Floats | None:
     return None if value is None else _floats(value, 4, 4)
 
 
-def to_vec5(value: object) -> Floats | None:
-    """Exactly five floats (``polycoef``)."""
-    return None if value is None else _floats(value, 5, 5)
-
-
 def to_vec6(value: object) -> Floats | None:
     """Exactly six floats (``fromto``, ``xyaxes``, ``fullinertia``)."""
     return None if value is None else _floats(value, 6, 6)
@@ -240,11 +233,6 @@ def to_vec1to2(value: object) -> Floats | None:
 def to_vec1to3(value: object) -> Floats | None:
     """One to three floats (geom and site ``size``, ``friction``)."""
     return None if value is None else _floats(value, 1, 3)
-
-
-def to_vec2to3(value: object) -> Floats | None:
-    """Two or three floats."""
-    return None if value is None else _floats(value, 2, 3)
 
 
 def to_vec1to5(value: object) -> Floats | None:

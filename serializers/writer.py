@@ -56,10 +56,6 @@ def attribute_texts(element: AnyElement) -> list[tuple[str, str]]:
     return [(name, format_value(value)) for name, value in attribute_items(element)]
 
 
-def _tag(element: AnyElement) -> str:
-    return element.tag
-
-
 def _write(node: Node, depth: int, indent: str, out: list[str]) -> None:
     pad = indent * depth
     if isinstance(node, Comment):
@@ -67,7 +63,7 @@ def _write(node: Node, depth: int, indent: str, out: list[str]) -> None:
         return
     if not isinstance(node, AnyElement):
         raise MjcfValueError(f"cannot write {type(node).__name__}: not an element or a comment")
-    tag = _tag(node)
+    tag = node.tag
     attrs = "".join(
         f' {name}="{text.translate(_ATTRIBUTE_ESCAPES)}"' for name, text in attribute_texts(node)
     )
@@ -162,7 +158,7 @@ def to_etree(node: Node) -> ET.Element:
         return comment
     if not isinstance(node, AnyElement):
         raise MjcfValueError(f"cannot convert {type(node).__name__}: not an element or a comment")
-    element = ET.Element(_tag(node), dict(attribute_texts(node)))
+    element = ET.Element(node.tag, dict(attribute_texts(node)))
     element.text = node.text
     element.extend(to_etree(child) for child in node.children)
     return element
