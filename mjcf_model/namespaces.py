@@ -38,6 +38,8 @@ __all__ = [
     "SCHEMA",
     "ElementSpec",
     "child_key",
+    "children_context",
+    "guess_context",
     "reference_namespace",
 ]
 
@@ -555,3 +557,52 @@ def reference_namespace(
         return namespace
     selector = values.get(namespace[1:])
     return OBJTYPE_NAMESPACES.get(selector) if isinstance(selector, str) else None
+
+
+#: Contexts tried, in order, for an element read without its parents.
+_CONTEXTS = (
+    None,
+    "mujoco",
+    "body",
+    "asset",
+    "actuator",
+    "sensor",
+    "tendon",
+    "equality",
+    "contact",
+    "keyframe",
+    "custom",
+    "deformable",
+    "extension",
+    "default",
+)
+
+
+def children_context(key: str | None, parent_context: str | None) -> str | None:
+    """The context an element's children are read in.
+
+    An element the table does not know (``key`` is ``None``), and an include, pass
+    their parent's context on, so future wrapper elements keep their contents typed.
+
+    Example:
+        >>> children_context("body/frame", "body"), children_context(None, "body")
+        ('body/frame', 'body')
+
+    """
+    if key is None or key == "include":
+        return parent_context
+    return key
+
+
+def guess_context(tag: str) -> str | None:
+    """The most likely parent context of a ``tag`` element read on its own.
+
+    Example:
+        >>> guess_context("mujoco"), guess_context("geom"), guess_context("motor")
+        (None, 'body', 'actuator')
+
+    """
+    for context in _CONTEXTS:
+        if child_key(context, tag) is not None:
+            return context
+    return None

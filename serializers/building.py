@@ -15,58 +15,9 @@ from typing import Any
 
 from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement, field_table
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.namespaces import child_key
 from mjcf_model.registry import CLASS_BY_KEY
 
-__all__ = ["build_element", "children_context", "element_step", "element_text", "guess_context"]
-
-#: Contexts tried, in order, for an element read without its parents.
-_CONTEXTS = (
-    None,
-    "mujoco",
-    "body",
-    "asset",
-    "actuator",
-    "sensor",
-    "tendon",
-    "equality",
-    "contact",
-    "keyframe",
-    "custom",
-    "deformable",
-    "extension",
-    "default",
-)
-
-
-def children_context(key: str | None, parent_context: str | None) -> str | None:
-    """The context an element's children are read in.
-
-    An element the table does not know (``key`` is ``None``), and an include, pass
-    their parent's context on, so future wrapper elements keep their contents typed.
-
-    Example:
-        >>> children_context("body/frame", "body"), children_context(None, "body")
-        ('body/frame', 'body')
-
-    """
-    if key is None or key == "include":
-        return parent_context
-    return key
-
-
-def guess_context(tag: str) -> str | None:
-    """The most likely parent context of a ``tag`` element read on its own.
-
-    Example:
-        >>> guess_context("mujoco"), guess_context("geom"), guess_context("motor")
-        (None, 'body', 'actuator')
-
-    """
-    for context in _CONTEXTS:
-        if child_key(context, tag) is not None:
-            return context
-    return None
+__all__ = ["build_element", "element_step", "element_text"]
 
 
 def element_text(chunks: Sequence[str | None], has_children: bool) -> str | None:

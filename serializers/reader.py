@@ -26,15 +26,9 @@ from mjcf_model.errors import (
     MjcfSecurityError,
     MjcfSyntaxError,
 )
-from mjcf_model.namespaces import child_key
+from mjcf_model.namespaces import child_key, children_context, guess_context
 from mjcf_model.nodes.root import Include, Mujoco
-from serializers.building import (
-    build_element,
-    children_context,
-    element_step,
-    element_text,
-    guess_context,
-)
+from serializers.building import build_element, element_step, element_text
 
 __all__ = ["from_etree", "load", "loads"]
 
