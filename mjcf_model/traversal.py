@@ -1,0 +1,206 @@
+"""Walking a node tree and rebuilding it with only the changed paths new.
+
+Every transform in this package is built on :func:`map_tree` (or its schema-aware
+twin :func:`map_elements`): children are rebuilt first, and an element whose
+children all came back unchanged (``is``) is itself returned unchanged, so a
+transform that changes nothing returns its input, and one that changes a leaf
+shares every other subtree with the input.
+
+>>> from mjcf_model import Body, Geom
+>>> arm = Body(name="arm", children=[Geom(name="g", size=[0.1])])
+>>> map_tree(lambda node: node, arm) is arm
+True
+>>> [(path, element.tag) for path, element in walk(arm)]
+[((), 'body'), ((0,), 'geom')]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator, Sequence
+from typing import TypeVar
+
+import attrs
+
+from mjcf_model.base import AnyElement, Element, GenericElement, Node, TypedElement
+from mjcf_model.namespaces import child_key, children_context, guess_context
+
+__all__ = [
+    "GUESS",
+    "Path",
+    "ElementVisitor",
+    "keyed_walk",
+    "map_elements",
+    "map_tree",
+    "schema_key",
+    "walk",
+    "with_children",
+]
+
+#: A position in a tree: the index of each step in its parent's ``children``.
+Path = tuple[int, ...]
+
+#: ``fn(element, schema key, ancestors root first)``, as :func:`map_elements` calls it.
+ElementVisitor = Callable[[AnyElement, str | None, tuple[AnyElement, ...]], AnyElement]
+
+_E = TypeVar("_E", bound=Element)
+_N = TypeVar("_N", bound=Node)
+_A = TypeVar("_A", bound=TypedElement | GenericElement)
+
+
+class _Guess:
+    def __repr__(self) -> str:
+        return "GUESS"
+
+
+#: Read the root element in the context its tag most likely has (``<geom>`` in a body).
+GUESS = _Guess()
+
+
+def with_children(element: _E, children: Sequence[Node]) -> _E:
+    """``element`` with new children, or ``element`` itself when each child is the same object.
+
+    Example:
+        >>> from mjcf_model import Body, Geom
+        >>> body = Body(children=[Geom()])
+        >>> with_children(body, list(body.children)) is body
+        True
+
+    """
+    old = element.children
+    if len(old) == len(children) and all(a is b for a, b in zip(old, children, strict=True)):
+        return element
+    return attrs.evolve(element, children=tuple(children))
+
+
+def _is_element(node: Node) -> bool:
+    return isinstance(node, (TypedElement, GenericElement))
+
+
+def map_tree(fn: Callable[[Node], Node], node: _N) -> Node:
+    """Apply ``fn`` to every node, children before their parent, sharing what ``fn`` keeps.
+
+    ``fn`` receives each node (comments too) after its children were mapped, and
+    returns it or a replacement.
+
+    Example:
+        >>> from mjcf_model import Body, Geom
+        >>> from mjcf_model.base import with_attributes
+        >>> body = Body(children=[Geom(name="a"), Geom(name="b")])
+        >>> def rename_a(node):
+        ...     is_a = getattr(node, "name", None) == "a"
+        ...     return with_attributes(node, {"name": "z"}) if is_a else node
+        >>> new = map_tree(rename_a, body)
+        >>> [g.name for g in new.geoms], new.children[1] is body.children[1]
+        (['z', 'b'], True)
+
+    """
+    if isinstance(node, Element) and node.children:
+        node = with_children(node, [map_tree(fn, child) for child in node.children])
+    return fn(node)
+
+
+def schema_key(element: AnyElement, context: str | _Guess | None = GUESS) -> str | None:
+    """The schema key of ``element`` read inside ``context`` (guessed from its tag by default).
+
+    Example:
+        >>> from mjcf_model import Geom, Mujoco
+        >>> schema_key(Mujoco()), schema_key(Geom()), schema_key(Geom(), "default")
+        ('mujoco', 'body/geom', 'default/geom')
+
+    """
+    if isinstance(context, _Guess):
+        context = guess_context(element.tag)
+    return child_key(context, element.tag)
+
+
+def map_elements(fn: ElementVisitor, node: _A, context: str | _Guess | None = GUESS) -> _A:
+    """Apply ``fn(element, key, ancestors)`` to every element, children first.
+
+    ``key`` is the element's schema key (``None`` for an element the table does
+    not know), ``ancestors`` the original elements from the root down to the
+    parent. Comments are kept as they are.
+
+    Example:
+        >>> from mjcf_model import Body, Geom
+        >>> from mjcf_model.base import with_attributes
+        >>> def tag_keys(element, key, ancestors):
+        ...     return with_attributes(element, {"key": key})
+        >>> map_elements(tag_keys, Body(children=[Geom()])).geoms[0].extra["key"]
+        'body/geom'
+
+    """
+    if isinstance(context, _Guess):
+        context = guess_context(node.tag)
+    return _map_elements(fn, node, context, ())  # type: ignore[return-value]
+
+
+def _map_elements(
+    fn: ElementVisitor,
+    element: AnyElement,
+    context: str | None,
+    ancestors: tuple[AnyElement, ...],
+) -> AnyElement:
+    key = child_key(context, element.tag)
+    if element.children:
+        inner = children_context(key, context)
+        below = (*ancestors, element)
+        children = [
+            _map_elements(fn, child, inner, below)
+            if isinstance(child, (TypedElement, GenericElement))
+            else child
+            for child in element.children
+        ]
+        element = with_children(element, children)
+    return fn(element, key, ancestors)
+
+
+def walk(node: Node) -> Iterator[tuple[Path, AnyElement]]:
+    """Yield ``(path, element)`` for ``node`` and every element below it, parents first.
+
+    ``path`` indexes ``children`` from ``node`` down (``()`` is ``node``); comments
+    are skipped but keep their index.
+
+    Example:
+        >>> from serializers import loads
+        >>> model = loads('<mujoco><worldbody><geom size="1"/></worldbody></mujoco>')
+        >>> [(path, e.tag) for path, e in walk(model)]
+        [((), 'mujoco'), ((0,), 'worldbody'), ((0, 0), 'geom')]
+
+    """
+    stack: list[tuple[Path, Node]] = [((), node)]
+    while stack:
+        path, current = stack.pop()
+        if not _is_element(current):
+            continue
+        assert isinstance(current, (TypedElement, GenericElement))
+        yield path, current
+        stack.extend(
+            ((*path, index), child) for index, child in reversed(list(enumerate(current.children)))
+        )
+
+
+def keyed_walk(
+    node: AnyElement, context: str | _Guess | None = GUESS
+) -> Iterator[tuple[AnyElement, str | None, tuple[AnyElement, ...]]]:
+    """Yield ``(element, key, ancestors)`` for every element, parents first.
+
+    Example:
+        >>> from mjcf_model import Body, Geom
+        >>> [key for _, key, _ in keyed_walk(Body(children=[Geom()]))]
+        ['body', 'body/geom']
+
+    """
+    if isinstance(context, _Guess):
+        context = guess_context(node.tag)
+    stack: list[tuple[AnyElement, str | None, tuple[AnyElement, ...]]] = [(node, context, ())]
+    while stack:
+        element, parent_context, ancestors = stack.pop()
+        key = child_key(parent_context, element.tag)
+        yield element, key, ancestors
+        inner = children_context(key, parent_context)
+        below = (*ancestors, element)
+        stack.extend(
+            (child, inner, below)
+            for child in reversed(element.children)
+            if isinstance(child, (TypedElement, GenericElement))
+        )
