@@ -17,7 +17,13 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["compile_text_beside", "model_differences", "model_fields"]
+__all__ = [
+    "NAME_FIELDS",
+    "compile_text_beside",
+    "compiled_names",
+    "model_differences",
+    "model_fields",
+]
 
 #: Fields that describe how the model was loaded, not the model.
 _IGNORED = frozenset({"signature"})
@@ -45,6 +51,39 @@ def model_fields() -> tuple[str, ...]:
     return tuple(sorted(names))
 
 
+#: The fields that hold the name table, and the buffer size that grows with it:
+#: renaming changes them and nothing else.
+NAME_FIELDS = frozenset({"names", "names_map", "nnames", "nnames_map", "nbuffer"})
+
+
+def _name_address_fields() -> tuple[str, ...]:
+    return tuple(name for name in model_fields() if name.startswith("name_"))
+
+
+def compiled_names(model: Any) -> dict[str, list[str]]:
+    """The name of every object of a compiled model, by kind (``"body"``, ``"mesh"``...).
+
+    Unnamed objects have ``""``; the world body is ``"world"``.
+
+    Example:
+        >>> import mujoco
+        >>> m = mujoco.MjModel.from_xml_string(
+        ...     "<mujoco><worldbody><geom name='g' size='1'/></worldbody></mujoco>")
+        >>> compiled_names(m)["geom"], compiled_names(m)["body"]
+        (['g'], ['world'])
+
+    """
+    table = bytes(model.names)
+    names: dict[str, list[str]] = {}
+    for field in _name_address_fields():
+        kind = field[len("name_") : -len("adr")]
+        names[kind] = [
+            table[address : table.index(b"\0", address)].decode()
+            for address in getattr(model, field)
+        ]
+    return names
+
+
 def _struct_fields(value: Any) -> dict[str, Any]:
     return {
         name: getattr(value, name)
@@ -66,11 +105,13 @@ def _equal(a: Any, b: Any) -> bool:
     return bool(a == b)
 
 
-def model_differences(a: Any, b: Any) -> list[str]:
+def model_differences(a: Any, b: Any, *, ignore: frozenset[str] = frozenset()) -> list[str]:
     """The names of the fields in which two ``MjModel`` objects differ.
 
     Compares every array and size field (the name table ``names`` included) and
-    the ``opt``, ``vis`` and ``stat`` structs, exactly (NaN equals NaN).
+    the ``opt``, ``vis`` and ``stat`` structs, exactly (NaN equals NaN), except
+    the fields named in ``ignore`` (for instance :data:`NAME_FIELDS` and the
+    ``name_*adr`` address arrays after a renaming).
 
     Example:
         >>> import mujoco
@@ -79,7 +120,11 @@ def model_differences(a: Any, b: Any) -> list[str]:
         []
 
     """
-    differing = [name for name in model_fields() if not _equal(getattr(a, name), getattr(b, name))]
+    differing = [
+        name
+        for name in model_fields()
+        if name not in ignore and not _equal(getattr(a, name), getattr(b, name))
+    ]
     for struct in ("opt", "stat"):
         left, right = _struct_fields(getattr(a, struct)), _struct_fields(getattr(b, struct))
         differing.extend(

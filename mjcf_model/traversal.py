@@ -22,6 +22,7 @@ from typing import TypeVar
 import attrs
 
 from mjcf_model.base import AnyElement, Element, GenericElement, Node, TypedElement
+from mjcf_model.errors import MjcfValueError
 from mjcf_model.namespaces import child_key, children_context, guess_context
 
 __all__ = [
@@ -31,6 +32,7 @@ __all__ = [
     "keyed_walk",
     "map_elements",
     "map_tree",
+    "refuse_include",
     "schema_key",
     "walk",
     "with_children",
@@ -152,6 +154,24 @@ def _map_elements(
         ]
         element = with_children(element, children)
     return fn(element, key, ancestors)
+
+
+def refuse_include(key: str | None, action: str) -> None:
+    """Raise when a transform meets an ``<include>``, whose contents it cannot see.
+
+    Example:
+        >>> refuse_include("include", "prefix")
+        Traceback (most recent call last):
+        ...
+        mjcf_model.errors.MjcfValueError: cannot prefix a model with <include> elements: \
+their files are not part of the tree; load it with inline_includes=True
+
+    """
+    if key == "include":
+        raise MjcfValueError(
+            f"cannot {action} a model with <include> elements: their files are not part "
+            "of the tree; load it with inline_includes=True"
+        )
 
 
 def walk(node: Node) -> Iterator[tuple[Path, AnyElement]]:

@@ -7,6 +7,7 @@ local runs).
 
 from __future__ import annotations
 
+import functools
 import importlib.util
 import os
 from pathlib import Path
@@ -43,6 +44,7 @@ def corpus_files() -> list[Path]:
     return files
 
 
+@functools.cache
 def compiling_corpus() -> list[Path]:
     """The corpus files that MuJoCo compiles as shipped."""
     compiling = []

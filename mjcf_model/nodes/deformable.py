@@ -194,7 +194,7 @@ class Flex(TypedElement):
     tag: ClassVar[str] = "flex"
     #: Name, unique within its namespace.
     name: str | None = attrs.field(default=None, converter=to_str)
-    #: Name of the body.
+    #: Names of the bodies the vertices belong to, separated by spaces.
     body: str | None = attrs.field(default=None, converter=to_str)
     #: Number of cells.
     cellcount: str | None = attrs.field(default=None, converter=to_str)
@@ -213,7 +213,7 @@ class Flex(TypedElement):
     #: Name of the material asset used for rendering.
     material: str | None = attrs.field(default=None, converter=to_str)
     #: Names of the bodies used as nodes.
-    node: Floats | None = attrs.field(default=None, converter=to_floats)
+    node: str | None = attrs.field(default=None, converter=to_str)
     #: Node coordinates.
     nodecoord: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Radius of the flex elements.

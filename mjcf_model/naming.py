@@ -1,0 +1,277 @@
+"""Names: which a model declares, and renaming or prefixing them with every reference.
+
+Everything here reads the namespace table (:mod:`mjcf_model.namespaces`), so a
+body, a mesh, a default class and a keyframe are renamed by the same code, and
+every attribute that refers to them follows: ``geom mesh``, ``childclass``,
+sensor ``objname`` (in the namespace its ``objtype`` names), flex ``body`` lists.
+
+Assets read from a file without a ``name`` (meshes, textures, height fields,
+skins, models) have the file's stem as their name in MuJoCo; renaming one writes
+the new name explicitly.
+
+>>> from serializers import dumps, loads
+>>> model = loads('''<mujoco><worldbody><body name="arm"><joint name="elbow"/></body></worldbody>
+... <actuator><motor joint="elbow" name="m"/></actuator></mujoco>''')
+>>> print(dumps(prefixed(model, "left_")), end="")
+<mujoco>
+  <worldbody>
+    <body name="left_arm">
+      <joint name="left_elbow"/>
+    </body>
+  </worldbody>
+  <actuator>
+    <motor joint="left_elbow" name="left_m"/>
+  </actuator>
+</mujoco>
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Collection, Iterator, Mapping
+
+from mjcf_model.base import AnyElement, get_attribute, with_attributes
+from mjcf_model.errors import MjcfValueError
+from mjcf_model.namespaces import NAMESPACES, SCHEMA, ElementSpec, reference_namespace
+from mjcf_model.traversal import GUESS, keyed_walk, map_elements, refuse_include
+from mjcf_model.values import Value
+
+__all__ = [
+    "ALL",
+    "declared_names",
+    "prefix_map",
+    "prefixed",
+    "renamed",
+]
+
+#: Every namespace, the default of ``namespaces=`` arguments.
+ALL: frozenset[str] = NAMESPACES
+
+#: Elements whose name, when not written, is the stem of their ``file``.
+_NAMED_BY_FILE = frozenset(
+    {"asset/mesh", "asset/texture", "asset/hfield", "asset/skin", "asset/model", "deformable/skin"}
+)
+
+#: The top-level default class: MuJoCo does not allow renaming it.
+_MAIN_CLASS = ("main", "class")
+
+#: ``rename(namespace, name)``: the new name, or the same one to keep it.
+Renamer = Callable[[str, str], str]
+
+
+def _declarations(element: AnyElement, key: str | None) -> Iterator[tuple[str, str, str]]:
+    """``(attribute, namespace, name)`` for each name ``element`` declares (file stems too)."""
+    spec = SCHEMA.get(key) if key is not None else None
+    if spec is None:
+        return
+    for attribute, namespace in spec.declares.items():
+        name = get_attribute(element, attribute)
+        if isinstance(name, str) and name and (name, namespace) != _MAIN_CLASS:
+            yield attribute, namespace, name
+        elif name is None and key in _NAMED_BY_FILE:
+            file = get_attribute(element, "file")
+            if isinstance(file, str) and file:
+                stem = os.path.splitext(os.path.basename(file.replace("\\", "/")))[0]
+                yield attribute, namespace, stem
+
+
+def declared_names(node: AnyElement) -> dict[str, frozenset[str]]:
+    """The names ``node`` and its descendants declare, by namespace.
+
+    Example:
+        >>> from serializers import loads
+        >>> model = loads('<mujoco><asset><mesh file="parts/hand.stl"/></asset>'
+        ...               '<worldbody><body name="b"><geom name="g"/></body></worldbody></mujoco>')
+        >>> sorted(declared_names(model).items())
+        [('body', frozenset({'b'})), ('geom', frozenset({'g'})), ('mesh', frozenset({'hand'}))]
+
+    """
+    found: dict[str, set[str]] = {}
+    for element, key, _ in keyed_walk(node):
+        for _, namespace, name in _declarations(element, key):
+            found.setdefault(namespace, set()).add(name)
+    return {namespace: frozenset(names) for namespace, names in found.items()}
+
+
+def _checked_namespaces(namespaces: Collection[str]) -> frozenset[str]:
+    chosen = frozenset(namespaces)
+    unknown = chosen - NAMESPACES
+    if unknown:
+        raise MjcfValueError(
+            f"unknown namespace(s) {sorted(unknown)}; the namespaces are {sorted(NAMESPACES)}"
+        )
+    return chosen
+
+
+def _excluder(exclude: Callable[[str], bool] | Collection[str] | None) -> Callable[[str], bool]:
+    if exclude is None:
+        return lambda name: False
+    if callable(exclude):
+        return exclude
+    names = frozenset(exclude)
+    return names.__contains__
+
+
+def prefix_map(
+    node: AnyElement,
+    prefix: str,
+    *,
+    namespaces: Collection[str] = ALL,
+    exclude: Callable[[str], bool] | Collection[str] | None = None,
+) -> dict[str, dict[str, str]]:
+    """The renaming :func:`prefixed` applies: namespace to old name to new name.
+
+    Example:
+        >>> from mjcf_model import Body, Geom
+        >>> prefix_map(Body(name="b", children=[Geom(name="g")]), "p_", exclude={"g"})
+        {'body': {'b': 'p_b'}}
+
+    """
+    chosen = _checked_namespaces(namespaces)
+    excluded = _excluder(exclude)
+    return {
+        namespace: {name: prefix + name for name in sorted(names) if not excluded(name)}
+        for namespace, names in declared_names(node).items()
+        if namespace in chosen and any(not excluded(name) for name in names)
+    }
+
+
+def _renamed_attributes(
+    element: AnyElement, key: str | None, rename: Renamer
+) -> dict[str, Value | None]:
+    """The attribute changes that rename what ``element`` declares and refers to."""
+    spec: ElementSpec | None = SCHEMA.get(key) if key is not None else None
+    if spec is None:
+        return {}
+    changes: dict[str, Value | None] = {}
+    for attribute, namespace, name in _declarations(element, key):
+        new = rename(namespace, name)
+        if new != name:
+            changes[attribute] = new
+    if not spec.references:
+        return changes
+    values = {attribute: get_attribute(element, attribute) for attribute in spec.references}
+    for attribute, value in values.items():
+        if not isinstance(value, str) or not value:
+            continue
+        target = reference_namespace(spec, attribute, {**values, **_selectors(element, spec)})
+        if target is None:
+            continue
+        if attribute in spec.list_references:
+            joined = " ".join(rename(target, part) for part in value.split())
+            if joined != " ".join(value.split()):
+                changes[attribute] = joined
+        elif (renamed_value := rename(target, value)) != value:
+            changes[attribute] = renamed_value
+    return changes
+
+
+def _selectors(element: AnyElement, spec: ElementSpec) -> dict[str, Value | None]:
+    """The ``objtype``-style attributes that say where ``@``-references point."""
+    return {
+        target[1:]: get_attribute(element, target[1:])
+        for target in spec.references.values()
+        if target.startswith("@")
+    }
+
+
+def _apply(node: AnyElement, rename: Renamer, attach_prefix: str | None) -> AnyElement:
+    def visit(element: AnyElement, key: str | None, _: tuple[AnyElement, ...]) -> AnyElement:
+        refuse_include(key, "rename names in")
+        changes = _renamed_attributes(element, key, rename)
+        if attach_prefix and key == "body/attach":
+            inner = get_attribute(element, "prefix")
+            changes["prefix"] = attach_prefix + (inner if isinstance(inner, str) else "")
+        return with_attributes(element, changes)
+
+    return map_elements(visit, node, GUESS)
+
+
+def renamed(
+    node: AnyElement, mapping: Mapping[str, str] | Mapping[str, Mapping[str, str]]
+) -> AnyElement:
+    """A copy with names changed as ``mapping`` says, and every reference to them.
+
+    ``mapping`` maps old names to new ones in every namespace, or maps namespace
+    names (``"body"``, ``"mesh"``, ``"class"``...) to such maps. Names it does not
+    mention, and references to them, stay.
+
+    Example:
+        >>> from mjcf_model import Body, Geom
+        >>> body = Body(name="base", children=[Geom(name="base")])
+        >>> new = renamed(body, {"geom": {"base": "base_geom"}})
+        >>> new.name, new.geoms[0].name
+        ('base', 'base_geom')
+
+    """
+    if not mapping:
+        return node
+    if all(isinstance(value, str) for value in mapping.values()):
+        flat: Mapping[str, str] = mapping  # type: ignore[assignment]
+
+        def rename(namespace: str, name: str) -> str:
+            return flat.get(name, name)
+    else:
+        nested: Mapping[str, Mapping[str, str]] = mapping  # type: ignore[assignment]
+        _checked_namespaces(nested)
+
+        def rename(namespace: str, name: str) -> str:
+            return nested.get(namespace, {}).get(name, name)
+
+    return _apply(node, rename, None)
+
+
+def prefixed(
+    node: AnyElement,
+    prefix: str,
+    *,
+    namespaces: Collection[str] = ALL,
+    exclude: Callable[[str], bool] | Collection[str] | None = None,
+    undeclared: bool = False,
+) -> AnyElement:
+    """A copy where every name ``node`` declares, and every reference to it, starts with ``prefix``.
+
+    Exact and composable: ``prefixed(prefixed(m, a), b) == prefixed(m, b + a)``;
+    a name that already starts with ``prefix`` is prefixed again.
+
+    Args:
+        node: A model or any element of one.
+        prefix: The text put before each name.
+        namespaces: The namespaces to prefix (default all; see
+            :data:`mjcf_model.namespaces.NAMESPACES`).
+        exclude: Names to leave alone: a collection, or a predicate on the name.
+        undeclared: Also prefix references to names ``node`` does not declare
+            (by default they are left alone: they may point into a parent model).
+
+    With all namespaces, an ``<attach>`` element's ``prefix`` also gets ``prefix``
+    in front, so the names it brings in are prefixed too.
+
+    Example:
+        >>> from mjcf_model import Body, Geom
+        >>> body = Body(name="b", childclass="c", children=[Geom(name="g", material="m")])
+        >>> new = prefixed(body, "p_")
+        >>> new.name, new.childclass, new.geoms[0].name, new.geoms[0].material
+        ('p_b', 'c', 'p_g', 'm')
+        >>> prefixed(body, "p_", undeclared=True).geoms[0].material
+        'p_m'
+
+    """
+    chosen = _checked_namespaces(namespaces)
+    if not prefix:
+        return node
+    excluded = _excluder(exclude)
+    if undeclared:
+
+        def rename(namespace: str, name: str) -> str:
+            keep = namespace not in chosen or excluded(name)
+            return name if keep else prefix + name
+    else:
+        declared = declared_names(node)
+
+        def rename(namespace: str, name: str) -> str:
+            keep = (
+                namespace not in chosen or name not in declared.get(namespace, ()) or excluded(name)
+            )
+            return name if keep else prefix + name
+
+    return _apply(node, rename, prefix if chosen == ALL else None)
