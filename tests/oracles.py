@@ -45,3 +45,33 @@ def scaled_problems(
         ):
             problems.append(field)
     return problems
+
+
+def trees_close(left: Any, right: Any, rel: float = 1e-9) -> bool:
+    """Whether two node trees are equal, numbers compared within ``rel``."""
+    import math
+
+    from mjcf_model.base import Comment, attribute_items
+
+    if type(left) is not type(right):
+        return False
+    if isinstance(left, Comment):
+        return bool(left == right)
+    items_left, items_right = dict(attribute_items(left)), dict(attribute_items(right))
+    if items_left.keys() != items_right.keys() or left.tag != right.tag:
+        return False
+    for key, a in items_left.items():
+        b = items_right[key]
+        if isinstance(a, tuple) and isinstance(b, tuple) and len(a) == len(b):
+            if not all(
+                math.isclose(x, y, rel_tol=rel, abs_tol=1e-12) for x, y in zip(a, b, strict=True)
+            ):
+                return False
+        elif isinstance(a, float) and isinstance(b, float):
+            if not math.isclose(a, b, rel_tol=rel, abs_tol=1e-12):
+                return False
+        elif a != b:
+            return False
+    return len(left.children) == len(right.children) and all(
+        trees_close(x, y, rel) for x, y in zip(left.children, right.children, strict=True)
+    )

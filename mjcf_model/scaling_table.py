@@ -1,0 +1,350 @@
+"""The scaling rule of every schema key, built from :mod:`mjcf_model.scaling_rules`.
+
+>>> from mjcf_model import Site
+>>> from mjcf_model.scaling_rules import ScaleContext
+>>> RULES["body/site"](Site(pos=[1, 0, 0]), (), ScaleContext(factors=(2.0, 2.0, 2.0)))
+{'pos': (2.0, 0.0, 0.0), 'size': (0.01, 0.01, 0.01)}
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Mapping
+from types import MappingProxyType
+
+import numpy as np
+
+from mjcf_model.base import AnyElement, get_attribute
+from mjcf_model.namespaces import SCHEMA
+from mjcf_model.scaling_rules import (
+    NO_LENGTHS,
+    Changes,
+    Rule,
+    ScaleContext,
+    combine,
+    inertias,
+    lengths,
+    masses,
+    numbers,
+    parts,
+    points,
+    times,
+    with_builtin,
+)
+
+__all__ = ["RULES", "UNSCALED_BY_DECISION"]
+
+#: Elements with a length-sounding attribute that are deliberately left alone, and why.
+UNSCALED_BY_DECISION: Mapping[str, str] = MappingProxyType(
+    {
+        "default/tendon": "shared by spatial and fixed tendons; each tendon writes its own "
+        "scaled lengths instead",
+        "custom/numeric": "size is a count of values, not a length",
+    }
+)
+
+
+@functools.cache
+def _builtin(tag: str, attribute: str) -> tuple[float, ...]:
+    """MuJoCo's built-in default of an attribute, read from an empty ``MjSpec``.
+
+    Values MuJoCo keeps in single precision are given by their shortest text
+    (``0.02``, not ``0.019999999552965164``).
+    """
+    import mujoco
+
+    value = getattr(getattr(mujoco.MjSpec().default, tag), attribute)
+    numbers = []
+    for number in np.atleast_1d(np.asarray(value, dtype=float)):
+        single = np.float32(number)
+        numbers.append(float(str(single)) if float(single) == number else float(number))
+    return tuple(numbers)
+
+
+def _mean(element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext) -> float:
+    return context.mean
+
+
+def _per_axis(
+    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+) -> tuple[float, float, float]:
+    return context.factors
+
+
+def _builtin_length(attribute: str, tag: str, spec_tag: str = "", spec_attribute: str = "") -> Rule:
+    """A length MuJoCo gives a non-zero default (camera ``ipd``, light ``bulbradius``)."""
+    builtin = functools.partial(_builtin, spec_tag or tag, spec_attribute or attribute)
+    return with_builtin(attribute, tag, builtin, _mean)
+
+
+def _size_factors(
+    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+) -> list[float]:
+    """Robosuite's per-axis convention for geom and site sizes, by how many are written.
+
+    Three values scale per axis; two are a radius (mean of x and y) and a
+    half-length (z); one is a radius (mean of all three). Values completed from
+    defaults beyond those written scale per axis. Exact when uniform.
+    """
+    x, y, z = context.factors
+    written = len(numbers(get_attribute(element, "size")) or ())
+    by_count = {1: [context.mean], 2: [(x + y) / 2, z], 3: [x, y, z]}
+    return [*by_count.get(written, []), *[x, y, z][written:]]
+
+
+def _geom_size(
+    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+) -> Changes:
+    """Scale a geom's ``size`` (every value is a length, whatever the type)."""
+    size = numbers(get_attribute(element, "size"))
+    if size is None:
+        return {}
+    factors = _size_factors(element, ancestors, context)
+    return {"size": tuple(n * f for n, f in zip(size, factors, strict=False))}
+
+
+_site_size = with_builtin(
+    "size", "site", functools.partial(_builtin, "site", "size"), _size_factors
+)
+
+
+def _slide_factor(kind: object, axis: object, context: ScaleContext) -> float:
+    if kind != "slide":
+        return 1.0
+    return context.along(numbers(axis) or (0.0, 0.0, 1.0))  # type: ignore[arg-type]
+
+
+_JOINT_LENGTHS = ("range", "ref", "springref", "margin")
+
+
+def _joint(
+    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+) -> Changes:
+    """Ranges, references and margins are lengths for slide joints only.
+
+    A value a joint inherits was scaled in its class when that class's joints
+    slide; where the joint's own type differs, the right value is written on it.
+    """
+    classes = context.classes
+    factor = _slide_factor(
+        classes.resolve(element, ancestors, "type"),
+        classes.resolve(element, ancestors, "axis"),
+        context,
+    )
+    changes: Changes = {}
+    name = classes.class_of(element, ancestors)
+    if ancestors and ancestors[-1].tag == "default":
+        name = classes.parents.get(name) or ""
+    for attribute in _JOINT_LENGTHS:
+        own = get_attribute(element, attribute)
+        if own is not None:
+            if factor != 1.0:
+                changes[attribute] = times(own, factor)
+            continue
+        inherited = classes.lookup(name, "joint", attribute) if name else None
+        if inherited is None:
+            continue
+        value, provider = inherited
+        provider_kind = classes.lookup(provider, "joint", "type")
+        provider_axis = classes.lookup(provider, "joint", "axis")
+        provider_factor = _slide_factor(
+            provider_kind and provider_kind[0], provider_axis and provider_axis[0], context
+        )
+        if provider_factor != factor:
+            changes[attribute] = times(value, factor)
+    return changes
+
+
+def _materialized(attribute: str, tag: str) -> Rule:
+    """Write a tendon length scaled on the element, whether its own or inherited.
+
+    The default tendon is shared by spatial and fixed tendons, so it is left alone.
+    """
+
+    def rule(
+        element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+    ) -> Changes:
+        value = context.classes.resolve(element, ancestors, attribute)
+        if numbers(value) is None:
+            return {}
+        assert value is not None
+        return {attribute: times(value, context.mean)}
+
+    return rule
+
+
+_TENDON_LENGTHS = [_materialized(a, "tendon") for a in ("range", "springlength", "margin")]
+
+
+def _spatial_tendon(
+    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+) -> Changes:
+    changes = combine(*_TENDON_LENGTHS)(element, ancestors, context)
+    width = numbers(context.classes.resolve(element, ancestors, "width"))
+    changes["width"] = (width or _builtin("tendon", "width"))[0] * context.mean
+    return changes
+
+
+def _fixed_tendon(
+    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+) -> Changes:
+    """A fixed tendon's length is a length only when every joint in it slides."""
+    types = {j.name: j.type for j in context.layout or ()}
+    joints = [get_attribute(c, "joint") for c in element.elements]
+    if not joints or any(types.get(j) != "slide" for j in joints if isinstance(j, str)):
+        return {}
+    return combine(*_TENDON_LENGTHS)(element, ancestors, context)
+
+
+def _position_ctrlrange(
+    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+) -> Changes:
+    """A position actuator on a slide joint takes targets in length units."""
+    joint = get_attribute(element, "joint")
+    for info in context.layout or ():
+        if info.name == joint and info.type == "slide":
+            value = get_attribute(element, "ctrlrange")
+            return {} if value is None else {"ctrlrange": times(value, context.along(info.axis))}
+    return {}
+
+
+def _keyframe(
+    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+) -> Changes:
+    """Mocap positions, and the slide and free-joint parts of ``qpos`` and ``qvel``."""
+    changes = points("mpos")[0](element, ancestors, context)
+    if context.layout is None:
+        return changes
+    qpos: list[float] = []
+    qvel: list[float] = []
+    for joint in context.layout:
+        if joint.type == "free":
+            qpos += [*context.factors, 1, 1, 1, 1]
+            qvel += [*context.factors, 1, 1, 1]
+        elif joint.type == "ball":
+            qpos += [1, 1, 1, 1]
+            qvel += [1, 1, 1]
+        else:
+            factor = context.along(joint.axis) if joint.type == "slide" else 1.0
+            qpos.append(factor)
+            qvel.append(factor)
+    for attribute, factors in (("qpos", qpos), ("qvel", qvel)):
+        value = numbers(get_attribute(element, attribute))
+        if value is not None and len(value) == len(factors):
+            changes[attribute] = tuple(v * f for v, f in zip(value, factors, strict=True))
+    return changes
+
+
+def _hfield(
+    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+) -> Changes:
+    size = numbers(get_attribute(element, "size"))
+    if size is None:
+        return {}
+    x, y, z = context.factors
+    return {"size": tuple(n * f for n, f in zip(size, (x, y, z, z), strict=False))}
+
+
+def _weld_relpose(
+    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+) -> Changes:
+    """The first three of ``relpose`` are a position; the rest a quaternion."""
+    pose = numbers(get_attribute(element, "relpose"))
+    if pose is None:
+        return {}
+    return {
+        "relpose": tuple(v * f for v, f in zip(pose, (*context.factors, 1, 1, 1, 1), strict=False))
+    }
+
+
+def _cylinder_area(
+    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+) -> Changes:
+    area = get_attribute(element, "area")
+    return {} if area is None else {"area": times(area, context.mean**2)}
+
+
+_GEOM = combine(
+    points("pos", "fromto"),
+    _geom_size,
+    lengths("margin", "gap"),
+    parts("friction", (1.0,), 1),
+    masses("mass"),
+)
+_SITE = combine(points("pos", "fromto"), _site_size)
+_CAMERA = combine(
+    points("pos"),
+    _builtin_length("ipd", "camera"),
+    lengths("focal", "sensorsize", "principal"),
+)
+_LIGHT = combine(
+    points("pos"),
+    _builtin_length("bulbradius", "light"),
+    _builtin_length("range", "light"),
+)
+_CONTACT = combine(lengths("margin", "gap"), parts("friction", (1.0, 1.0), 2))
+_ACTUATOR = combine(lengths("cranklength"))
+_MESH = with_builtin("scale", "mesh", functools.partial(_builtin, "mesh", "scale"), _per_axis)
+
+_EXPLICIT: dict[str, Rule] = {
+    "option": combine(lengths("o_margin")),
+    "statistic": combine(
+        points("center"), lengths("extent", "meansize"), masses("meanmass"), inertias("meaninertia")
+    ),
+    "default/mesh": combine(points("scale")),
+    "default/joint": combine(points("pos"), _joint),
+    "default/geom": _GEOM,
+    "default/site": _SITE,
+    "default/camera": _CAMERA,
+    "default/light": _LIGHT,
+    "default/pair": _CONTACT,
+    "asset/mesh": _MESH,
+    "asset/hfield": _hfield,
+    "asset/skin": combine(points("vertex"), lengths("inflate")),
+    "asset/skin/bone": combine(points("bindpos")),
+    "body": combine(points("pos")),
+    "body/inertial": combine(points("pos"), masses("mass"), inertias("diaginertia", "fullinertia")),
+    "body/joint": combine(points("pos"), _joint),
+    "body/geom": _GEOM,
+    "body/site": _SITE,
+    "body/camera": _CAMERA,
+    "body/light": _LIGHT,
+    "body/flexcomp": combine(
+        points("pos", "spacing", "point", "origin"),
+        lengths("radius", "inertiabox"),
+        masses("mass"),
+        with_builtin("scale", "flexcomp", functools.partial(_builtin, "mesh", "scale"), _per_axis),
+    ),
+    "body/flexcomp/elasticity": combine(lengths("thickness")),
+    "body/flexcomp/contact": combine(lengths("margin", "gap")),
+    "body/frame": combine(points("pos")),
+    "body/replicate": combine(points("offset")),
+    "deformable/flex": combine(points("vertex", "nodecoord"), lengths("radius")),
+    "deformable/flex/contact": combine(lengths("margin", "gap")),
+    "deformable/flex/elasticity": combine(lengths("thickness")),
+    "deformable/skin": combine(points("vertex"), lengths("inflate")),
+    "deformable/skin/bone": combine(points("bindpos")),
+    "contact/pair": _CONTACT,
+    "tendon/spatial": _spatial_tendon,
+    "tendon/fixed": _fixed_tendon,
+    "equality/connect": combine(points("anchor")),
+    "equality/weld": combine(points("anchor"), _weld_relpose),
+    "actuator/position": combine(_ACTUATOR, _position_ctrlrange),
+    "actuator/cylinder": combine(_ACTUATOR, lengths("diameter"), _cylinder_area),
+    "default/cylinder": combine(_ACTUATOR, lengths("diameter"), _cylinder_area),
+    "keyframe/key": _keyframe,
+}
+
+
+def _rule_of(key: str) -> Rule:
+    if key in _EXPLICIT:
+        return _EXPLICIT[key]
+    section = key.split("/")[0]
+    actuator_default = section == "default" and "cranklength" in SCHEMA[key].attributes
+    if (section == "actuator" and not key.endswith("/config")) or actuator_default:
+        return _ACTUATOR
+    return NO_LENGTHS
+
+
+#: The scaling rule of every schema key (``NO_LENGTHS`` where nothing is a length).
+RULES: Mapping[str, Rule] = MappingProxyType({key: _rule_of(key) for key in SCHEMA})

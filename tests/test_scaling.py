@@ -1,0 +1,192 @@
+"""Scaling: every length multiplied, checked by MuJoCo on the corpus and on drawn models."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import mujoco
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from mjcf_model import Body, Geom, Mujoco, Site
+from mjcf_model.compare import compile_text_beside
+from mjcf_model.errors import MjcfValueError
+from mjcf_model.namespaces import SCHEMA
+from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.scaling import scaled
+from mjcf_model.scaling_rules import NO_LENGTHS
+from mjcf_model.scaling_table import RULES, UNSCALED_BY_DECISION
+from mjcf_model.strategies import models
+from mjcf_model.traversal import map_tree
+from serializers import dumps, load, loads, to_dict
+from tests.conftest import compiling_corpus, corpus_id
+from tests.oracles import scaled_problems, trees_close
+
+CORPUS = compiling_corpus()
+
+#: The compiled lengths the issue names, which must be exactly twice the original's.
+LENGTH_FIELDS = (
+    "body_pos",
+    "geom_size",
+    "geom_pos",
+    "site_pos",
+    "site_size",
+    "jnt_pos",
+    "cam_pos",
+    "light_pos",
+    "mesh_vert",
+)
+
+#: Attribute names that hold a length wherever they appear.
+LENGTH_ATTRIBUTES = frozenset(
+    {"pos", "size", "fromto", "anchor", "margin", "gap", "vertex", "offset", "bindpos", "radius"}
+)
+
+
+def _slide_ranges(model: mujoco.MjModel) -> np.ndarray:
+    return model.jnt_range[model.jnt_type == mujoco.mjtJoint.mjJNT_SLIDE]
+
+
+def _doubled_problems(original: mujoco.MjModel, changed: mujoco.MjModel) -> list[str]:
+    problems = scaled_problems(original, changed, 2.0, LENGTH_FIELDS)
+    if not np.allclose(_slide_ranges(changed), 2 * _slide_ranges(original), rtol=1e-9, atol=0):
+        problems.append("slide joint ranges")
+    return problems
+
+
+@pytest.mark.parametrize("path", CORPUS, ids=corpus_id)
+def test_corpus_model_scaled_by_two_doubles_every_length(path: Path) -> None:
+    """A corpus model scaled by 2 compiles with every named length array exactly doubled."""
+    model = load(path, inline_includes=True)
+    changed = compile_text_beside(dumps(scaled(model, 2)), path)
+    assert _doubled_problems(mujoco.MjModel.from_xml_path(str(path)), changed) == []
+
+
+@given(models())
+def test_drawn_model_scaled_by_two_doubles_every_length(model: Mujoco) -> None:
+    """The same oracle on drawn models, whose input stays untouched."""
+    snapshot = to_dict(model)
+    changed = mujoco.MjModel.from_xml_string(dumps(scaled(model, 2)))
+    assert _doubled_problems(mujoco.MjModel.from_xml_string(dumps(model)), changed) == []
+    assert to_dict(model) == snapshot
+
+
+@given(models())
+def test_scaling_by_one_and_identity_map_return_the_input(model: Mujoco) -> None:
+    """``scaled(m, 1) is m`` and ``map_tree(identity, m) is m``."""
+    assert scaled(model, 1) is model
+    assert scaled(model, [1, 1, 1]) is model
+    assert map_tree(lambda node: node, model) is model
+
+
+_FACTORS = st.floats(0.25, 4.0, allow_nan=False)
+
+
+@given(models(), _FACTORS, _FACTORS, st.sampled_from(["keep", "volume"]))
+def test_scaling_composes(model: Mujoco, a: float, b: float, mass: str) -> None:
+    """``scaled(scaled(m, a), b)`` equals ``scaled(m, a * b)`` within float tolerance."""
+    twice = scaled(scaled(model, a, mass=mass), b, mass=mass)
+    assert trees_close(twice, scaled(model, a * b, mass=mass))
+
+
+def test_every_schema_key_and_node_type_has_a_scaling_rule() -> None:
+    """Every element of the table, and so every typed class, has an explicit rule."""
+    assert set(RULES) == set(SCHEMA)
+    for key, cls in CLASS_BY_KEY.items():
+        assert key in RULES, cls.__name__
+
+
+def test_elements_with_length_attributes_do_not_use_the_no_lengths_rule() -> None:
+    """An element with a position, size, margin... has a rule, unless left alone on purpose."""
+    forgotten = [
+        key
+        for key, spec in SCHEMA.items()
+        if spec.attributes & LENGTH_ATTRIBUTES
+        and RULES[key] is NO_LENGTHS
+        and not key.startswith("visual")
+    ]
+    assert sorted(forgotten) == sorted(UNSCALED_BY_DECISION)
+
+
+def test_joint_type_from_a_default_class_decides_whether_range_scales() -> None:
+    """A slide joint by class scales its range; a hinge sharing the class's range does not."""
+    model = loads(
+        """<mujoco><default><default class="rail"><joint type="slide" range="0 0.5"/></default>
+        </default><worldbody><body childclass="rail"><geom size="0.1"/><joint name="s"/>
+        <joint name="h" type="hinge"/></body></worldbody></mujoco>"""
+    )
+    original = mujoco.MjModel.from_xml_string(dumps(model))
+    changed = mujoco.MjModel.from_xml_string(dumps(scaled(model, 3)))
+    assert np.allclose(changed.jnt_range[0], 3 * original.jnt_range[0])
+    assert np.allclose(changed.jnt_range[1], original.jnt_range[1])
+
+
+def test_mass_policies_as_compiled_by_mujoco() -> None:
+    """``keep`` keeps explicit masses; ``volume`` scales them by s**3 and inertia by s**5."""
+    model = loads(
+        """<mujoco><worldbody><body><freejoint/><inertial pos="0 0 0" mass="2"
+        diaginertia="0.1 0.2 0.3"/><geom size="0.1" mass="1"/></body></worldbody></mujoco>"""
+    )
+    original = mujoco.MjModel.from_xml_string(dumps(model))
+    kept = mujoco.MjModel.from_xml_string(dumps(scaled(model, 2)))
+    volume = mujoco.MjModel.from_xml_string(dumps(scaled(model, 2, mass="volume")))
+    assert kept.body_mass[1] == original.body_mass[1]
+    assert np.allclose(kept.body_inertia[1], 4 * original.body_inertia[1])
+    assert np.isclose(volume.body_mass[1], 8 * original.body_mass[1])
+    assert np.allclose(volume.body_inertia[1], 32 * original.body_inertia[1])
+
+
+def test_per_axis_sizes_follow_robosuites_conventions() -> None:
+    """Sizes as robosuite's contract measured for ``scale=[1, 2, 3]`` (e8)."""
+    body = Body(
+        children=[
+            Geom(type="box", size=[0.1, 0.2, 0.3]),
+            Geom(type="cylinder", size=[0.1, 0.2]),
+            Geom(type="sphere", size=[0.05]),
+            Site(size=[0.01, 0.02]),
+        ]
+    )
+    new = scaled(body, [1, 2, 3])
+    assert [g.size for g in new.geoms] == [
+        (0.1, 0.4, 0.8999999999999999),
+        (0.15000000000000002, 0.6000000000000001),
+        (0.1,),
+    ]
+    assert new.sites[0].size[:2] == (0.015, 0.06)
+
+
+def test_site_without_size_gets_mujocos_default_scaled() -> None:
+    """An unsized site compiles to twice MuJoCo's default size."""
+    model = loads('<mujoco><worldbody><site name="s"/></worldbody></mujoco>')
+    changed = mujoco.MjModel.from_xml_string(dumps(scaled(model, 2)))
+    assert np.allclose(changed.site_size[0], [0.01, 0.01, 0.01])
+
+
+def test_keyframe_qpos_scales_only_its_lengths() -> None:
+    """Slide and free-joint positions in a key scale; angles and quaternions do not."""
+    model = loads(
+        """<mujoco><worldbody><body><freejoint/><geom size="0.1"/><body pos="0 0 1">
+        <joint type="slide" axis="1 0 0"/><joint type="hinge"/><geom size="0.1"/></body></body>
+        </worldbody><keyframe><key qpos="1 2 3 1 0 0 0 0.5 0.7"/></keyframe></mujoco>"""
+    )
+    key = scaled(model, 2).keyframe.keys[0]
+    assert key.qpos == (2.0, 4.0, 6.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.7)
+
+
+@pytest.mark.parametrize("factor", [0, -1, [1, 2], float("nan")])
+def test_bad_factors_are_refused(factor: object) -> None:
+    """A factor that is not one or three positive numbers is an error."""
+    with pytest.raises(MjcfValueError, match=r"scale factor|positive"):
+        scaled(Body(pos=[0, 0, 1]), factor)
+
+
+def test_attach_cannot_be_scaled() -> None:
+    """The attached model lives in another file, so scaling says so instead of guessing."""
+    model = loads(
+        '<mujoco><asset><model name="m" file="m.xml"/></asset><worldbody><body>'
+        '<attach model="m" body="b" prefix="x"/></body></worldbody></mujoco>'
+    )
+    with pytest.raises(MjcfValueError, match="attach"):
+        scaled(model, 2)
