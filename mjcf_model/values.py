@@ -34,6 +34,7 @@ __all__ = [
     "format_float",
     "format_value",
     "one_of",
+    "plain_value",
     "to_bool",
     "to_float",
     "to_floats",
@@ -313,3 +314,21 @@ def format_value(value: Value) -> str:
     if isinstance(value, int):
         return str(value)
     return " ".join(format_float(v) if isinstance(v, float) else str(v) for v in value)
+
+
+def plain_value(value: Any) -> Any:
+    """Numpy arrays and scalars as plain Python values, lists as tuples.
+
+    Example:
+        >>> import numpy as np
+        >>> plain_value(np.array([1.5, 2.0])), plain_value(np.int64(3))
+        ((1.5, 2.0), 3)
+
+    """
+    if isinstance(value, np.ndarray):
+        return plain_value(value.tolist())
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, (list, tuple)):
+        return tuple(plain_value(v) for v in value)
+    return value

@@ -24,11 +24,11 @@ _BIND_BYTES = 7 * 4
 
 
 def skin_bone_names(path: str | os.PathLike[str]) -> tuple[str, ...]:
-    """The body names a binary skin file binds its bones to, in file order.
+    r"""The body names a binary skin file binds its bones to, in file order.
 
     Example:
         >>> import struct, tempfile, os
-        >>> data = struct.pack("<4i", 0, 0, 0, 1) + b"torso".ljust(40, b"\\0")
+        >>> data = struct.pack("<4i", 0, 0, 0, 1) + b"torso".ljust(40, b"\0")
         >>> data += struct.pack("<7f", 0, 0, 0, 1, 0, 0, 0) + struct.pack("<i", 0)
         >>> with tempfile.NamedTemporaryFile(suffix=".skn", delete=False) as f:
         ...     _ = f.write(data)

@@ -1,0 +1,256 @@
+"""Queries: find, find_all, parent_of and categorized, checked against robosuite's mjcf_utils."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import attrs
+import numpy as np
+import pytest
+from robosuite.utils import mjcf_utils
+
+import serializers
+from mjcf_model import Body, Geom, Mujoco, Site, Worldbody, traversal
+from mjcf_model.base import AnyElement, get_attribute
+from mjcf_model.errors import MjcfError
+from mjcf_model.queries import Categories, categorized, find, find_all, parent_of, walk
+from serializers import load, loads
+from tests.conftest import corpus_files, corpus_id
+
+
+def _loading(paths: list[Path]) -> list[Path]:
+    loading = []
+    for path in paths:
+        try:
+            load(path)
+        except MjcfError:
+            continue
+        loading.append(path)
+    return loading
+
+
+CORPUS = _loading(corpus_files())
+
+MODEL = loads(
+    """
+    <mujoco>
+      <default><geom group="1"/><default class="vis"><geom rgba="1 0 0 1"/></default></default>
+      <worldbody>
+        <geom name="floor" size="1 1 0.1" type="plane"/>
+        <body name="arm" pos="0 0 1">
+          <!-- the arm -->
+          <joint name="shoulder" range="-1 1"/>
+          <geom name="upper" class="vis" group="1" size="0.1"/>
+          <geom name="collide" group="0" size="0.1"/>
+          <body name="hand"><site name="tip" size="0.01"/><geom name="hidden" group="3"/></body>
+        </body>
+        <frame><body name="framed"/></frame>
+      </worldbody>
+      <tendon><fixed name="t"><joint joint="shoulder" coef="1"/></fixed></tendon>
+      <equality><joint joint1="shoulder"/></equality>
+      <actuator><motor name="m" joint="shoulder"/><general name="g" joint="shoulder"/></actuator>
+      <sensor><touch name="touch" site="tip"/><clock name="clock"/></sensor>
+    </mujoco>
+    """
+)
+
+
+def _names(elements: tuple[AnyElement, ...] | list[AnyElement]) -> list[object]:
+    return [get_attribute(e, "name") for e in elements]
+
+
+def test_find_compares_text_and_typed_values() -> None:
+    """``group=1`` and ``group="1"`` both match; vectors match lists, tuples and arrays."""
+    world = MODEL.worldbody
+    assert world is not None
+    upper = find(world, "geom", group=1)
+    assert upper is not None and get_attribute(upper, "name") == "upper"
+    assert find(world, "geom", group="1") is upper
+    assert find(MODEL, "geom", name="upper", size=[0.1]) is upper
+    assert find(MODEL, "geom", size=(0.1,)) is upper
+    assert find(MODEL, "geom", size=np.array([0.1])) is upper
+    assert find(MODEL, "geom", size="0.1") is upper
+    assert find(MODEL, "geom", size=0.1) is upper
+    assert find(MODEL, "geom", size=[0.1, 0.1]) is None
+    assert find(MODEL, "geom", group=np.int64(3)) is find(MODEL, "geom", name="hidden")
+    assert find(MODEL, "geom", group=2) is None
+    assert find(MODEL, "joint", range=[-1, 1]) is find(MODEL, "joint", name="shoulder")
+
+
+def test_find_none_means_not_written_and_dclass_means_class() -> None:
+    """``attr=None`` matches elements without it; ``dclass`` is the ``class`` attribute."""
+    world = MODEL.worldbody
+    assert world is not None
+    floor = find(world, "geom", group=None)
+    assert floor is not None and get_attribute(floor, "name") == "floor"
+    assert find(MODEL, "geom", dclass="vis") is find(MODEL, "geom", name="upper")
+    assert find(MODEL, "default", dclass="vis") is not None
+    assert find(MODEL, "geom", dclass=None, name="upper") is None
+    assert find(MODEL, "geom", group=None, rgba=None, name=None) is None
+
+
+def test_find_accepts_tag_collections_and_includes_the_node() -> None:
+    """A set or tuple of tags matches any of them; the start node is a candidate."""
+    first = find(MODEL, {"site", "joint"})
+    assert first is not None and get_attribute(first, "name") == "shoulder"
+    assert find(MODEL, ("site",), size=0.01) is find(MODEL, "site")
+    assert find(MODEL, "mujoco") is MODEL
+    hand = find(MODEL, "body", name="hand")
+    assert hand is not None and find(hand, "body") is hand
+    assert find(hand, "joint") is None
+
+
+def test_find_all_lists_matches_in_document_order() -> None:
+    """Matches come in pre-order; no match is an empty list, not None."""
+    assert _names(find_all(MODEL, "geom")) == [None, None, "floor", "upper", "collide", "hidden"]
+    assert _names(find_all(MODEL, "geom", group=1)) == [None, "upper"]
+    assert _names(find_all(MODEL, ["body", "site"])) == ["arm", "hand", "tip", "framed"]
+    assert find_all(MODEL, "camera") == []
+    assert find_all(MODEL, "geom", name="nope") == []
+
+
+def test_find_generic_elements_and_extra_attributes_by_text() -> None:
+    """Attributes kept as text match a number by its MJCF text."""
+    model = loads(
+        '<mujoco><worldbody><wheel spokes="5"><geom glow="2"/></wheel></worldbody></mujoco>'
+    )
+    wheel = find(model, "wheel", spokes=5)
+    assert wheel is not None and find(model, "wheel", spokes="5") is wheel
+    assert find(model, "geom", glow=2) is not None
+    assert find(model, "wheel", spokes=6) is None
+
+
+def test_walk_is_the_traversal_walk() -> None:
+    """``queries.walk`` is re-exported from traversal."""
+    assert walk is traversal.walk
+    assert [e.tag for _, e in walk(Body(children=[Geom()]))] == ["body", "geom"]
+
+
+def test_parent_of_compares_identity() -> None:
+    """The parent holds the very node; the root and equal copies have none."""
+    geom = Geom(name="g")
+    inner = Body(name="inner", children=[geom])
+    root = Mujoco(children=[Worldbody(children=[inner])])
+    parent = parent_of(root, geom)
+    assert parent is inner
+    assert parent_of(root, inner) is root.children[0]
+    assert parent_of(root, root) is None
+    assert parent_of(root, Geom(name="g")) is None
+    assert parent_of(root, Site()) is None
+
+
+def test_categorized_by_robosuite_rules() -> None:
+    """Joint references, nested bodies, geom groups and section children are sorted."""
+    found = categorized(MODEL)
+    assert _names(found.root_body) == ["arm", "framed"]
+    assert _names(found.bodies) == ["hand"]
+    assert _names(found.joints) == ["shoulder"]
+    assert _names(found.actuators) == ["m", "g"]
+    assert _names(found.sites) == ["tip"]
+    assert _names(found.sensors) == ["touch", "clock"]
+    assert _names(found.contact_geoms) == [None, "floor", "collide"]
+    assert _names(found.visual_geoms) == [None, "upper"]
+    theirs = mjcf_utils.sort_elements(ET.fromstring(serializers.dumps(MODEL)))
+    for field in attrs.fields(Categories):
+        expected = [e.get("name") for e in theirs.get(field.name, [])]
+        if field.name == "sensors":  # <clock> is not in robosuite's SENSOR_TYPES
+            expected.append("clock")
+        assert _names(getattr(found, field.name)) == expected
+
+
+def test_categorized_node_itself_is_the_root_body() -> None:
+    """A body queried on its own is the root body even if it came from inside another."""
+    hand = find(MODEL, "body", name="hand")
+    assert hand is not None
+    found = categorized(hand)
+    assert found.root_body == (hand,)
+    assert found.bodies == ()
+    assert _names(found.sites) == ["tip"]
+    assert found.contact_geoms == () and found.visual_geoms == ()
+
+
+def test_categorized_returns_the_tree_nodes() -> None:
+    """The categories hold the tree's own nodes."""
+    found = categorized(MODEL)
+    assert found.joints[0] is find(MODEL, "joint", name="shoulder")
+    assert found.actuators[1] is find(MODEL, "general")
+    assert isinstance(found, Categories)
+
+
+def _sensor_sections(root: ET.Element) -> list[ET.Element]:
+    return [child for section in root.iter("sensor") for child in section]
+
+
+def _robosuite_sensor_types_agree(root: ET.Element) -> bool:
+    """Whether robosuite's tag-based sensors are exactly the children of ``<sensor>``."""
+    in_sections = _sensor_sections(root)
+    by_tag = [e for e in root.iter() if e.tag in mjcf_utils.SENSOR_TYPES]
+    return [id(e) for e in in_sections] == [id(e) for e in by_tag]
+
+
+@pytest.mark.parametrize("path", CORPUS, ids=corpus_id)
+def test_categorized_matches_robosuite_sort_elements(path: Path) -> None:
+    """Names (None when unnamed) per category equal robosuite's ``sort_elements``.
+
+    Sensors: robosuite takes every element whose tag is in ``SENSOR_TYPES``, this
+    library every child of ``<sensor>``. Where the two definitions pick different
+    elements (``<distance>`` sensors in dm_control's ``robot_arm.xml``) the
+    sensors are compared with the children of ``<sensor>`` read from ElementTree.
+    """
+    root = ET.parse(path).getroot()
+    theirs = mjcf_utils.sort_elements(root)
+    ours = categorized(load(path))
+    for field in attrs.fields(Categories):
+        expected = [e.get("name") for e in theirs.get(field.name, [])]
+        if field.name == "sensors" and not _robosuite_sensor_types_agree(root):
+            expected = [e.get("name") for e in _sensor_sections(root)]
+        assert _names(getattr(ours, field.name)) == expected, field.name
+
+
+def test_sensor_definitions_differ_somewhere_in_the_corpus() -> None:
+    """The corpus has a file where robosuite's SENSOR_TYPES misses a sensor (so both paths run)."""
+    differing = [p for p in CORPUS if not _robosuite_sensor_types_agree(ET.parse(p).getroot())]
+    assert [corpus_id(p) for p in differing] == ["dm_control/mjcf/test_assets/robot_arm.xml"]
+    root = ET.parse(differing[0]).getroot()
+    missed = [e.tag for e in _sensor_sections(root) if e.tag not in mjcf_utils.SENSOR_TYPES]
+    assert missed == ["distance", "distance"]
+    assert len(categorized(load(differing[0])).sensors) == len(_sensor_sections(root))
+
+
+@pytest.mark.parametrize("path", CORPUS, ids=corpus_id)
+def test_find_all_matches_robosuite_find_elements(path: Path) -> None:
+    """``find_all``/``find`` pick the same elements as robosuite's ``find_elements``."""
+    root = ET.parse(path).getroot()
+    model = load(path)
+    queries: list[tuple[str | list[str], dict[str, str | None]]] = [
+        ("body", {}),
+        (["joint", "site"], {}),
+        ("geom", {"group": "1"}),
+        ("geom", {"group": None}),
+        ("geom", {"group": "0"}),
+    ]
+    for tags, attributes in queries:
+        expected = mjcf_utils.find_elements(root, tags, attributes, return_first=False) or []
+        found = find_all(model, tags, **attributes)
+        assert _names(found) == [e.get("name") for e in expected], (tags, attributes)
+        first = mjcf_utils.find_elements(root, tags, attributes, return_first=True)
+        match = find(model, tags, **attributes)
+        assert (match is None) == (first is None)
+        assert match is None or first is None or get_attribute(match, "name") == first.get("name")
+
+
+@pytest.mark.parametrize("path", CORPUS, ids=corpus_id)
+def test_parent_of_matches_robosuite_find_parent(path: Path) -> None:
+    """For every body and joint the parent's tag and name equal robosuite's ``find_parent``."""
+    root = ET.parse(path).getroot()
+    model = load(path)
+    theirs = [e for e in root.iter() if e.tag in ("body", "joint")]
+    ours = find_all(model, ["body", "joint"])
+    assert len(ours) == len(theirs)
+    for mine, their in zip(ours, theirs, strict=True):
+        expected = mjcf_utils.find_parent(root, their)
+        parent = parent_of(model, mine)
+        assert parent is not None and expected is not None
+        assert (parent.tag, get_attribute(parent, "name")) == (expected.tag, expected.get("name"))
+    assert parent_of(model, model) is None and mjcf_utils.find_parent(root, root) is None
