@@ -21,18 +21,55 @@ from mjcf_model.base import (
     get_attribute,
     with_attributes,
 )
+from mjcf_model.builders import (
+    new_actuator,
+    new_body,
+    new_element,
+    new_geom,
+    new_inertial,
+    new_joint,
+    new_site,
+)
 from mjcf_model.errors import *  # noqa: F403  (every error class; listed in errors.__all__)
+from mjcf_model.materials import CustomMaterial, recolored_collision_geoms, with_material
+from mjcf_model.naming import declared_names, prefix_map, prefixed, renamed
 from mjcf_model.nodes import *  # noqa: F403  (every node class; listed in nodes.__all__)
+from mjcf_model.queries import Categories, categorized, find, find_all, parent_of
+from mjcf_model.scaling import scaled
+from mjcf_model.traversal import map_elements, map_tree, walk
 
 __all__ = [
     "AttributeMap",
+    "Categories",
     "Comment",
+    "CustomMaterial",
     "Element",
     "GenericElement",
     "Node",
     "TypedElement",
     "attribute_items",
+    "categorized",
+    "declared_names",
+    "find",
+    "find_all",
     "get_attribute",
+    "map_elements",
+    "map_tree",
+    "new_actuator",
+    "new_body",
+    "new_element",
+    "new_geom",
+    "new_inertial",
+    "new_joint",
+    "new_site",
+    "parent_of",
+    "prefix_map",
+    "prefixed",
+    "recolored_collision_geoms",
+    "renamed",
+    "scaled",
+    "walk",
     "with_attributes",
+    "with_material",
 ]
 __all__ += errors.__all__ + nodes.__all__
