@@ -1,58 +1,154 @@
-"""Reading the bone names out of MuJoCo's binary skin files (``.skn``).
+r"""MuJoCo's binary skin files (``.skn``): reading them, and inlining them into a model.
 
 A skin loaded from a file names the bodies it is bound to inside that file, so
-renaming those bodies in the XML breaks the model; :func:`skin_bone_names` tells
-which names to leave alone (``prefixed(model, p, exclude=skin_bone_names(f))``).
+renaming those bodies (prefixing, attaching two copies) breaks the model unless
+the skin is written inline first: :func:`inline_skin_files` does that, and
+:func:`skin_bone_names` tells which names a skin file uses.
 
 The format: four int32 counts (vertices, texture coordinates, faces, bones),
-the vertex, texture coordinate and face arrays, then per bone a 40-byte name,
-its bind position (3 float32) and quaternion (4 float32), a vertex count and
-that many vertex ids (int32) and weights (float32).
+the vertex (3 float32 each), texture coordinate (2 float32) and face (3 int32)
+arrays, then per bone a 40-byte name, its bind position (3 float32) and
+quaternion (4 float32), a vertex count and that many vertex ids (int32) and
+weights (float32).
+
+>>> import struct, tempfile, os
+>>> data = struct.pack("<4i", 1, 0, 0, 1) + struct.pack("<3f", 0.5, 0, 0)
+>>> data += b"torso".ljust(40, b"\0") + struct.pack("<7f", 0, 0, 0, 1, 0, 0, 0)
+>>> data += struct.pack("<i", 1) + struct.pack("<i", 0) + struct.pack("<f", 1)
+>>> with tempfile.NamedTemporaryFile(suffix=".skn", delete=False) as f:
+...     _ = f.write(data)
+>>> skin = read_skin(f.name)
+>>> skin.vertex, skin.children[0].body, skin.children[0].vertweight
+((0.5, 0.0, 0.0), 'torso', (1.0,))
+>>> os.unlink(f.name)
 """
 
 from __future__ import annotations
 
 import os
-import struct
+from pathlib import Path
 
+import attrs
+import numpy as np
+
+from mjcf_model.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.errors import MjcfSyntaxError
+from mjcf_model.nodes.asset import Bone, Skin
+from mjcf_model.nodes.root import Mujoco
+from mjcf_model.traversal import map_elements
 
-__all__ = ["skin_bone_names"]
+__all__ = ["inline_skin_files", "read_skin", "skin_bone_names"]
 
 _NAME_BYTES = 40
-_BIND_BYTES = 7 * 4
+
+
+class _Reader:
+    def __init__(self, data: bytes, path: str) -> None:
+        self.data, self.offset, self.path = data, 0, path
+
+    def take(self, dtype: str, count: int) -> np.ndarray:  # type: ignore[type-arg]
+        size = np.dtype(dtype).itemsize * count
+        if self.offset + size > len(self.data):
+            raise MjcfSyntaxError("not a MuJoCo skin file: it ends too early", file=self.path)
+        values = np.frombuffer(self.data, dtype=dtype, count=count, offset=self.offset)
+        self.offset += size
+        return values
+
+    def name(self) -> str:
+        raw = self.data[self.offset : self.offset + _NAME_BYTES]
+        self.offset += _NAME_BYTES
+        try:
+            return raw.split(b"\0", 1)[0].decode()
+        except UnicodeDecodeError as error:
+            raise MjcfSyntaxError(f"not a MuJoCo skin file: {error}", file=self.path) from None
+
+
+def _floats(values: np.ndarray) -> tuple[float, ...] | None:  # type: ignore[type-arg]
+    return tuple(float(v) for v in values) if len(values) else None
+
+
+def read_skin(path: str | os.PathLike[str]) -> Skin:
+    """A binary skin file as an inline ``<skin>`` node (vertices, faces, bones).
+
+    The float32 values of the file are kept exactly, so MuJoCo compiles the same skin.
+    """
+    reader = _Reader(Path(path).read_bytes(), str(path))
+    nvertex, ntexcoord, nface, nbone = (int(n) for n in reader.take("<i4", 4))
+    if min(nvertex, ntexcoord, nface, nbone) < 0:
+        raise MjcfSyntaxError("not a MuJoCo skin file: negative counts", file=str(path))
+    vertex = reader.take("<f4", 3 * nvertex)
+    texcoord = reader.take("<f4", 2 * ntexcoord)
+    face = reader.take("<i4", 3 * nface)
+    bones = []
+    for _ in range(nbone):
+        body = reader.name()
+        bind = reader.take("<f4", 7)
+        (count,) = reader.take("<i4", 1)
+        ids = reader.take("<i4", int(count))
+        weights = reader.take("<f4", int(count))
+        bones.append(
+            Bone(
+                body=body,
+                bindpos=_floats(bind[:3]),
+                bindquat=_floats(bind[3:]),
+                vertid=tuple(int(i) for i in ids),
+                vertweight=_floats(weights),
+            )
+        )
+    if reader.offset != len(reader.data):
+        left = len(reader.data) - reader.offset
+        raise MjcfSyntaxError(
+            f"not a MuJoCo skin file: {left} bytes after the last bone", file=str(path)
+        )
+    return Skin(
+        vertex=_floats(vertex),
+        texcoord=_floats(texcoord),
+        face=tuple(int(i) for i in face) or None,
+        children=bones,
+    )
 
 
 def skin_bone_names(path: str | os.PathLike[str]) -> tuple[str, ...]:
-    r"""The body names a binary skin file binds its bones to, in file order.
+    """The body names a binary skin file binds its bones to, in file order."""
+    return tuple(str(bone.body) for bone in read_skin(path).children if isinstance(bone, Bone))
+
+
+def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str]) -> Mujoco:
+    """``model`` with every skin read from a file written inline instead.
+
+    ``directory`` is the directory of the model file; skin files are looked up
+    there, under the compiler's ``meshdir`` (or ``assetdir``) as MuJoCo does.
 
     Example:
-        >>> import struct, tempfile, os
-        >>> data = struct.pack("<4i", 0, 0, 0, 1) + b"torso".ljust(40, b"\0")
-        >>> data += struct.pack("<7f", 0, 0, 0, 1, 0, 0, 0) + struct.pack("<i", 0)
-        >>> with tempfile.NamedTemporaryFile(suffix=".skn", delete=False) as f:
-        ...     _ = f.write(data)
-        >>> skin_bone_names(f.name)
-        ('torso',)
-        >>> os.unlink(f.name)
+        >>> from serializers import loads
+        >>> m = loads('<mujoco><worldbody/></mujoco>')
+        >>> inline_skin_files(m, ".") is m
+        True
 
     """
-    data = open(path, "rb").read()  # noqa: SIM115  (closed on return)
-    try:
-        nvertex, ntexcoord, nface, nbone = struct.unpack_from("<4i", data, 0)
-        offset = 16 + 4 * (3 * nvertex + 2 * ntexcoord + 3 * nface)
-        names = []
-        for _ in range(nbone):
-            raw = data[offset : offset + _NAME_BYTES]
-            names.append(raw.split(b"\0", 1)[0].decode())
-            offset += _NAME_BYTES + _BIND_BYTES
-            (count,) = struct.unpack_from("<i", data, offset)
-            offset += 4 + 8 * count
-    except (struct.error, UnicodeDecodeError) as error:
-        raise MjcfSyntaxError(f"not a MuJoCo skin file: {error}", file=str(path)) from error
-    if offset != len(data):
-        raise MjcfSyntaxError(
-            f"not a MuJoCo skin file: {len(data) - offset} bytes left after the last bone",
-            file=str(path),
+    base = Path(directory)
+    compiler = model.compiler
+    if compiler is not None:
+        folder = get_attribute(compiler, "meshdir") or get_attribute(compiler, "assetdir")
+        if isinstance(folder, str):
+            base = base / folder
+
+    def visit(element: AnyElement, key: str | None, _: tuple[AnyElement, ...]) -> AnyElement:
+        file = get_attribute(element, "file")
+        if key not in ("asset/skin", "deformable/skin") or not isinstance(file, str):
+            return element
+        data = read_skin(base / file)
+        name = get_attribute(element, "name") or Path(file.replace("\\", "/")).stem
+        inline = with_attributes(
+            element,
+            {
+                "file": None,
+                "name": name,
+                "vertex": data.vertex,
+                "texcoord": data.texcoord,
+                "face": data.face,
+            },
         )
-    return tuple(names)
+        return attrs.evolve(inline, children=[*inline.children, *data.children])
+
+    return map_elements(visit, model)

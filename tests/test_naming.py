@@ -14,35 +14,24 @@ from mjcf_model.compare import compile_text_beside
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.naming import declared_names, prefix_map, prefixed, renamed
 from mjcf_model.strategies import models, names
-from mjcf_model.traversal import walk
 from serializers import dumps, load, loads, to_dict
-from serializers.skins import skin_bone_names
+from serializers.skins import inline_skin_files
 from tests.conftest import compiling_corpus, corpus_id
 from tests.oracles import prefix_problems
 
 CORPUS = compiling_corpus()
 
 
-def _skin_bones(path: Path, model: Mujoco) -> set[str]:
-    """Bodies named inside the binary skin files a corpus model loads."""
-    bones: set[str] = set()
-    for _, element in walk(model):
-        file = getattr(element, "file", None)
-        if element.tag == "skin" and isinstance(file, str):
-            candidates = list(path.parent.rglob(Path(file).name))
-            assert candidates, file
-            bones.update(skin_bone_names(candidates[0]))
-    return bones
-
-
 @pytest.mark.parametrize("path", CORPUS, ids=corpus_id)
 def test_prefixed_corpus_model_compiles_with_every_name_prefixed(path: Path) -> None:
-    """A prefixed corpus model compiles to the same arrays with every name prefixed."""
-    model = load(path, inline_includes=True)
-    bones = _skin_bones(path, model)
-    changed = prefixed(model, "pre_", exclude=bones)
-    original = mujoco.MjModel.from_xml_path(str(path))
-    assert prefix_problems(original, compile_text_beside(dumps(changed), path), "pre_", bones) == []
+    """A prefixed corpus model compiles to the same arrays with every name prefixed.
+
+    Binary skin files name their bodies inside the file, so they are written inline first.
+    """
+    model = inline_skin_files(load(path, inline_includes=True), path.parent)
+    original = compile_text_beside(dumps(model), path)
+    changed = compile_text_beside(dumps(prefixed(model, "pre_")), path)
+    assert prefix_problems(original, changed, "pre_") == []
 
 
 @given(models(), names(), names())

@@ -1,0 +1,278 @@
+"""Composing models: :func:`attach` merges one model into another, as MuJoCo would compile both.
+
+The child's world is added to the parent's world (or inside one of its bodies),
+and everything else follows: assets, default classes, actuators, sensors,
+tendons, equality constraints, contacts, custom data, deformables, plugins and
+keyframes. No wrapper body is added. Names the two models both declare are an
+error (give the child a ``prefix``), except assets that are the same element in
+both, which are kept once.
+
+>>> from serializers import dumps, loads
+>>> world = loads('<mujoco><worldbody><geom name="floor" type="plane" size="1 1 1"/>'
+...               '</worldbody></mujoco>')
+>>> cube = loads('<mujoco><worldbody><body name="cube"><freejoint/><geom size=".1"/></body>'
+...              '</worldbody></mujoco>')
+>>> scene = attach(attach(world, cube, prefix="a_"), cube, prefix="b_")
+>>> [body.name for body in scene.worldbody.bodies]
+['a_cube', 'b_cube']
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import attrs
+
+from mjcf_model.base import (
+    AnyElement,
+    GenericElement,
+    Node,
+    TypedElement,
+    attribute_items,
+    get_attribute,
+    with_attributes,
+)
+from mjcf_model.composition_keys import merged_keyframes
+from mjcf_model.errors import MjcfLookupError, MjcfValueError
+from mjcf_model.namespaces import SCHEMA, child_key, guess_context
+from mjcf_model.naming import declared_names, prefixed
+from mjcf_model.nodes.default import Default
+from mjcf_model.nodes.keyframe import Keyframe
+from mjcf_model.nodes.root import Mujoco
+from mjcf_model.queries import find, find_all
+from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.traversal import keyed_walk, refuse_include, with_children
+
+__all__ = ["attach"]
+
+#: Sections whose settings the parent keeps; a parent without one adopts the child's.
+_SETTINGS = ("compiler", "option", "size", "statistic", "visual")
+#: Sections whose elements are added to the parent's section of the same tag.
+_LISTS = (
+    "extension",
+    "custom",
+    "asset",
+    "deformable",
+    "contact",
+    "equality",
+    "tendon",
+    "actuator",
+    "sensor",
+)
+#: Sections whose elements take defaults and so need the child's class when it has one.
+_CLASSED_SECTIONS = ("asset", "contact", "equality", "tendon", "actuator")
+
+
+def _elements(node: AnyElement) -> list[AnyElement]:
+    return [c for c in node.children if isinstance(c, (TypedElement, GenericElement))]
+
+
+def _sections(model: Mujoco, tag: str) -> list[AnyElement]:
+    return [c for c in _elements(model) if c.tag == tag]
+
+
+def _section_children(model: Mujoco, tag: str) -> list[Node]:
+    return [child for section in _sections(model, tag) for child in section.children]
+
+
+def _check_compilers(parent: Mujoco, child: Mujoco) -> None:
+    mine, theirs = _sections(parent, "compiler"), _sections(child, "compiler")
+    if mine and theirs and mine != theirs:
+        raise MjcfValueError(
+            "the parent and the child have different <compiler> settings, so the child's "
+            "angles, paths or limits would be read differently; make them agree first "
+            f"(parent: {mine[0]!r}, child: {theirs[0]!r})"
+        )
+
+
+def _shared_assets(parent: Mujoco, child: Mujoco) -> set[AnyElement]:
+    """Child assets that are equal to a parent asset (kept once)."""
+    mine = {e for section in _sections(parent, "asset") for e in _elements(section)}
+    return {e for section in _sections(child, "asset") for e in _elements(section) if e in mine}
+
+
+def _check_collisions(parent: Mujoco, child: Mujoco, shared: set[AnyElement]) -> None:
+    mine = declared_names(parent)
+    theirs = declared_names(
+        attrs.evolve(
+            child,
+            children=[
+                _without(section, shared) if section.tag == "asset" else section
+                for section in _elements(child)
+            ],
+        )
+    )
+    clashes = {
+        namespace: sorted(names & mine.get(namespace, frozenset()))
+        for namespace, names in theirs.items()
+    }
+    clashes = {namespace: names for namespace, names in clashes.items() if names}
+    if clashes:
+        listed = "; ".join(
+            f"{namespace}: {', '.join(names)}" for namespace, names in clashes.items()
+        )
+        raise MjcfValueError(
+            f"the child declares names the parent already has ({listed}); attach it with a prefix"
+        )
+
+
+def _without(section: AnyElement, dropped: set[AnyElement]) -> AnyElement:
+    return with_children(section, [c for c in section.children if c not in dropped])
+
+
+def _has_settings(default: AnyElement) -> bool:
+    """Whether a top-level ``<default>`` sets anything itself (not only nested classes)."""
+    return any(e.tag != "default" for e in _elements(default))
+
+
+def _merged_settings(nodes: list[Node]) -> list[Node]:
+    """Several top-level defaults as one class: settings of one tag merged, later ones winning."""
+    merged: list[Node] = []
+    first: dict[str, int] = {}
+    for node in nodes:
+        tag = getattr(node, "tag", None)
+        if not isinstance(tag, str) or tag == "default":
+            merged.append(node)
+        elif tag in first:
+            earlier = merged[first[tag]]
+            assert isinstance(earlier, (TypedElement, GenericElement))
+            assert isinstance(node, (TypedElement, GenericElement))
+            merged[first[tag]] = with_attributes(earlier, dict(attribute_items(node)))
+        else:
+            first[tag] = len(merged)
+            merged.append(node)
+    return merged
+
+
+def _with_class(element: AnyElement, attribute: str, name: str) -> AnyElement:
+    return (
+        element
+        if get_attribute(element, attribute) is not None
+        else with_attributes(element, {attribute: name})
+    )
+
+
+def _classed(nodes: Sequence[Node], name: str, attribute_of_body: bool) -> list[Node]:
+    """Nodes that take the child's main defaults through class ``name``."""
+    result: list[Node] = []
+    for node in nodes:
+        if isinstance(node, (TypedElement, GenericElement)):
+            if node.tag in ("body", "frame") and attribute_of_body:
+                node = _with_class(node, "childclass", name)
+            elif "class" in _class_attributes(node):
+                node = _with_class(node, "class", name)
+        result.append(node)
+    return result
+
+
+def _class_attributes(element: AnyElement) -> set[str]:
+    key = child_key(guess_context(element.tag), element.tag)
+    spec = SCHEMA.get(key) if key is not None else None
+    return set(spec.attributes) if spec is not None else set()
+
+
+def attach(parent: Mujoco, child: Mujoco, *, at: str | None = None, prefix: str = "") -> Mujoco:
+    """The parent model with the child model merged into it.
+
+    Args:
+        parent: The model to add to.
+        child: The model added; with ``prefix``, every name it declares is prefixed first.
+        at: The name of the parent body the child's world goes into (default: the world).
+        prefix: Prepended to the child's names (see :func:`mjcf_model.prefixed`).
+
+    The parent keeps its ``<compiler>`` (the child's must be the same or absent;
+    a parent without one adopts the child's), ``<option>``, ``<size>``,
+    ``<statistic>`` and ``<visual>``. The child's top-level default settings
+    become a class ``<prefix>main`` in the parent's defaults, and the child's
+    elements that relied on them name that class. Keyframes are merged by
+    position: a child key is completed with the parent's initial ``qpos``
+    (reference positions; a free body's own position), a parent key is
+    completed by MuJoCo with the child's.
+
+    Raises:
+        MjcfValueError: on a name collision, different compilers, a kept
+            ``<include>``, or a keyframe that cannot be completed.
+        MjcfLookupError: when no parent body is named ``at``.
+
+    Example:
+        >>> from mjcf_model import Body, Geom, Mujoco, Worldbody
+        >>> arm_body = Body(name="arm", children=[Geom(size=[1])])
+        >>> arm = Mujoco(children=[Worldbody(children=[arm_body])])
+        >>> table = Mujoco(children=[Worldbody(children=[Body(name="table")])])
+        >>> attach(table, arm, at="table", prefix="r_").worldbody.bodies[0].bodies[0].name
+        'r_arm'
+
+    """
+    for model in (parent, child):
+        for _, key, _ in keyed_walk(model):
+            refuse_include(key, "attach")
+    if prefix:
+        child = prefixed(child, prefix)  # type: ignore[assignment]
+    _check_compilers(parent, child)
+    shared = _shared_assets(parent, child)
+    _check_collisions(parent, child, shared)
+    target = None
+    if at is not None:
+        target = find(parent, "body", name=at)
+        if target is None:
+            found = (get_attribute(b, "name") for b in find_all(parent, "body"))
+            names = sorted(str(name) for name in found if name)
+            raise MjcfLookupError(f"the parent has no body named {at!r}; its bodies are {names}")
+
+    class_name = None
+    child_defaults = _sections(child, "default")
+    added_classes: list[Node] = [n for d in child_defaults for n in d.children]
+    if any(_has_settings(default) for default in child_defaults):
+        class_name = f"{prefix}main"
+        if class_name == "main":
+            raise MjcfValueError(
+                "the child's top-level defaults set values; attach it with a prefix so "
+                "they can become a class of their own"
+            )
+        added_classes = [Default(dclass=class_name, children=_merged_settings(added_classes))]
+
+    children = list(parent.children)
+    for tag in _SETTINGS:
+        if not _sections(parent, tag):
+            children.extend(_sections(child, tag))
+
+    def merge_into(tag: str, nodes: list[Node]) -> None:
+        if not nodes:
+            return
+        for index in range(len(children) - 1, -1, -1):
+            section = children[index]
+            if isinstance(section, (TypedElement, GenericElement)) and section.tag == tag:
+                children[index] = with_children(section, [*section.children, *nodes])
+                return
+        children.append(CLASS_BY_KEY[tag](children=nodes))
+
+    merge_into("default", added_classes)
+    for tag in _LISTS:
+        nodes = _section_children(child, tag)
+        if tag == "asset":
+            nodes = [n for n in nodes if n not in shared]
+        if class_name is not None and tag in _CLASSED_SECTIONS:
+            nodes = _classed(nodes, class_name, attribute_of_body=False)
+        merge_into(tag, nodes)
+    world = _section_children(child, "worldbody")
+    if class_name is not None:
+        world = _classed(world, class_name, attribute_of_body=True)
+    keys = merged_keyframes(parent, child, target)
+    if target is None:
+        merge_into("worldbody", world)
+    else:
+        children = [_inserted(c, target, world) for c in children]
+    children = [c for c in children if not (isinstance(c, TypedElement) and c.tag == "keyframe")]
+    if keys:
+        children.append(Keyframe(children=keys))
+    return attrs.evolve(parent, children=children)
+
+
+def _inserted(node: Node, target: AnyElement, nodes: list[Node]) -> Node:
+    """``node`` with ``nodes`` appended to the children of ``target`` (found by identity)."""
+    if node is target:
+        assert isinstance(node, (TypedElement, GenericElement))
+        return with_children(node, [*node.children, *nodes])
+    if isinstance(node, (TypedElement, GenericElement)) and node.children:
+        return with_children(node, [_inserted(c, target, nodes) for c in node.children])
+    return node
