@@ -30,6 +30,7 @@ from mjcf_model.builders import (
     new_joint,
     new_site,
 )
+from mjcf_model.composition import attach
 from mjcf_model.errors import *  # noqa: F403  (every error class; listed in errors.__all__)
 from mjcf_model.materials import CustomMaterial, recolored_collision_geoms, with_material
 from mjcf_model.naming import declared_names, prefix_map, prefixed, renamed
@@ -47,6 +48,7 @@ __all__ = [
     "GenericElement",
     "Node",
     "TypedElement",
+    "attach",
     "attribute_items",
     "categorized",
     "declared_names",
