@@ -331,7 +331,7 @@ def load(
     return loads(source.read(), inline_includes=inline_includes, base_dir=base, filename=filename)
 
 
-def from_etree(element: ET.Element, *, context: str | None = None) -> Node:
+def from_etree(element: ET.Element, *, context: str | None = None, typed: bool = True) -> Node:
     """Convert an ElementTree element (and its subtree) to nodes.
 
     Args:
@@ -341,11 +341,16 @@ def from_etree(element: ET.Element, *, context: str | None = None) -> Node:
             By default it is guessed from the tag, which is right except for tags
             that mean different things in different sections (``<joint>`` inside
             ``<equality>``): pass the context for those.
+        typed: With ``False`` every element becomes a
+            :class:`~mjcf_model.GenericElement` holding its attribute text exactly
+            as given, so text MuJoCo would reject (``group="1.0"``) still converts.
 
     Example:
         >>> import xml.etree.ElementTree as ET
         >>> from_etree(ET.fromstring('<geom size="0.1"/>')).size
         (0.1,)
+        >>> from_etree(ET.fromstring('<geom group="1.0"/>'), typed=False).attributes["group"]
+        '1.0'
 
     """
     if element.tag is ET.Comment:  # type: ignore[comparison-overlap]
@@ -353,12 +358,12 @@ def from_etree(element: ET.Element, *, context: str | None = None) -> Node:
     if context is None:
         context = guess_context(element.tag)
     try:
-        return _from_etree(element, context)
+        return _from_etree(element, context, typed)
     except MjcfError as error:
         raise _within(error, element, 1) from None
 
 
-def _from_etree(element: ET.Element, context: str | None) -> AnyElement:
+def _from_etree(element: ET.Element, context: str | None, typed: bool = True) -> AnyElement:
     """Convert one element; an error names no path yet: each caller adds its step."""
     key = child_key(context, element.tag)
     inner = children_context(key, context)
@@ -371,12 +376,12 @@ def _from_etree(element: ET.Element, context: str | None) -> AnyElement:
         elif isinstance(child.tag, str):
             index = counts[child.tag] = counts.get(child.tag, 0) + 1
             try:
-                children.append(_from_etree(child, inner))
+                children.append(_from_etree(child, inner, typed))
             except MjcfError as error:
                 raise _within(error, child, index) from None
         chunks.append(child.tail)
     return build_element(
-        key,
+        key if typed else None,
         element.tag,
         list(element.attrib.items()),
         children,
