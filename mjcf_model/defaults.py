@@ -144,9 +144,16 @@ class DefaultClasses:
         return MAIN
 
     def resolve(
-        self, element: AnyElement, ancestors: tuple[AnyElement, ...], attribute: str
+        self,
+        element: AnyElement,
+        ancestors: tuple[AnyElement, ...],
+        attribute: str,
+        tag: str | None = None,
     ) -> Value | None:
         """The value ``attribute`` has for ``element``: written on it, or from its classes.
+
+        ``tag`` names the default element to look in when it is not the element's
+        own tag (``"tendon"`` for a ``<spatial>`` tendon).
 
         Example:
             >>> from mjcf_model import Geom
@@ -165,5 +172,5 @@ class DefaultClasses:
             if parent is None:
                 return None
             name = parent
-        found = self.lookup(name, element.tag, attribute)
+        found = self.lookup(name, tag or element.tag, attribute)
         return None if found is None else found[0]

@@ -54,11 +54,11 @@ def _builtin(tag: str, attribute: str) -> tuple[float, ...]:
     import mujoco
 
     value = getattr(getattr(mujoco.MjSpec().default, tag), attribute)
-    numbers = []
+    values = []
     for number in np.atleast_1d(np.asarray(value, dtype=float)):
         single = np.float32(number)
-        numbers.append(float(str(single)) if float(single) == number else float(number))
-    return tuple(numbers)
+        values.append(float(str(single)) if float(single) == number else float(number))
+    return tuple(values)
 
 
 def _mean(element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext) -> float:
@@ -71,10 +71,9 @@ def _per_axis(
     return context.factors
 
 
-def _builtin_length(attribute: str, tag: str, spec_tag: str = "", spec_attribute: str = "") -> Rule:
+def _builtin_length(attribute: str, tag: str) -> Rule:
     """A length MuJoCo gives a non-zero default (camera ``ipd``, light ``bulbradius``)."""
-    builtin = functools.partial(_builtin, spec_tag or tag, spec_attribute or attribute)
-    return with_builtin(attribute, tag, builtin, _mean)
+    return with_builtin(attribute, tag, functools.partial(_builtin, tag, attribute), _mean)
 
 
 def _size_factors(
@@ -164,7 +163,7 @@ def _materialized(attribute: str, tag: str) -> Rule:
     def rule(
         element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
     ) -> Changes:
-        value = context.classes.resolve(element, ancestors, attribute)
+        value = context.classes.resolve(element, ancestors, attribute, tag)
         if numbers(value) is None:
             return {}
         assert value is not None
@@ -180,7 +179,7 @@ def _spatial_tendon(
     element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
 ) -> Changes:
     changes = combine(*_TENDON_LENGTHS)(element, ancestors, context)
-    width = numbers(context.classes.resolve(element, ancestors, "width"))
+    width = numbers(context.classes.resolve(element, ancestors, "width", "tendon"))
     changes["width"] = (width or _builtin("tendon", "width"))[0] * context.mean
     return changes
 

@@ -190,3 +190,19 @@ def test_attach_cannot_be_scaled() -> None:
     )
     with pytest.raises(MjcfValueError, match="attach"):
         scaled(model, 2)
+
+
+def test_tendon_lengths_from_default_classes_scale_on_spatial_tendons_only() -> None:
+    """A spatial tendon's range from a class doubles; a fixed tendon of hinges keeps it."""
+    model = loads(
+        """<mujoco><default><tendon range="0 1" width="0.01"/></default><worldbody>
+        <body><joint name="h" type="hinge"/><geom size="0.1"/><site name="a"/>
+        <body pos="0 0 1"><joint type="hinge"/><geom size="0.1"/><site name="b"/></body></body>
+        </worldbody><tendon><spatial limited="true"><site site="a"/><site site="b"/></spatial>
+        <fixed limited="true"><joint joint="h" coef="1"/></fixed></tendon></mujoco>"""
+    )
+    original = mujoco.MjModel.from_xml_string(dumps(model))
+    changed = mujoco.MjModel.from_xml_string(dumps(scaled(model, 2)))
+    assert np.allclose(changed.tendon_range[0], 2 * original.tendon_range[0])
+    assert np.allclose(changed.tendon_width[0], 2 * original.tendon_width[0])
+    assert np.allclose(changed.tendon_range[1], original.tendon_range[1])
