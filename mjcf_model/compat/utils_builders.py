@@ -1,0 +1,238 @@
+"""robosuite's element constructors: ``new_element``, ``new_joint``, ``new_geom``...
+
+Each builds a generic node whose attribute text is robosuite's
+(:func:`convert_to_string`: ``"0 0 0"`` for a tuple of ints, ``"1.0 1.0"`` for a
+float array, ``"true"`` for ``True``) in robosuite's order (keyword arguments
+first, then the named parameters, then ``name``), and returns it as a new
+ElementTree element. The node builders (:func:`geom_node`, :func:`site_node`,
+:func:`joint_node`, :func:`body_node`) hold that order once; the object
+classes build their nodes with them too, with their more tolerant text rule
+(:func:`~mjcf_model.compat.objects_quirks.value_text`). The library's
+:mod:`mjcf_model.builders` give the same elements as typed nodes with numbers
+in their shortest form.
+
+>>> import xml.etree.ElementTree as ET
+>>> ET.tostring(new_geom("g", "box", [0.1, 0.1, 0.1]), encoding="unicode")
+'<geom type="box" size="0.1 0.1 0.1" pos="0 0 0" group="0" name="g" />'
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from collections.abc import Callable, Iterable, Mapping
+from typing import Any
+
+from mjcf_model.base import GenericElement
+from mjcf_model.compat.utils_constants import RED
+from mjcf_model.compat.utils_text import convert_to_string
+from serializers import to_etree
+
+__all__ = [
+    "TextRule",
+    "body_node",
+    "element_node",
+    "geom_node",
+    "joint_node",
+    "new_actuator",
+    "new_body",
+    "new_element",
+    "new_geom",
+    "new_inertial",
+    "new_joint",
+    "new_site",
+    "site_node",
+]
+
+#: How a builder writes a value as attribute text.
+TextRule = Callable[[Any], str]
+
+
+def element_node(
+    tag: str, attributes: Iterable[tuple[str, Any]], text: TextRule = convert_to_string
+) -> GenericElement:
+    """A generic node with ``attributes`` in order, ``None`` values dropped, written by ``text``.
+
+    Raises:
+        ValueError: A value ``convert_to_string`` refuses (numpy scalars, dicts...).
+
+    Example:
+        >>> element_node("body", [("pos", (0, 0, 1)), ("quat", None), ("flag", True)]).attributes
+        AttributeMap({'pos': '0 0 1', 'flag': 'true'})
+
+    """
+    return GenericElement(
+        tag=tag,
+        attributes={key: text(value) for key, value in attributes if value is not None},
+    )
+
+
+def joint_node(
+    name: str | None, kwargs: Mapping[str, Any], text: TextRule = convert_to_string
+) -> GenericElement:
+    """The node of robosuite's ``new_joint``: ``kwargs``, then ``name``.
+
+    Example:
+        >>> joint_node("j", {"type": "free"}).attributes
+        AttributeMap({'type': 'free', 'name': 'j'})
+
+    """
+    return element_node("joint", [*kwargs.items(), ("name", name)], text)
+
+
+def site_node(
+    name: str | None,
+    rgba: Any,
+    pos: Any,
+    size: Any,
+    kwargs: Mapping[str, Any],
+    text: TextRule = convert_to_string,
+) -> GenericElement:
+    """The node of robosuite's ``new_site``: ``kwargs``, ``pos``, ``size``, ``rgba``, ``name``.
+
+    Example:
+        >>> site_node("s", RED, (0, 0, 0), (0.005,), {}).attributes
+        AttributeMap({'pos': '0 0 0', 'size': '0.005', 'rgba': '1 0 0 1', 'name': 's'})
+
+    """
+    named = [("pos", pos), ("size", size), ("rgba", rgba), ("name", name)]
+    return element_node("site", [*kwargs.items(), *named], text)
+
+
+def geom_node(
+    name: str | None,
+    type: Any,
+    size: Any,
+    pos: Any,
+    group: Any,
+    kwargs: Mapping[str, Any],
+    text: TextRule = convert_to_string,
+) -> GenericElement:
+    """The node of robosuite's ``new_geom``: ``kwargs``, type, size, pos, group, ``name``.
+
+    Example:
+        >>> geom = geom_node("g", "box", [0.1], (0, 0, 0), None, {"rgba": None, "material": "m"})
+        >>> geom.attributes
+        AttributeMap({'material': 'm', 'type': 'box', 'size': '0.1', 'pos': '0 0 0', 'name': 'g'})
+
+    """
+    named = [("type", type), ("size", size), ("pos", pos), ("group", group), ("name", name)]
+    return element_node("geom", [*kwargs.items(), *named], text)
+
+
+def body_node(
+    name: str | None, pos: Any, kwargs: Mapping[str, Any], text: TextRule = convert_to_string
+) -> GenericElement:
+    """The node of robosuite's ``new_body``: ``kwargs``, ``pos``, ``name``.
+
+    Example:
+        >>> body_node("b", (0, 0, 1), {"quat": None}).attributes
+        AttributeMap({'pos': '0 0 1', 'name': 'b'})
+
+    """
+    return element_node("body", [*kwargs.items(), ("pos", pos), ("name", name)], text)
+
+
+def new_element(tag: str, name: str | None, **kwargs: Any) -> ET.Element:
+    """A new element: ``kwargs`` as attributes (``None`` dropped), then ``name`` unless ``None``.
+
+    Raises:
+        ValueError: A value ``convert_to_string`` refuses: numpy scalars, ``dict``...
+
+    Example:
+        >>> body = new_element("body", None, pos=[0, 0, 1], quat=None, mass=0.5, flag=True)
+        >>> ET.tostring(body, encoding="unicode")
+        '<body pos="0 0 1" mass="0.5" flag="true" />'
+
+    """
+    return to_etree(element_node(tag, [*kwargs.items(), ("name", name)]))
+
+
+def new_joint(name: str | None, **kwargs: Any) -> ET.Element:
+    """A new ``<joint>``: ``kwargs``, then ``name``.
+
+    Example:
+        >>> ET.tostring(new_joint("j", type="free", damping="0.0005"), encoding="unicode")
+        '<joint type="free" damping="0.0005" name="j" />'
+
+    """
+    return to_etree(joint_node(name, kwargs))
+
+
+def new_actuator(
+    name: str | None, joint: Any, act_type: str = "actuator", **kwargs: Any
+) -> ET.Element:
+    """A new actuator of tag ``act_type``: ``kwargs``, then ``name``, then ``joint``.
+
+    ``joint`` is set as given (robosuite does not convert it). The default tag
+    ``"actuator"`` is robosuite's, though MuJoCo has no such actuator.
+
+    Example:
+        >>> actuator = new_actuator(joint="gz", act_type="position", name="a", kp="500")
+        >>> ET.tostring(actuator, encoding="unicode")
+        '<position kp="500" name="a" joint="gz" />'
+
+    """
+    element = new_element(tag=act_type, name=name, **kwargs)
+    element.set("joint", joint)
+    return element
+
+
+def new_site(
+    name: str | None,
+    rgba: Any = RED,
+    pos: Any = (0, 0, 0),
+    size: Any = (0.005,),
+    **kwargs: Any,
+) -> ET.Element:
+    """A new ``<site>`` (a small red sphere): ``kwargs``, ``pos``, ``size``, ``rgba``, ``name``.
+
+    Example:
+        >>> ET.tostring(new_site("s"), encoding="unicode")
+        '<site pos="0 0 0" size="0.005" rgba="1 0 0 1" name="s" />'
+
+    """
+    return to_etree(site_node(name, rgba, pos, size, kwargs))
+
+
+def new_geom(
+    name: str | None,
+    type: Any,
+    size: Any,
+    pos: Any = (0, 0, 0),
+    group: Any = 0,
+    **kwargs: Any,
+) -> ET.Element:
+    """A new ``<geom>`` (group 0, at the origin).
+
+    The attributes come in robosuite's order: ``kwargs``, ``type``, ``size``,
+    ``pos``, ``group``, ``name``.
+
+    Example:
+        >>> geom = new_geom("g", "sphere", [0.1], group=None, rgba=None, material="m")
+        >>> ET.tostring(geom, encoding="unicode")
+        '<geom material="m" type="sphere" size="0.1" pos="0 0 0" name="g" />'
+
+    """
+    return to_etree(geom_node(name, type, size, pos, group, kwargs))
+
+
+def new_body(name: str | None, pos: Any = (0, 0, 0), **kwargs: Any) -> ET.Element:
+    """A new ``<body>`` at the origin: ``kwargs``, ``pos``, ``name``.
+
+    Example:
+        >>> ET.tostring(new_body("b"), encoding="unicode"), ET.tostring(new_body(None, pos=None))
+        ('<body pos="0 0 0" name="b" />', b'<body />')
+
+    """
+    return to_etree(body_node(name, pos, kwargs))
+
+
+def new_inertial(pos: Any = (0, 0, 0), mass: Any = None, **kwargs: Any) -> ET.Element:
+    """A new ``<inertial>``: ``kwargs``, then ``mass`` (if given), then ``pos``; no name.
+
+    Example:
+        >>> ET.tostring(new_inertial(mass=1.0, diaginertia=[1, 1, 1]), encoding="unicode")
+        '<inertial diaginertia="1 1 1" mass="1.0" pos="0 0 0" />'
+
+    """
+    return new_element(tag="inertial", name=None, **{**kwargs, "mass": mass, "pos": pos})

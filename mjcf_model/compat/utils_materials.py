@@ -1,0 +1,327 @@
+"""robosuite's colours and materials: ``CustomMaterial``, ``add_material``, recolouring, alpha.
+
+:class:`CustomMaterial` is robosuite's mutable record (``add_material`` and
+robosuite's objects change and read its dicts), not the library's frozen
+:class:`mjcf_model.CustomMaterial`, whose text differs (``"true"`` where
+robosuite writes ``"True"``; a built-in flat texture where robosuite writes a
+PNG file). The tree functions are thin wrappers over pure functions on nodes.
+
+>>> import xml.etree.ElementTree as ET
+>>> body = ET.fromstring('<body><geom name="c" material="m"/><geom name="v" group="1"/></body>')
+>>> recolor_collision_geoms(body, [0.5, 0, 0, 1])
+>>> ET.tostring(body[0], encoding="unicode")
+'<geom name="c" rgba="0.5 0 0 1" />'
+"""
+
+from __future__ import annotations
+
+import struct
+import xml.etree.ElementTree as ET
+import zlib
+from collections.abc import Callable, Iterable
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement
+from mjcf_model.compat.utils_bridge import (
+    attribute,
+    edited,
+    element_index,
+    node_of,
+    preorder,
+    write_back,
+)
+from mjcf_model.compat.utils_builders import new_element
+from mjcf_model.compat.utils_constants import ALL_TEXTURES, TEXTURES
+from mjcf_model.compat.utils_naming import already_prefixed
+from mjcf_model.compat.utils_text import array_to_string, parse_numbers, xml_path_completion
+from mjcf_model.materials import DEFAULT_MATERIAL, with_material
+from mjcf_model.materials import CustomMaterial as FrozenMaterial
+
+__all__ = [
+    "CustomMaterial",
+    "add_material",
+    "recolor_collision_geoms",
+    "recolored",
+    "set_alpha",
+    "with_alpha",
+]
+
+#: Where robosuite writes the PNG of an RGBA texture (a fixed path in robosuite 1.5.2).
+_TEMP_TEXTURES = "/tmp/robosuite_temp_tex"
+#: Side of that PNG, in pixels.
+_PNG_SIDE = 100
+
+
+def _png(width: int, height: int, pixel: bytes) -> bytes:
+    """A PNG image of one RGBA colour (8 bits per channel), without an imaging library."""
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        crc = zlib.crc32(kind + data) & 0xFFFFFFFF
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", crc)
+
+    header = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)
+    rows = (b"\x00" + pixel * width) * height
+    return (
+        b"\x89PNG\r\n\x1a\n"
+        + chunk(b"IHDR", header)
+        + chunk(b"IDAT", zlib.compress(rows))
+        + chunk(b"IEND", b"")
+    )
+
+
+def _pixel(channels: tuple[Any, ...]) -> bytes:
+    """The RGBA bytes Pillow's ``Image.new("RGBA", size, channels)`` fills an image with.
+
+    Each channel is clipped to 0..255; like Pillow, the green, blue and alpha
+    values must fit a C ``int`` (a NaN colour becomes the smallest int64).
+
+    Raises:
+        OverflowError: A green, blue or alpha value outside the C ``int`` range.
+
+    """
+    for value in channels[1:]:
+        if not -(2**31) <= value < 2**31:
+            raise OverflowError(f"signed integer out of range: {value}")
+    return bytes(min(max(int(value), 0), 255) for value in channels)
+
+
+class CustomMaterial:
+    """A texture and a material: robosuite's ``CustomMaterial``, with the same attributes and text.
+
+    ``texture`` is a name from ``ALL_TEXTURES`` (robosuite's image file), a path
+    containing ``"/"`` (relative paths are joined to robosuite's assets
+    directory), an RGBA (a 100 x 100 PNG of that colour is written to
+    ``/tmp/robosuite_temp_tex/<tex_name>.png`` now, as robosuite does), or
+    ``None`` (no file). ``tex_attrib`` and ``mat_attrib`` are copied, get
+    ``name`` (and ``texture``), and their values become text: iterables with
+    ``array_to_string``, the rest with ``str`` (so ``True`` is ``"True"``).
+
+    Attributes:
+        name: The material name (``add_material`` prefixes it in place).
+        shared: Whether the names never get a prefix.
+        tex_attrib: The ``<texture>`` attributes (text).
+        mat_attrib: The ``<material>`` attributes (text).
+
+    Raises:
+        AssertionError: An unknown texture name, or an RGBA that is not four values.
+
+    Example:
+        >>> wood = CustomMaterial("WoodDark", "dark_wood", "dark_wood_mat",
+        ...                       tex_attrib={"type": "cube"}, mat_attrib={"specular": 0.4})
+        >>> wood.mat_attrib
+        {'specular': '0.4', 'name': 'dark_wood_mat', 'texture': 'dark_wood'}
+        >>> wood.tex_attrib["file"].endswith("textures/dark-wood.png")
+        True
+        >>> CustomMaterial([0.2, 0.4, 0.6, 1.0], "tex", "mat").tex_attrib["file"]
+        '/tmp/robosuite_temp_tex/tex.png'
+
+    """
+
+    def __init__(
+        self,
+        texture: Any,
+        tex_name: str,
+        mat_name: str,
+        tex_attrib: dict[str, Any] | None = None,
+        mat_attrib: dict[str, Any] | None = None,
+        shared: bool = False,
+    ) -> None:
+        if type(texture) is str:
+            default = False
+            if "/" not in texture and texture not in ALL_TEXTURES:
+                raise AssertionError(
+                    f"Error: Requested invalid texture. Got {texture}. "
+                    f"Valid options are:\n{ALL_TEXTURES}"
+                )
+        else:
+            default = True
+            if texture is not None and len(texture) != 4:
+                raise AssertionError(
+                    f"Error: Requested default texture. Got array of length {len(texture)}."
+                    "Expected rgba array of length 4."
+                )
+        self.tex_attrib: dict[str, Any] = {} if tex_attrib is None else tex_attrib.copy()
+        self.mat_attrib: dict[str, Any] = {} if mat_attrib is None else mat_attrib.copy()
+        self.name = mat_name
+        self.shared = shared
+        self.tex_attrib["name"] = tex_name
+        self.mat_attrib["name"] = mat_name
+        self.mat_attrib["texture"] = tex_name
+        for attrib in (self.tex_attrib, self.mat_attrib):
+            for k, v in attrib.items():
+                if type(v) is not str:
+                    attrib[k] = array_to_string(v) if isinstance(v, Iterable) else str(v)
+        if not default:
+            name = texture if "/" in texture else TEXTURES[texture]
+            self.tex_attrib["file"] = xml_path_completion(name)
+        elif texture is not None:
+            pixel = _pixel(tuple((np.array(texture) * 255).astype("int")))
+            Path(_TEMP_TEXTURES).mkdir(parents=True, exist_ok=True)
+            path = _TEMP_TEXTURES + f"/{tex_name}.png"
+            Path(path).write_bytes(_png(_PNG_SIDE, _PNG_SIDE, pixel))
+            self.tex_attrib["file"] = path
+
+
+def _default_material() -> CustomMaterial:
+    """The material ``add_material`` uses when given none: a white flat cube texture.
+
+    It is the library's :data:`~mjcf_model.materials.DEFAULT_MATERIAL`, with the
+    colours as the numpy arrays robosuite passes (so they read ``"1.0 1.0 1.0"``).
+    """
+    tex_attrib: dict[str, Any] = dict(DEFAULT_MATERIAL.tex_attrib)
+    tex_attrib["rgb1"] = tex_attrib["rgb2"] = np.ones(3)
+    return CustomMaterial(
+        texture=None,
+        tex_name=DEFAULT_MATERIAL.tex_name,
+        mat_name=DEFAULT_MATERIAL.mat_name,
+        tex_attrib=tex_attrib,
+    )
+
+
+def add_material(
+    root: ET.Element, naming_prefix: str = "", custom_material: CustomMaterial | None = None
+) -> tuple[ET.Element, ET.Element, CustomMaterial, bool]:
+    """Give each visual geom (group ``"1"``) without a material the material, in place.
+
+    robosuite's rules, kept: ``root`` itself counts; a geom without ``group``
+    is not visual; unless the material is ``shared`` or its name already
+    starts with ``naming_prefix``, the material object itself is changed:
+    ``naming_prefix`` is put before its name, texture name and the material's
+    texture reference (only the material name is checked: a material named
+    ``p_m`` with texture ``t`` keeps ``t``). The geoms are found by the
+    library's :func:`mjcf_model.with_material`.
+
+    Args:
+        root: The element to start from.
+        naming_prefix: The prefix of the material and texture names.
+        custom_material: The material; by default robosuite's white ``default_mat``.
+
+    Returns:
+        ``(texture element, material element, the material, whether a geom took it)``;
+        the elements list ``name`` last, as robosuite's ``new_element`` does.
+
+    Example:
+        >>> body = ET.fromstring('<body><geom group="1"/><geom group="0"/></body>')
+        >>> tex, mat, material, used = add_material(body, "p_")
+        >>> body[0].get("material"), ET.tostring(mat, encoding="unicode"), used
+        ('p_default_mat', '<material texture="p_default_tex" name="p_default_mat" />', True)
+
+    """
+    if custom_material is None:
+        custom_material = _default_material()
+    if not already_prefixed(custom_material.name, naming_prefix) and not custom_material.shared:
+        custom_material.name = naming_prefix + custom_material.name
+        custom_material.tex_attrib["name"] = naming_prefix + custom_material.tex_attrib["name"]
+        custom_material.mat_attrib["name"] = naming_prefix + custom_material.mat_attrib["name"]
+        custom_material.mat_attrib["texture"] = (
+            naming_prefix + custom_material.mat_attrib["texture"]
+        )
+    used = False
+    node = node_of(root)
+    if isinstance(node, (TypedElement, GenericElement)):
+        name = custom_material.name
+        marker = FrozenMaterial(texture=None, tex_name=name, mat_name=name, shared=True)
+        result = with_material(node, marker)
+        write_back(root, node, result.tree)
+        used = result.used
+    tex_element = new_element(tag="texture", **custom_material.tex_attrib)
+    mat_element = new_element(tag="material", **custom_material.mat_attrib)
+    return tex_element, mat_element, custom_material, used
+
+
+def recolored(node: Node, rgba: Any, exclude: Callable[[AnyElement], Any] | None = None) -> Node:
+    """``node`` with each collision geom painted ``rgba`` and stripped of its material.
+
+    A collision geom is a ``geom`` (``node`` included) whose group is absent or
+    ``"0"`` and for which ``exclude(geom)`` is not true. ``rgba`` is written
+    with ``array_to_string`` (so a numpy colour gives ``"0.5 0.0 0.0 1.0"``).
+    The library's :func:`mjcf_model.recolored_collision_geoms` picks the same
+    geoms but writes numbers in their shortest form, so it is not used here.
+
+    Example:
+        >>> geom = GenericElement(tag="geom", attributes={"material": "m"})
+        >>> recolored(geom, (1, 0, 0, 1)).attributes
+        AttributeMap({'rgba': '1 0 0 1'})
+
+    """
+    text: str | None = None
+    edits: dict[tuple[int, ...], dict[str, str | None]] = {}
+    for _parent, current, path in preorder(node):
+        if not isinstance(current, (TypedElement, GenericElement)) or current.tag != "geom":
+            continue
+        if attribute(current, "group") in {None, "0"} and (exclude is None or not exclude(current)):
+            if text is None:
+                text = array_to_string(rgba)
+            edits[path] = {"rgba": text, "material": None}
+    return edited(node, edits)
+
+
+def recolor_collision_geoms(
+    root: ET.Element, rgba: Any, exclude: Callable[[ET.Element], Any] | None = None
+) -> None:
+    """Paint every collision geom of ``root`` (itself included) ``rgba`` and drop its material.
+
+    See :func:`recolored`; ``exclude`` receives the live elements.
+
+    Example:
+        >>> import numpy as np
+        >>> tree = ET.fromstring('<body><geom name="floor"/><geom name="g" group="0"/></body>')
+        >>> floor = lambda geom: geom.get("name") == "floor"
+        >>> recolor_collision_geoms(tree, np.array([0.5, 0, 0, 1]), floor)
+        >>> [g.get("rgba") for g in tree]
+        [None, '0.5 0.0 0.0 1.0']
+
+    """
+    node = node_of(root)
+    node_exclude: Callable[[AnyElement], Any] | None = None
+    if exclude is not None:
+        live = element_index(root, node)
+        callback = exclude
+
+        def node_exclude(geom: AnyElement) -> Any:
+            return callback(live[id(geom)])
+
+    write_back(root, node, recolored(node, rgba, node_exclude))
+
+
+def with_alpha(node: Node, alpha: Any) -> Node:
+    """``node`` with the alpha of every descendant's ``rgba`` set to ``alpha`` (not ``node``'s own).
+
+    The colour is rewritten with numpy floats, as robosuite does: ``"1 0 0 1"``
+    becomes ``"1.0 0.0 0.0 0.3"``. Numbers separated by any white space are
+    read (robosuite raises ``ValueError`` on valid ``rgba="1  0 0 1"``).
+
+    Example:
+        >>> tree = GenericElement(tag="body", attributes={"rgba": "1 1 1 1"},
+        ...     children=[GenericElement(tag="geom", attributes={"rgba": "1 0 0 1"})])
+        >>> new = with_alpha(tree, 0.3)
+        >>> new.attributes["rgba"], new.children[0].attributes["rgba"]
+        ('1 1 1 1', '1.0 0.0 0.0 0.3')
+
+    """
+    edits: dict[tuple[int, ...], dict[str, str | None]] = {}
+    for parent, current, path in preorder(node):
+        rgba = attribute(current, "rgba")
+        if parent is not None and rgba is not None:
+            edits[path] = {"rgba": array_to_string([*parse_numbers(rgba)[0:3], alpha])}
+    return edited(node, edits)
+
+
+def set_alpha(node: ET.Element, alpha: Any = 0.1) -> None:
+    """Set the alpha of every ``rgba`` below ``node`` (not its own) to ``alpha``, in place.
+
+    See :func:`with_alpha`. If a colour cannot be read, nothing is changed
+    (robosuite has already changed the colours before it).
+
+    Example:
+        >>> tree = ET.fromstring('<body><geom rgba="1 0 0 1"/></body>')
+        >>> set_alpha(tree, 0.3)
+        >>> tree[0].get("rgba")
+        '1.0 0.0 0.0 0.3'
+
+    """
+    old = node_of(node)
+    write_back(node, old, with_alpha(old, alpha))

@@ -1,0 +1,328 @@
+"""robosuite's lookups: sorting elements into categories, finding elements and parents.
+
+Each function converts the tree, runs a pure query on the nodes and returns the
+live ElementTree elements the found nodes stand for (robosuite code edits them).
+
+>>> import xml.etree.ElementTree as ET
+>>> body = ET.fromstring('<body name="a"><geom name="g" group="1"/><joint name="j"/></body>')
+>>> {key: [e.get("name") for e in found] for key, found in sort_elements(body).items()}
+{'root_body': ['a'], 'visual_geoms': ['g'], 'joints': ['j']}
+>>> find_elements(body, "geom") is body[0]
+True
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from collections.abc import Callable, Iterator
+from typing import Any
+
+from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement
+from mjcf_model.compat.utils_bridge import (
+    attribute,
+    element_index,
+    node_index,
+    node_of,
+    preorder,
+    shallow_node,
+)
+from mjcf_model.compat.utils_constants import SENSOR_TYPES
+from mjcf_model.queries import find_all, parent_of
+from mjcf_model.traversal import walk
+
+__all__ = [
+    "_element_filter",
+    "filter_key",
+    "find_elements",
+    "find_elements_by_substring",
+    "find_parent",
+    "get_elements",
+    "iter_matching",
+    "sort_elements",
+    "sorted_nodes",
+    "typed_pairs",
+]
+
+
+def _tag(node: Node | None) -> str | None:
+    return node.tag if isinstance(node, (TypedElement, GenericElement)) else None
+
+
+def filter_key(node: Node, parent: Node | None) -> str | None:
+    """The category robosuite gives ``node`` (a generic node) under ``parent``, or ``None``.
+
+    In this order: any child of ``<actuator>`` (comments too, as in robosuite)
+    is ``"actuators"``; a ``joint`` without ``joint``/``joint1`` attributes
+    ``"joints"``; a ``body`` whose parent is not a ``body`` ``"root_body"``, else
+    ``"bodies"``; ``site`` ``"sites"``; a tag of :data:`SENSOR_TYPES`
+    ``"sensors"``; a ``geom`` of group ``0``/none ``"contact_geoms"``, of group
+    ``1`` ``"visual_geoms"`` (other groups, even ``"1.0"``: ``None``).
+
+    Example:
+        >>> geom = GenericElement(tag="geom", attributes={"group": "1"})
+        >>> filter_key(geom, None), filter_key(geom, GenericElement(tag="actuator"))
+        ('visual_geoms', 'actuators')
+
+    """
+    if parent is not None and _tag(parent) == "actuator":
+        return "actuators"
+    tag = _tag(node)
+    if tag == "joint":
+        is_dof = attribute(node, "joint") is None and attribute(node, "joint1") is None
+        return "joints" if is_dof else None
+    if tag == "body":
+        return "root_body" if parent is None or _tag(parent) != "body" else "bodies"
+    if tag == "site":
+        return "sites"
+    if tag in SENSOR_TYPES:
+        return "sensors"
+    if tag == "geom":
+        group = attribute(node, "group")
+        if group in {None, "0", "1"}:
+            return "visual_geoms" if group == "1" else "contact_geoms"
+    return None
+
+
+def _element_filter(element: ET.Element, parent: ET.Element | None) -> str | None:
+    """The default filter of ``sort_elements``: robosuite's category of a live element.
+
+    See :func:`filter_key` for the rules.
+
+    Example:
+        >>> _element_filter(ET.fromstring("<body/>"), ET.fromstring("<worldbody/>"))
+        'root_body'
+
+    """
+    return filter_key(shallow_node(element), None if parent is None else shallow_node(parent))
+
+
+def sorted_nodes(node: Node, parent: Node | None = None) -> dict[str, list[Node]]:
+    """The nodes of ``node`` (itself included) by :func:`filter_key`, keys in first-seen order.
+
+    Example:
+        >>> tree = GenericElement(tag="body", children=[GenericElement(tag="site")])
+        >>> {k: [n.tag for n in v] for k, v in sorted_nodes(tree).items()}
+        {'root_body': ['body'], 'sites': ['site']}
+
+    """
+    found: dict[str, list[Node]] = {}
+    for above, current, _path in preorder(node):
+        key = filter_key(current, parent if above is None else above)
+        if key is not None:
+            found.setdefault(key, []).append(current)
+    return found
+
+
+def sort_elements(
+    root: ET.Element,
+    parent: ET.Element | None = None,
+    element_filter: Callable[[Any, Any], Any] | None = None,
+    _elements_dict: dict[Any, list[Any]] | None = None,
+) -> dict[Any, list[Any]]:
+    """The live elements of ``root`` (itself included), in lists by filter key.
+
+    ``element_filter(element, parent)`` (default :func:`_element_filter`) is
+    called on every element in document order (comments too, as robosuite does)
+    with the live elements, so a filter may edit them (robosuite's robot models
+    name unnamed geoms this way). Keys come in first-seen order; ``None`` keys
+    are dropped; there are no empty lists.
+
+    Args:
+        root: The element to start from.
+        parent: The parent of ``root``, for the filter (default ``None``).
+        element_filter: ``filter(element, parent) -> key or None``.
+        _elements_dict: A dict to add to (changed and returned), as robosuite's recursion.
+
+    Example:
+        >>> tree = ET.fromstring('<body><geom name="c"/><body name="in"/></body>')
+        >>> {k: [e.get("name") for e in v] for k, v in sort_elements(tree).items()}
+        {'root_body': [None], 'contact_geoms': ['c'], 'bodies': ['in']}
+
+    """
+    if _elements_dict is None:
+        _elements_dict = {}
+    node = node_of(root)
+    live = element_index(root, node)
+    if element_filter is None:
+        parent_node = None if parent is None else shallow_node(parent)
+        for key, nodes in sorted_nodes(node, parent_node).items():
+            _elements_dict.setdefault(key, []).extend(live[id(n)] for n in nodes)
+        return _elements_dict
+    for above, current, _path in preorder(node):
+        element = live[id(current)]
+        key = element_filter(element, parent if above is None else live[id(above)])
+        if key is not None:
+            _elements_dict.setdefault(key, []).append(element)
+    return _elements_dict
+
+
+def find_parent(element: ET.Element, target: Any) -> ET.Element | None:
+    """The element below ``element`` whose child is ``target`` itself, or ``None``.
+
+    ``find_parent(root, root)`` is ``None``. (robosuite defines this function
+    twice; the second definition, with these parameter names, is the one in use.)
+
+    Example:
+        >>> tree = ET.fromstring("<a><b><c/></b></a>")
+        >>> find_parent(tree, tree[0][0]) is tree[0], find_parent(tree, tree)
+        (True, None)
+
+    """
+    node = node_of(element)
+    target_node = node_index(element, node).get(id(target))
+    if target_node is None:
+        return None
+    found = parent_of(node, target_node)
+    return None if found is None else element_index(element, node)[id(found)]
+
+
+def iter_matching(node: Node, tags: Any, attribs: dict[Any, Any] | None) -> Iterator[AnyElement]:
+    """The elements of ``node`` (itself included) with a tag ``in tags`` and ``attribs``.
+
+    In document order. Attributes are compared as robosuite does, text with
+    ``!=``: ``None`` means "absent", and a number never matches.
+
+    Example:
+        >>> tree = GenericElement(tag="body", children=[
+        ...     GenericElement(tag="geom", attributes={"group": "1"}), GenericElement(tag="geom")])
+        >>> [g.attributes.get("group") for g in iter_matching(tree, ["geom"], {"group": None})]
+        [None]
+
+    """
+    if isinstance(tags, str):  # a str subclass: robosuite's `in` is then a substring test
+        tags = {e.tag for _, e in walk(node) if e.tag in tags}
+    for element in find_all(node, tags):
+        matching = True
+        if attribs is not None:
+            for k, v in attribs.items():
+                if attribute(element, k) != v:
+                    matching = False
+                    break
+        if matching:
+            yield element
+
+
+def find_elements(
+    root: ET.Element, tags: Any, attribs: dict[Any, Any] | None = None, return_first: bool = True
+) -> Any:
+    """The first live element (or all of them) with a tag in ``tags`` and these attributes.
+
+    Args:
+        root: The element to start from; it is a candidate itself.
+        tags: A tag, or a collection of tags.
+        attribs: Attribute text the element must have (``None``: absent).
+        return_first: Return the first match instead of a list.
+
+    Returns:
+        The element, or the list of them in document order; ``None`` (not an
+        empty list) when nothing matches, as in robosuite.
+
+    Example:
+        >>> tree = ET.fromstring('<body><geom name="a" group="1"/><geom name="b"/></body>')
+        >>> [g.get("name") for g in find_elements(tree, "geom", return_first=False)]
+        ['a', 'b']
+        >>> find_elements(tree, "geom", {"group": None}).get("name"), find_elements(tree, "site")
+        ('b', None)
+
+    """
+    tags = [tags] if type(tags) is str else tags
+    node = node_of(root)
+    found = iter_matching(node, tags, attribs)
+    if return_first:
+        first = next(found, None)
+        return None if first is None else element_index(root, node)[id(first)]
+    nodes = list(found)
+    if not nodes:
+        return None
+    live = element_index(root, node)
+    return [live[id(n)] for n in nodes]
+
+
+def find_elements_by_substring(
+    root: ET.Element,
+    tags: Any,
+    substrings: Any,
+    attribs: dict[Any, Any] | None = None,
+    return_first: bool = False,
+) -> Any:
+    """The live elements found as :func:`find_elements` does whose name contains a substring.
+
+    Unlike robosuite, which crashes on these: an element without a ``name``
+    does not match (robosuite raises ``TypeError``), and with ``return_first``
+    the first element that matches is returned (robosuite searches the
+    children of the first element with the tag instead).
+
+    Returns:
+        A list in document order, or with ``return_first`` one element;
+        ``None`` when nothing matches.
+
+    Example:
+        >>> tree = ET.fromstring('<body><geom/><geom name="left_pad"/><geom name="right"/></body>')
+        >>> [g.get("name") for g in find_elements_by_substring(tree, "geom", ["pad", "ri"])]
+        ['left_pad', 'right']
+        >>> find_elements_by_substring(tree, "geom", "right", return_first=True).get("name")
+        'right'
+
+    """
+    substrings = [substrings] if type(substrings) is str else substrings
+    tags = [tags] if type(tags) is str else tags
+    node = node_of(root)
+    named: list[AnyElement] = []
+    for element in iter_matching(node, tags, attribs):
+        name = attribute(element, "name")
+        if name is None:
+            continue
+        for substring in substrings:
+            if substring in name:
+                named.append(element)
+                break
+        if named and return_first:
+            break
+    if not named:
+        return None
+    live = element_index(root, node)
+    return live[id(named[0])] if return_first else [live[id(n)] for n in named]
+
+
+def typed_pairs(
+    node: Node, element_type: str, include_root: bool = False
+) -> list[tuple[AnyElement | None, AnyElement]]:
+    """``(parent, element)`` for each descendant with tag ``element_type``, in document order.
+
+    ``node`` itself counts only with ``include_root`` (its parent is then ``None``).
+
+    Example:
+        >>> tree = GenericElement(tag="geom", children=[GenericElement(tag="geom")])
+        >>> [(p.tag, c.tag) for p, c in typed_pairs(tree, "geom")]
+        [('geom', 'geom')]
+
+    """
+    return [
+        (parent, current)
+        for parent, current, _path in preorder(node)
+        if isinstance(current, (TypedElement, GenericElement))
+        and current.tag == element_type
+        and (parent is not None or include_root)
+    ]
+
+
+def get_elements(
+    root: ET.Element, element_type: str, _parent: ET.Element | None = None
+) -> list[tuple[ET.Element, ET.Element]]:
+    """``(parent, element)`` of the live descendants with tag ``element_type``, in document order.
+
+    ``root`` itself is never included (unless ``_parent``, robosuite's recursion
+    argument, is given).
+
+    Example:
+        >>> tree = ET.fromstring('<body name="a"><geom/><body name="b"><geom/></body></body>')
+        >>> [(p.get("name"), g.tag) for p, g in get_elements(tree, "geom")]
+        [('a', 'geom'), ('b', 'geom')]
+
+    """
+    node = node_of(root)
+    live = element_index(root, node)
+    return [
+        (_parent if parent is None else live[id(parent)], live[id(child)])  # type: ignore[misc]
+        for parent, child in typed_pairs(node, element_type, include_root=_parent is not None)
+    ]

@@ -1,0 +1,273 @@
+"""robosuite's scaling: one element at a time, sizes by their count, numpy number text.
+
+robosuite scales only ``pos`` and ``size`` of geoms and sites (a size of three
+values per axis, of two by the mean of x and y then z, of one by the mean of
+all three, whatever the geom type), body and joint ``pos``, slide-joint
+ranges, and mesh ``scale``; every rewritten number comes out as numpy prints
+it (``"0 0 0"`` becomes ``"0.0 0.0 0.0"``). The library's
+:func:`mjcf_model.scaled` scales every length MuJoCo has, by geom type, and
+writes numbers in their shortest form, so robosuite's rules live here as pure
+functions on one node each (``scaled_geom``...), and the ``scale_*_element``
+wrappers write the result back onto the element. The object classes scale
+their models with the same functions
+(:func:`~mjcf_model.compat.objects_quirks.robosuite_scaled`), as robosuite's
+objects call ``scale_mjcf_model``.
+
+Numbers separated by any white space are read (robosuite's ``string_to_array``
+raises ``ValueError`` on valid MJCF such as ``pos="0  0 1"``). When a value
+cannot be read, the element is left unchanged (robosuite may already have
+written its ``pos`` when its ``size`` fails).
+
+>>> import xml.etree.ElementTree as ET
+>>> geom = ET.fromstring('<geom pos="0 0 1" size="0.1 0.2"/>')
+>>> scale_geom_element(geom, normalize_scale_array(2))
+>>> ET.tostring(geom, encoding="unicode")
+'<geom pos="0.0 0.0 2.0" size="0.2 0.4" />'
+>>> ball = ET.fromstring('<geom size="0.1"/>')
+>>> scale_geom_element(ball, np.array([1, 2, 3]))
+>>> ball.get("size")
+'0.2'
+>>> site = ET.fromstring('<site pos="1 0 0" size="0.01 0.02 0.03"/>')
+>>> scale_site_element(site, np.array([2, 2, 2]))
+>>> site.get("pos"), site.get("size")
+('2.0 0.0 0.0', '0.02 0.04 0.06')
+>>> mesh, body = ET.fromstring('<mesh scale="2 2 2"/>'), ET.fromstring('<body pos="0 0 1"/>')
+>>> scale_mesh_element(mesh, np.array([2, 2, 2]))
+>>> scale_body_element(body, np.array([2, 2, 2]))
+>>> mesh.get("scale"), body.get("pos")
+('4.0 4.0 4.0', '0.0 0.0 2.0')
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from mjcf_model.base import GenericElement, Node, TypedElement, with_attributes
+from mjcf_model.compat.utils_bridge import attribute, shallow_node, write_attributes
+from mjcf_model.compat.utils_text import array_to_string, normalize_scale_array, parse_numbers
+
+__all__ = [
+    "normalize_scale_array",
+    "scale_body_element",
+    "scale_geom_element",
+    "scale_joint_element",
+    "scale_mesh_element",
+    "scale_mjcf_model",
+    "scale_site_element",
+    "scaled_body",
+    "scaled_geom",
+    "scaled_joint",
+    "scaled_mesh",
+    "scaled_site",
+]
+
+
+def _changed(node: Node, changes: dict[str, str]) -> Node:
+    if not changes or not isinstance(node, (TypedElement, GenericElement)):
+        return node
+    return with_attributes(node, changes)
+
+
+def _scaled_pos(node: Node, scale_array: Any, changes: dict[str, str]) -> None:
+    pos = attribute(node, "pos")
+    if pos is not None:
+        changes["pos"] = array_to_string(parse_numbers(pos) * scale_array)
+
+
+def _scaled_size(node: Node, scale_array: Any, what: str, changes: dict[str, str]) -> None:
+    size = attribute(node, "size")
+    if size is None:
+        return
+    values = parse_numbers(size)
+    if len(values) == 3:
+        values = values * scale_array
+    elif len(values) == 2:
+        values[0] *= np.mean(scale_array[:2])
+        values[1] *= scale_array[2]
+    elif len(values) == 1:
+        values *= np.mean(scale_array)
+    else:
+        raise ValueError(f"Unsupported {what} size dimensions.")
+    changes["size"] = array_to_string(values)
+
+
+def _scaled_pos_size(node: Node, scale_array: Any, what: str) -> Node:
+    changes: dict[str, str] = {}
+    _scaled_pos(node, scale_array, changes)
+    _scaled_size(node, scale_array, what, changes)
+    return _changed(node, changes)
+
+
+def scaled_geom(node: Node, scale_array: Any) -> Node:
+    """A geom node with ``pos`` and ``size`` scaled robosuite's way (size by count, not type).
+
+    Raises:
+        ValueError: A size of more than three values, or text that is not numbers.
+
+    Example:
+        >>> from mjcf_model import GenericElement
+        >>> geom = GenericElement(tag="geom", attributes={"size": "0.1 0.2 0.3"})
+        >>> scaled_geom(geom, np.array([1, 2, 3])).attributes["size"]
+        '0.1 0.4 0.8999999999999999'
+
+    """
+    return _scaled_pos_size(node, scale_array, "geom")
+
+
+def scaled_site(node: Node, scale_array: Any) -> Node:
+    """A site node with ``pos`` and ``size`` scaled like a geom's.
+
+    Example:
+        >>> from mjcf_model import GenericElement
+        >>> site = GenericElement(tag="site", attributes={"size": "0.01 0.02"})
+        >>> scaled_site(site, np.array([1.0, 2.0, 3.0])).attributes["size"]
+        '0.015 0.06'
+
+    """
+    return _scaled_pos_size(node, scale_array, "site")
+
+
+def scaled_mesh(node: Node, scale_array: Any) -> Node:
+    """A mesh node whose ``scale`` (``1 1 1`` when absent, then written last) is multiplied.
+
+    Example:
+        >>> from mjcf_model import GenericElement
+        >>> scaled_mesh(GenericElement(tag="mesh"), np.array([2, 2, 2])).attributes
+        AttributeMap({'scale': '2.0 2.0 2.0'})
+
+    """
+    scale = attribute(node, "scale")
+    values = parse_numbers(scale) if scale is not None else np.ones(3)
+    values *= scale_array
+    return _changed(node, {"scale": array_to_string(values)})
+
+
+def scaled_body(node: Node, scale_array: Any) -> Node:
+    """A body node with ``pos`` scaled.
+
+    Example:
+        >>> from mjcf_model import GenericElement
+        >>> body = GenericElement(tag="body", attributes={"pos": "1 1 1"})
+        >>> scaled_body(body, [1, 2, 3]).attributes
+        AttributeMap({'pos': '1.0 2.0 3.0'})
+
+    """
+    changes: dict[str, str] = {}
+    _scaled_pos(node, scale_array, changes)
+    return _changed(node, changes)
+
+
+def _axis_factor(axis_text: str, scale_array: Any) -> Any:
+    axis = parse_numbers(axis_text)
+    norm = np.linalg.norm(axis)
+    unit = axis / norm if norm > 0 else np.array([1.0, 0.0, 0.0])
+    return np.linalg.norm(unit * scale_array)
+
+
+def scaled_joint(node: Node, scale_array: Any, scale_slide_joints: bool = True) -> Node:
+    """A joint node with ``pos`` scaled, and a slide joint's ``range`` by the scaled axis length.
+
+    Example:
+        >>> from mjcf_model import GenericElement
+        >>> joint = GenericElement(tag="joint", attributes={"type": "slide", "range": "0 1"})
+        >>> scaled_joint(joint, np.array([2, 1, 1])).attributes["range"]
+        '0.0 2.0'
+
+    """
+    changes: dict[str, str] = {}
+    _scaled_pos(node, scale_array, changes)
+    if scale_slide_joints:
+        joint_type = attribute(node, "type")
+        joint_range = attribute(node, "range")
+        if joint_range is not None and joint_type == "slide":
+            axis = attribute(node, "axis")
+            factor = _axis_factor("1 0 0" if axis is None else axis, scale_array)
+            changes["range"] = array_to_string(parse_numbers(joint_range) * factor)
+    return _changed(node, changes)
+
+
+def _in_place(scaled: Callable[[Node, Any], Node], what: str) -> Callable[[ET.Element, Any], None]:
+    """A ``scale_<tag>_element``: ``scaled`` on one live element, written back in place."""
+
+    def scale_element(element: ET.Element, scale_array: Any) -> None:
+        write_attributes(element, scaled(shallow_node(element), scale_array))
+
+    tag = scaled.__name__.removeprefix("scaled_")
+    scale_element.__name__ = scale_element.__qualname__ = f"scale_{tag}_element"
+    scale_element.__doc__ = f"Scale {what} in place (see :func:`{scaled.__name__}`)."
+    return scale_element
+
+
+scale_geom_element = _in_place(scaled_geom, "a geom's ``pos`` and ``size``")
+scale_mesh_element = _in_place(scaled_mesh, "a mesh's ``scale``")
+scale_body_element = _in_place(scaled_body, "a body's ``pos``")
+scale_site_element = _in_place(scaled_site, "a site's ``pos`` and ``size``")
+
+
+def scale_joint_element(
+    element: ET.Element, scale_array: Any, scale_slide_joints: bool = True
+) -> None:
+    """Scale a joint's ``pos`` (and a slide joint's ``range``) in place (see :func:`scaled_joint`).
+
+    Example:
+        >>> joint = ET.fromstring('<joint type="slide" axis="0 0 1" range="-1 1"/>')
+        >>> scale_joint_element(joint, np.array([1, 1, 3]))
+        >>> joint.get("range")
+        '-3.0 3.0'
+
+    """
+    write_attributes(element, scaled_joint(shallow_node(element), scale_array, scale_slide_joints))
+
+
+def scale_mjcf_model(
+    obj: ET.Element,
+    asset_root: ET.Element,
+    scale: Any,
+    get_elements_func: Callable[[ET.Element, str], Any],
+    worldbody: ET.Element | None = None,
+    scale_slide_joints: bool = True,
+) -> npt.NDArray[Any]:
+    """Scale an object in place, robosuite's way; returns the three factors used.
+
+    In robosuite's order: the geoms ``get_elements_func(obj, "geom")`` returns,
+    every ``mesh`` directly under ``asset_root`` (used or not), the bodies and
+    joints below ``obj``, and the sites below ``worldbody`` when it is given.
+    With robosuite's ``get_elements`` the root itself is never scaled (its
+    ``pos`` stays). Applying it twice compounds.
+
+    Args:
+        obj: The object's root element.
+        asset_root: The element holding the meshes.
+        scale: One factor or three.
+        get_elements_func: ``f(root, tag) -> [(parent, element), ...]``, e.g. ``get_elements``.
+        worldbody: Where to find the sites; ``None`` scales no site.
+        scale_slide_joints: Also scale slide joints' ranges.
+
+    Example:
+        >>> from mjcf_model.compat.utils_queries import get_elements
+        >>> obj = ET.fromstring('<body pos="0 0 1">'
+        ...                     '<body pos="1 0 0"><geom size="1"/></body></body>')
+        >>> scale_mjcf_model(obj, ET.Element("asset"), 2, get_elements)
+        array([2, 2, 2])
+        >>> ET.tostring(obj, encoding="unicode")
+        '<body pos="0 0 1"><body pos="2.0 0.0 0.0"><geom size="2.0" /></body></body>'
+
+    """
+    scale_array = normalize_scale_array(scale)
+    for _, element in get_elements_func(obj, "geom"):
+        scale_geom_element(element, scale_array)
+    for element in asset_root.findall("mesh"):
+        scale_mesh_element(element, scale_array)
+    for _, element in get_elements_func(obj, "body"):
+        scale_body_element(element, scale_array)
+    for _, element in get_elements_func(obj, "joint"):
+        scale_joint_element(element, scale_array, scale_slide_joints)
+    if worldbody is not None:
+        for _, element in get_elements_func(worldbody, "site"):
+            scale_site_element(element, scale_array)
+    return scale_array

@@ -1,0 +1,370 @@
+"""robosuite's value helpers: numbers to text and back, paths, sizes, dicts, ids.
+
+These are not tree transforms, so they are reimplemented as robosuite wrote
+them, with its exact number formatting (``"{}".format(x)`` for every item:
+numpy floats print as ``0.0``, Python ints as ``0``).
+
+>>> import numpy as np
+>>> array_to_string([0.5, 0, 1]), array_to_string(np.array([0.5, 0, 1]))
+('0.5 0 1', '0.5 0.0 1.0')
+>>> string_to_array(" 0 1 2 ")
+array([0., 1., 2.])
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+from collections.abc import Iterable
+from typing import Any, cast
+
+import numpy as np
+import numpy.typing as npt
+
+from mjcf_model.errors import MjcfLookupError
+
+__all__ = [
+    "add_to_dict",
+    "array_to_string",
+    "assets_root",
+    "convert_to_string",
+    "get_ids",
+    "get_size",
+    "normalize_scale_array",
+    "parse_numbers",
+    "save_sim_model",
+    "string_to_array",
+    "text_of",
+    "three_factors",
+    "xml_path_completion",
+]
+
+#: The element types ``get_ids`` accepts.
+_ID_TYPES = ["geom", "body", "joint", "site", "actuator", "sensor", "tendon", "camera", "light"]
+
+
+def assets_root(missing: str | None = None) -> str:
+    """The ``models/assets`` directory of robosuite, found without importing robosuite.
+
+    Args:
+        missing: The message of the error when robosuite is not installed
+            (by default: which of robosuite's files are needed, and what to do).
+
+    Raises:
+        MjcfLookupError: robosuite is not installed.
+
+    Example:
+        >>> assets_root().endswith(os.path.join("robosuite", "models", "assets"))
+        True
+
+    """
+    spec = importlib.util.find_spec("robosuite")
+    if spec is None or not spec.submodule_search_locations:
+        raise MjcfLookupError(
+            missing
+            or "robosuite's asset files (named textures, relative asset paths) are needed, "
+            "but robosuite is not installed; install robosuite or give an absolute path"
+        )
+    return os.path.join(next(iter(spec.submodule_search_locations)), "models", "assets")
+
+
+def xml_path_completion(xml_path: str, root: str | None = None) -> str:
+    """An absolute path stays; a relative one is joined to ``root`` (robosuite's assets).
+
+    Args:
+        xml_path: The path. Only a leading ``"/"`` makes it absolute (as in robosuite).
+        root: The folder of relative paths; by default robosuite's ``models/assets``.
+
+    Returns:
+        The full path, not normalised.
+
+    Raises:
+        MjcfLookupError: ``root`` is not given and robosuite is not installed.
+
+    Example:
+        >>> xml_path_completion("/abs/a.xml"), xml_path_completion("a.xml", root="/r")
+        ('/abs/a.xml', '/r/a.xml')
+
+    """
+    if xml_path.startswith("/"):
+        return xml_path
+    if root is None:
+        root = assets_root()
+    return os.path.join(root, xml_path)
+
+
+def array_to_string(array: Iterable[Any]) -> str:
+    """Each item formatted with ``"{}".format``, joined by single spaces.
+
+    Example:
+        >>> import numpy as np
+        >>> array_to_string(np.float32([0.1])), array_to_string([1e-8, True, None])
+        ('0.10000000149011612', '1e-08 True None')
+
+    """
+    return " ".join([f"{x}" for x in array])
+
+
+def string_to_array(string: str) -> npt.NDArray[Any]:
+    """Numbers separated by single spaces as a float array; ``"None"`` items stay ``None``.
+
+    Raises:
+        ValueError: Two spaces in a row, tabs, newlines or an empty string (as robosuite).
+
+    Example:
+        >>> string_to_array("1 None 2")
+        array([1.0, None, 2.0], dtype=object)
+        >>> string_to_array("0  1")
+        Traceback (most recent call last):
+        ...
+        ValueError: could not convert string to float: ''
+
+    """
+    return np.array([float(x) if x != "None" else None for x in string.strip().split(" ")])
+
+
+def parse_numbers(string: str) -> npt.NDArray[Any]:
+    r"""Like :func:`string_to_array`, but any white space separates numbers, as in MJCF.
+
+    robosuite's own tree functions crash on valid MJCF such as ``pos="0  0 1"``;
+    the compatible functions read such text with this instead (same result for
+    text robosuite reads).
+
+    Raises:
+        ValueError: A token is not a number, or there is none.
+
+    Example:
+        >>> parse_numbers(" 0\t1\n 2 ")
+        array([0., 1., 2.])
+
+    """
+    tokens = string.split()
+    if not tokens:
+        raise ValueError("could not convert string to float: ''")
+    return np.array([float(x) if x != "None" else None for x in tokens])
+
+
+def text_of(value: Any, *, exact: bool) -> str | None:
+    """The text of robosuite's ``convert_to_string`` rule, or ``None`` where it has none.
+
+    Text is kept; lists, tuples and arrays go through :func:`array_to_string`;
+    ints, floats and booleans are ``str(x).lower()``. With ``exact``, the
+    types are checked exactly, as robosuite checks them (numpy scalars and
+    subclasses have no rule): this is :func:`convert_to_string`. Without, as
+    the object classes want it (:func:`~mjcf_model.compat.objects_quirks.value_text`),
+    subclasses count and numpy scalars are read as Python's numbers first.
+
+    Example:
+        >>> import numpy as np
+        >>> text_of(np.float32(0.5), exact=True), text_of(np.float32(0.5), exact=False)
+        (None, '0.5')
+
+    """
+
+    def kind(*types: type) -> bool:
+        return type(value) in types if exact else isinstance(value, types)
+
+    if kind(str, np.str_):
+        return cast(str, value)
+    if kind(list, tuple, np.ndarray):
+        return array_to_string(value)
+    if not exact and isinstance(value, np.generic):
+        value = value.item()
+    if kind(int, float, bool):
+        return str(value).lower()
+    return None
+
+
+def convert_to_string(inp: Any) -> str:
+    """Attribute text for a list, tuple, array, int, float, bool or string (see :func:`text_of`).
+
+    Exact types are checked, as in robosuite: numpy scalars and ``None`` are refused.
+
+    Raises:
+        ValueError: Any other type.
+
+    Example:
+        >>> convert_to_string(True), convert_to_string([True, 2]), convert_to_string(1e-8)
+        ('true', 'True 2', '1e-08')
+        >>> import numpy as np
+        >>> convert_to_string(np.float64(0.5))
+        Traceback (most recent call last):
+        ...
+        ValueError: Unsupported type received: got <class 'numpy.float64'>
+
+    """
+    text = text_of(inp, exact=True)
+    if text is None:
+        raise ValueError(f"Unsupported type received: got {type(inp)}")
+    return text
+
+
+def get_size(
+    size: Any,
+    size_max: Any,
+    size_min: Any,
+    default_max: Any,
+    default_min: Any,
+    rng: Any = None,
+) -> npt.NDArray[Any]:
+    """``size`` as an array, or one drawn uniformly between the minimum and maximum.
+
+    One ``rng.uniform`` call per value, in order, so a seeded generator draws
+    robosuite's sizes; the primitive object classes draw theirs with it.
+
+    Args:
+        size: The size, or ``None`` to draw one (its length is not checked).
+        size_max: Upper bounds to draw from, ``None`` for ``default_max``.
+        size_min: Lower bounds to draw from, ``None`` for ``default_min``.
+        default_max: Default upper bounds; their length is the drawn size's.
+        default_min: Default lower bounds.
+        rng: Anything with ``uniform(low, high)``; by default ``np.random.default_rng()``.
+
+    Raises:
+        ValueError: The defaults differ in length, or ``size`` is given with bounds.
+
+    Example:
+        >>> get_size(None, None, None, [0.07] * 2, [0.03] * 2, np.random.default_rng(0))
+        array([0.05547847, 0.04079147])
+        >>> get_size([1, 2], None, None, [0.07], [0.03])
+        array([1, 2])
+
+    """
+    if rng is None:
+        rng = np.random.default_rng()
+    if len(default_max) != len(default_min):
+        raise ValueError(
+            f"default_max = {default_max!s} and default_min = {default_min!s}"
+            " have different lengths"
+        )
+    if size is not None:
+        if (size_max is not None) or (size_min is not None):
+            raise ValueError(
+                f"size = {size} overrides size_max = {size_max}, size_min = {size_min}"
+            )
+    else:
+        if size_max is None:
+            size_max = default_max
+        if size_min is None:
+            size_min = default_min
+        size = np.array([rng.uniform(size_min[i], size_max[i]) for i in range(len(default_max))])
+    return np.array(size)
+
+
+def add_to_dict(
+    dic: dict[Any, list[Any]],
+    fill_in_defaults: bool = True,
+    default_value: Any = None,
+    **kwargs: Any,
+) -> dict[Any, list[Any]]:
+    """Append each keyword's value to the list ``dic[key]``; changes and returns ``dic``.
+
+    With ``fill_in_defaults``, every list not mentioned gets ``default_value``
+    appended, and a new key's list starts with ``n`` items ``default_value``,
+    where ``n`` is, as robosuite computes it, the length of the first existing
+    *key* in set order (not of its list: they agree only by accident, e.g.
+    one-letter keys after one call). Kept for identical results.
+
+    Example:
+        >>> d = {}
+        >>> for values in ({"a": 1, "b": 2}, {"a": 3, "c": 4}, {"b": 5}):
+        ...     d = add_to_dict(d, **values)
+        >>> d
+        {'a': [1, 3, None], 'b': [2, None, 5], 'c': [None, 4, None]}
+
+    """
+    keys = set(dic.keys())
+    n = len(next(iter(keys))) if keys else 0
+    for k, v in kwargs.items():
+        if k in dic:
+            dic[k].append(v)
+            keys.remove(k)
+        else:
+            dic[k] = [default_value] * n + [v] if fill_in_defaults else [v]
+    if fill_in_defaults:
+        for k in keys:
+            dic[k].append(default_value)
+    return dic
+
+
+def save_sim_model(sim: Any, fname: str) -> None:
+    """Write ``sim``'s model as XML with ``sim.save(file=..., format="xml")`` (mujoco-py's API).
+
+    Example:
+        >>> import tempfile, types
+        >>> sim = types.SimpleNamespace(save=lambda file, format: file.write("<mujoco/>"))
+        >>> path = os.path.join(tempfile.mkdtemp(), "m.xml")
+        >>> save_sim_model(sim, path)
+        >>> open(path).read()
+        '<mujoco/>'
+
+    """
+    with open(fname, "w") as f:
+        sim.save(file=f, format="xml")
+
+
+def get_ids(
+    sim: Any, elements: Any, element_type: str = "geom", inplace: bool = False
+) -> list[Any]:
+    """The ids of ``elements`` (names or ids, one or a list) from ``sim.model.<type>_name2id``.
+
+    Args:
+        sim: Anything whose ``model`` has ``<element_type>_name2id`` methods.
+        elements: A name, an id, or a list of them (ints are kept as they are).
+        element_type: geom, body, joint, site, actuator, sensor, tendon, camera or light.
+        inplace: Replace the items of the given list itself.
+
+    Returns:
+        A list, even for a single name.
+
+    Raises:
+        AssertionError: An unknown ``element_type``.
+
+    Example:
+        >>> import types
+        >>> model = types.SimpleNamespace(geom_name2id={"a": 0, "b": 1}.__getitem__)
+        >>> get_ids(types.SimpleNamespace(model=model), ["b", 7, "a"])
+        [1, 7, 0]
+
+    """
+    if type(elements) is not list:
+        elements = [elements]
+    if not inplace:
+        elements = list(elements)
+    assert element_type in _ID_TYPES, "Invalid element type"
+    for i, element in enumerate(elements):
+        if type(element) is not int:
+            element_func = sim.model.__getattribute__(f"{element_type}_name2id")
+            elements[i] = element_func(element)
+    return cast(list[Any], elements)
+
+
+def normalize_scale_array(scale: Any) -> npt.NDArray[Any]:
+    """A scale factor as three numbers: one number is repeated (ints stay ints).
+
+    Raises:
+        ValueError: Neither one nor three numbers.
+
+    Example:
+        >>> normalize_scale_array(2), normalize_scale_array([[1.0], [2.0], [3.0]])
+        (array([2, 2, 2]), array([1., 2., 3.]))
+
+    """
+    scale_array = three_factors(scale)
+    if scale_array is None:
+        raise ValueError("Scale must be a scalar or a 3-element array.")
+    return scale_array
+
+
+def three_factors(scale: Any) -> npt.NDArray[Any] | None:
+    """The factors of :func:`normalize_scale_array`, or ``None`` where it raises.
+
+    Example:
+        >>> three_factors([2]), three_factors([1, 2])
+        (array([2, 2, 2]), None)
+
+    """
+    scale_array = np.array(scale).flatten()
+    if scale_array.size == 1:
+        return np.repeat(scale_array, 3)
+    return scale_array if scale_array.size == 3 else None
