@@ -1,0 +1,397 @@
+"""``MujocoModel`` and ``MujocoObject``: robosuite's model interface over an immutable model.
+
+An object's state is one immutable model, a ``<mujoco>`` document node
+(:attr:`ModelBacked.mjcf`), and the places in it robosuite's API talks about
+(the object body, the asset section...). Every change (prefixing, scaling, a
+new material, ``set_pos``) computes a new document with the pure transforms and
+installs it; the ElementTree robosuite's code receives is kept in step by an
+:class:`~mjcf_model.compat.objects_etree.EtreeView`.
+
+>>> from mjcf_model.compat.objects import BoxObject
+>>> box = BoxObject("cube", size=[0.02, 0.02, 0.02])
+>>> box.get_obj() is box.get_obj(), box.root_body, box.correct_naming({"a": ["b"], "c": "d"})
+(True, 'cube_main', {'a': ['cube_b'], 'c': 'cube_d'})
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from mjcf_model.base import AnyElement, GenericElement
+from mjcf_model.compat.objects_bridge import RobosuiteCompatible
+from mjcf_model.compat.objects_document import ModelBacked, as_node
+from mjcf_model.compat.objects_etree import EtreeView
+from mjcf_model.compat.objects_quirks import attribute, robosuite_prefixed, robosuite_scaled
+from mjcf_model.errors import MjcfLookupError, MjcfValueError
+from mjcf_model.queries import categorized
+from mjcf_model.traversal import with_children
+
+__all__ = [
+    "GEOMTYPE2GROUP",
+    "GEOM_GROUPS",
+    "MujocoModel",
+    "MujocoObject",
+    "check_obj_type",
+    "joint_specs",
+    "recorded_names",
+]
+
+#: robosuite's geom groups kept for each ``obj_type``.
+GEOMTYPE2GROUP: dict[str, set[int]] = {"collision": {0}, "visual": {1}, "all": {0, 1}}
+#: The valid ``obj_type`` values.
+GEOM_GROUPS = GEOMTYPE2GROUP.keys()
+
+#: The name lists robosuite caches, in the order of ``sort_elements``' categories.
+_CATEGORIES = ("bodies", "joints", "actuators", "sites", "sensors", "contact_geoms", "visual_geoms")
+
+Vector = npt.NDArray[Any]
+
+
+def check_obj_type(obj_type: str) -> None:
+    """Refuse an ``obj_type`` robosuite does not know (robosuite asserts).
+
+    Example:
+        >>> check_obj_type("visuals")
+        Traceback (most recent call last):
+            ...
+        mjcf_model.errors.MjcfValueError: object type must be one in [...], got: 'visuals' instead.
+
+    """
+    if obj_type not in GEOM_GROUPS:
+        raise MjcfValueError(
+            f"object type must be one in {list(GEOM_GROUPS)}, got: {obj_type!r} instead."
+        )
+
+
+class MujocoModel(RobosuiteCompatible):
+    """Like robosuite's ``MujocoModel`` interface: names with a prefix, geoms, sites, offsets.
+
+    Subclasses answer the properties; ``correct_naming`` is implemented here.
+    """
+
+    _robosuite_class = ("robosuite.models.base", "MujocoModel")
+
+    def correct_naming(self, names: Any) -> Any:
+        """Add ``naming_prefix`` to a name, each name of a list, or each value of a dict.
+
+        Names ``exclude_from_prefixing`` accepts stay. The prefix is always
+        added (robosuite's ``correct_naming`` has no "already prefixed" test).
+        ``None`` in a list stays ``None`` (robosuite raises ``TypeError``).
+
+        Raises:
+            TypeError: ``names`` is not a str, list or dict.
+
+        """
+        if type(names) is str:
+            return names if self.exclude_from_prefixing(names) else self.naming_prefix + names
+        if type(names) is list:
+            return [
+                name
+                if name is None or self.exclude_from_prefixing(name)
+                else self.naming_prefix + name
+                for name in names
+            ]
+        if type(names) is dict:
+            return {key: self.correct_naming(value) for key, value in names.items()}
+        raise TypeError("Error: type of 'names' must be str, list, or dict!")
+
+    def set_sites_visibility(self, sim: Any, visible: bool) -> None:
+        """Show or hide this model's sites in a running simulation (sign of the site alpha)."""
+        for site in self.sites:
+            site_id = sim.model.site_name2id(site)
+            alpha = sim.model.site_rgba[site_id][3]
+            if (visible and alpha < 0) or (not visible and alpha > 0):
+                sim.model.site_rgba[site_id][3] = -alpha
+
+    def exclude_from_prefixing(self, inp: Any) -> bool:
+        """Whether the name ``inp`` keeps its name without the prefix (subclasses decide)."""
+        raise NotImplementedError
+
+    def _unanswered(self) -> Any:
+        raise NotImplementedError(f"{type(self).__name__} does not define this")
+
+    name = property(_unanswered, doc="Name of this model.")
+    naming_prefix = property(_unanswered, doc="Prefix of every name in this model.")
+    root_body = property(_unanswered, doc="Name of the top body.")
+    bodies = property(_unanswered, doc="Names of the bodies.")
+    joints = property(_unanswered, doc="Names of the joints.")
+    actuators = property(_unanswered, doc="Names of the actuators.")
+    sites = property(_unanswered, doc="Names of the sites.")
+    sensors = property(_unanswered, doc="Names of the sensors.")
+    contact_geoms = property(_unanswered, doc="Names of the collision geoms.")
+    visual_geoms = property(_unanswered, doc="Names of the visual geoms.")
+    important_geoms = property(_unanswered, doc="Named groups of important geoms.")
+    important_sites = property(_unanswered, doc="Named important sites.")
+    important_sensors = property(_unanswered, doc="Named important sensors.")
+    bottom_offset = property(_unanswered, doc="Vector from the root body to the bottom.")
+    top_offset = property(_unanswered, doc="Vector from the root body to the top.")
+    horizontal_radius = property(_unanswered, doc="Largest horizontal distance from the root.")
+
+
+class MujocoObject(ModelBacked, MujocoModel):
+    """Like robosuite's ``MujocoObject``: a body with geoms, joints and a site, plus its assets.
+
+    The state is a document ``<mujoco><asset/><worldbody><body .../></worldbody></mujoco>``
+    whose body is the object (:meth:`get_obj`). Subclasses build the body in
+    ``_get_object_subtree`` (a node, or an ElementTree element as robosuite's
+    own subclasses return), assign it to ``_obj`` and call
+    ``_get_object_properties``.
+
+    Unlike robosuite, ``MujocoObject(scale=...)`` works: the scale is applied
+    once the body exists (robosuite scales before and raises ``TypeError``).
+
+    Args:
+        obj_type: ``"collision"``, ``"visual"`` or ``"all"`` geoms.
+        duplicate_collision_geoms: Give each collision geom a visual copy (XML objects).
+        scale: One factor or three, applied once the body is built.
+
+    """
+
+    _robosuite_class = ("robosuite.models.objects", "MujocoObject")
+
+    def __init__(
+        self, obj_type: str = "all", duplicate_collision_geoms: bool = True, scale: Any = None
+    ) -> None:
+        check_obj_type(obj_type)
+        self.obj_type = obj_type
+        self.duplicate_collision_geoms = duplicate_collision_geoms
+        self._scale = scale
+        self._pending_scale = scale
+        self._name: str | None = None
+        self._raw: dict[str, Any] = {"root_body": None}
+        document = GenericElement(
+            tag="mujoco",
+            children=[GenericElement(tag="asset"), GenericElement(tag="worldbody")],
+        )
+        self._init_document(document, {"asset": (0,), "worldbody": (1,)})
+
+    # -- the object body ----------------------------------------------------------
+
+    @property
+    def _obj(self) -> ET.Element | None:
+        """The object body's ElementTree element, or ``None`` before it is built."""
+        return self._live("obj") if "obj" in self._paths else None
+
+    @_obj.setter
+    def _obj(self, value: Any) -> None:
+        """Install the object body (a node, or an ElementTree element robosuite-style)."""
+        body = as_node(value)
+        if "obj" in self._paths:
+            self._replace("obj", body)
+            return
+        world = self._node("worldbody")
+        self._replace("worldbody", with_children(world, [*world.children, body]))
+        self._paths["obj"] = (*self._paths["worldbody"], len(world.children))
+
+    def get_obj(self) -> ET.Element:
+        """The object body, as the live ElementTree element robosuite's tasks append.
+
+        It is the same element on every call; changes made through the object
+        (``set_pos``, ``set_scale``...) show in it.
+
+        Raises:
+            MjcfLookupError: the body has not been built yet.
+
+        """
+        if "obj" not in self._paths:
+            raise MjcfLookupError("Object XML tree has not been generated yet!")
+        return self._live("obj")
+
+    @property
+    def obj_node(self) -> AnyElement:
+        """The object body as an immutable node."""
+        if "obj" not in self._paths:
+            raise MjcfLookupError("Object XML tree has not been generated yet!")
+        return self._node("obj")
+
+    def _get_object_subtree(self) -> Any:
+        raise NotImplementedError
+
+    def _get_object_properties(self) -> None:
+        """Record the raw names of the body's elements, then prefix the body's names.
+
+        Raises:
+            MjcfValueError: the body tree has more or less than one root body.
+
+        """
+        if self._pending_scale is not None:
+            self._pending_scale = None
+            self.set_scale(self._scale)
+        self._record_names()
+        self._prefix_names()
+
+    def _record_names(self) -> None:
+        self._raw = recorded_names(self.obj_node)[1]
+
+    def _prefix_names(self) -> None:
+        self._change(
+            "obj", lambda body: robosuite_prefixed(body, self.naming_prefix, self._excluded)
+        )
+
+    def _excluded(self, name: str) -> bool:
+        return bool(self.exclude_from_prefixing(name))
+
+    # -- scaling ------------------------------------------------------------------
+
+    def set_scale(self, scale: Any, obj: ET.Element | None = None) -> None:
+        """Scale the body's geoms (pos, size), inner bodies and joints (pos) and the meshes.
+
+        As robosuite's ``MujocoObject.set_scale``: sites and the root body's own
+        position are not scaled, nor are the offsets of generated objects;
+        applying it twice compounds. ``obj`` is another ElementTree body to
+        scale in place instead of this object's.
+        """
+        self._scale = scale
+        tags = {"geom", "body", "joint"}
+        if obj is None and "obj" not in self._paths:  # no body yet: scale it once built
+            self._pending_scale = scale
+            return
+        if obj is not None and obj is not self._obj:
+            view = EtreeView.adopt(obj)
+            view.update(robosuite_scaled(view.node, scale, tags))
+        else:
+            self._change("obj", lambda body: robosuite_scaled(body, scale, tags))
+        self._change("asset", lambda asset: robosuite_scaled(asset, scale, {"mesh"}))
+
+    # -- names --------------------------------------------------------------------
+
+    @property
+    def name(self) -> Any:
+        """The object's name."""
+        return self._name
+
+    @property
+    def naming_prefix(self) -> str:
+        """``"<name>_"``."""
+        return f"{self.name}_"
+
+    @property
+    def root_body(self) -> Any:
+        """The prefixed name of the object body."""
+        return self.correct_naming(self._raw["root_body"])
+
+    def _names(self, category: str) -> Any:
+        return self.correct_naming(list(self._raw.get(category, [])))
+
+    bodies = property(lambda self: self._names("bodies"), doc="Prefixed body names.")
+    joints = property(lambda self: self._names("joints"), doc="Prefixed joint names.")
+    actuators = property(lambda self: self._names("actuators"), doc="Prefixed actuator names.")
+    sites = property(lambda self: self._names("sites"), doc="Prefixed site names.")
+    sensors = property(lambda self: self._names("sensors"), doc="Prefixed sensor names.")
+    contact_geoms = property(
+        lambda self: self._names("contact_geoms"), doc="Prefixed collision geom names."
+    )
+    visual_geoms = property(
+        lambda self: self._names("visual_geoms"), doc="Prefixed visual geom names."
+    )
+
+    @property
+    def important_geoms(self) -> dict[str, Any]:
+        """No important geoms by default."""
+        return {}
+
+    @property
+    def important_sites(self) -> dict[str, Any]:
+        """``{"obj": "<prefix>default_site"}``."""
+        return {"obj": self.naming_prefix + "default_site"}
+
+    @property
+    def important_sensors(self) -> dict[str, Any]:
+        """No important sensors by default."""
+        return {}
+
+    @staticmethod
+    def get_site_attrib_template() -> dict[str, str]:
+        """The attributes of the small sphere site that marks the object's origin."""
+        return {
+            "pos": "0 0 0",
+            "size": "0.002 0.002 0.002",
+            "rgba": "1 0 0 1",
+            "type": "sphere",
+            "group": "0",
+        }
+
+    def _default_site(self, hidden: bool = False) -> dict[str, str]:
+        """The ``default_site`` attributes (``hidden``: alpha 0, as XML and composite objects)."""
+        site = self.get_site_attrib_template()
+        if hidden:
+            site["rgba"] = "1 0 0 0"
+        site["name"] = "default_site"
+        return site
+
+    @staticmethod
+    def get_joint_attrib_template() -> dict[str, str]:
+        """The attributes of the default joint: a free joint."""
+        return {"type": "free"}
+
+    def get_bounding_box_half_size(self) -> Vector:
+        """Half the size of a box around the object (subclasses decide)."""
+        raise NotImplementedError
+
+    def get_bounding_box_size(self) -> Vector:
+        """The size of a box around the object: twice :meth:`get_bounding_box_half_size`."""
+        return 2.0 * np.asarray(self.get_bounding_box_half_size())
+
+
+def recorded_names(node: AnyElement) -> tuple[AnyElement, dict[str, Any]]:
+    """The root body of ``node`` and the raw names robosuite records, by category.
+
+    ``root_body`` (a name), ``bodies`` (the root body's first), ``joints``,
+    ``actuators``, ``sites``, ``sensors``, ``contact_geoms`` and
+    ``visual_geoms``, as robosuite's ``MujocoObject`` and ``MujocoXMLModel``
+    record them from ``sort_elements``. The categories are the library's
+    :func:`~mjcf_model.categorized`, not the compatible ``sort_elements``, on
+    purpose: its sensors are the children of ``<sensor>``, where robosuite's
+    fixed tag list misses newer sensors.
+
+    Raises:
+        MjcfValueError: ``node`` has more or less than one root body (robosuite asserts).
+
+    Example:
+        >>> body = GenericElement(tag="body", attributes={"name": "b"},
+        ...                       children=[GenericElement(tag="site", attributes={"name": "s"})])
+        >>> names = recorded_names(body)[1]
+        >>> names["root_body"], names["bodies"], names["sites"]
+        ('b', ['b'], ['s'])
+
+    """
+    found = categorized(node)
+    if len(found.root_body) != 1:
+        raise MjcfValueError(
+            "Invalid number of root bodies found for robot model. Expected 1,"
+            f"got {len(found.root_body)}"
+        )
+    root = found.root_body[0]
+    names: dict[str, Any] = {"root_body": attribute(root, "name")}
+    names["bodies"] = [attribute(e, "name") for e in (root, *found.bodies)]
+    for category in _CATEGORIES[1:]:
+        names[category] = [attribute(e, "name") for e in getattr(found, category)]
+    return root, names
+
+
+def joint_specs(joints: Any, default: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Like robosuite's joint specs: ``"default"``, ``None`` (none) or the caller's own list.
+
+    Like robosuite, an unnamed spec gets ``name = "joint<i>"`` (``i`` its index)
+    written into the caller's dict, so code that reads the names back finds them.
+
+    Example:
+        >>> specs = [{"type": "hinge"}, {"name": "sl", "type": "slide"}]
+        >>> joint_specs(specs, []) is specs, specs[0]
+        (True, {'type': 'hinge', 'name': 'joint0'})
+
+    """
+    if isinstance(joints, str) and joints == "default":
+        specs = default
+    elif joints is None:
+        specs = []
+    else:
+        specs = joints
+    for index, spec in enumerate(specs):
+        if "name" not in spec:
+            spec["name"] = f"joint{index}"
+    return specs

@@ -1,0 +1,256 @@
+"""``CompositeObject``: robosuite's object made of several primitive geoms in one body.
+
+>>> shelf = CompositeObject(
+...     "shelf", total_size=[0.1, 0.1, 0.02], geom_types=["box", "box"],
+...     geom_sizes=[[0.1, 0.1, 0.01], [0.1, 0.1, 0.01]],
+...     geom_locations=[[0, 0, 0], [0, 0, 0.02]], obj_types="collision")
+>>> [g.get("pos") for g in shelf.get_obj().iter("geom")]
+['0.0 0.0 -0.01', '0.0 0.0 0.01']
+>>> shelf.contact_geoms, float(shelf.horizontal_radius)
+(['shelf_g0', 'shelf_g1'], 0.14142135623730953)
+"""
+
+from __future__ import annotations
+
+from copy import deepcopy
+from numbers import Real
+from typing import Any
+
+import numpy as np
+
+from mjcf_model.base import AnyElement
+from mjcf_model.compat.objects_base import Vector
+from mjcf_model.compat.objects_generated import MujocoGeneratedObject
+from mjcf_model.compat.objects_quirks import (
+    OBJECT_COLLISION_COLOR,
+    rs_body,
+    rs_geom,
+    rs_joint,
+    rs_site,
+)
+from mjcf_model.compat.utils_text import array_to_string
+from mjcf_model.errors import MjcfValueError
+from mjcf_model.traversal import with_children
+
+__all__ = ["CompositeObject"]
+
+#: robosuite's friction for composite geoms without one (a numpy array, so ``"1.0 ..."``).
+_DEFAULT_FRICTION = np.array([1.0, 0.005, 0.0001])
+
+
+def _is_number(value: Any) -> bool:
+    return isinstance(value, Real) and not isinstance(value, bool)
+
+
+def _per_geom(value: Any, count: int, single: bool) -> list[Any]:
+    return [value] * count if single else list(value)
+
+
+class CompositeObject(MujocoGeneratedObject):
+    """robosuite's ``CompositeObject``: primitive geoms placed in a box of half-size ``total_size``.
+
+    Locations are of each geom's lower corner relative to the box's lower
+    corner, or of its centre relative to the box's centre with
+    ``locations_relative_to_center``. Per-geom lists may be ``None``; scalar
+    ``density``, ``solref`` and ``solimp`` apply to every geom (numpy scalars
+    too: robosuite raises ``TypeError`` for a numpy density, and decides
+    ``solimp``'s broadcast by ``obj_types`` by mistake).
+
+    Raises:
+        MjcfValueError: a geom type without a half-size rule (box, ellipsoid,
+            sphere, capsule and cylinder have one).
+
+    """
+
+    _robosuite_class = ("robosuite.models.objects", "CompositeObject")
+
+    def __init__(
+        self,
+        name: str,
+        total_size: Any,
+        geom_types: Any,
+        geom_sizes: Any,
+        geom_locations: Any,
+        geom_quats: Any = None,
+        geom_names: Any = None,
+        geom_rgbas: Any = None,
+        geom_materials: Any = None,
+        geom_frictions: Any = None,
+        geom_condims: Any = None,
+        rgba: Any = None,
+        density: Any = 100.0,
+        solref: Any = (0.02, 1.0),
+        solimp: Any = (0.9, 0.95, 0.001),
+        locations_relative_to_center: bool = False,
+        joints: Any = "default",
+        sites: Any = None,
+        obj_types: Any = "all",
+        duplicate_collision_geoms: bool = True,
+    ) -> None:
+        super().__init__(duplicate_collision_geoms=duplicate_collision_geoms)
+        self._name = name
+        if isinstance(joints, str) and joints == "default":
+            self.joint_specs: list[dict[str, Any]] = [self.get_joint_attrib_template()]
+        else:
+            self.joint_specs = [] if joints is None else joints
+        _name_unnamed(self.joint_specs, "joint")
+        self.site_specs: list[dict[str, Any]] = deepcopy(sites) if sites is not None else []
+        self.site_specs.append(self._default_site(hidden=True))
+        _name_unnamed(self.site_specs, "site")
+        count = len(geom_types)
+        self.total_size = np.array(total_size)
+        self.geom_types = np.array(geom_types)
+        self.geom_sizes = deepcopy(geom_sizes)
+        self.geom_locations = np.array(geom_locations)
+        self.geom_quats = deepcopy(geom_quats) if geom_quats is not None else [None] * count
+        self.geom_names = _listed(geom_names, count)
+        self.geom_rgbas = _listed(geom_rgbas, count)
+        self.geom_materials = _listed(geom_materials, count)
+        self.geom_frictions = _listed(geom_frictions, count)
+        self.geom_condims = _listed(geom_condims, count)
+        self.density = _per_geom(density, count, density is None or _is_number(density))
+        self.solref = _per_geom(solref, count, solref is None or _is_number(solref[0]))
+        self.solimp = _per_geom(solimp, count, solimp is None or _is_number(solimp[0]))
+        self.rgba = rgba
+        self.locations_relative_to_center = locations_relative_to_center
+        single = obj_types is None or isinstance(obj_types, str)
+        self.obj_types = _per_geom(obj_types, count, single)
+        self.sanity_check()
+        self._obj = self._get_object_subtree()
+        self._get_object_properties()
+
+    def get_bounding_box_half_size(self) -> Vector:
+        """``total_size``."""
+        return np.array(self.total_size)
+
+    def in_box(self, position: Any, object_position: Any) -> bool:
+        """Whether ``object_position`` is inside this object's box placed at ``position``.
+
+        The box's bottom is lowered by 0.01 (objects settle on the table).
+        """
+        upper = position + self.total_size
+        lower = position - self.total_size
+        lower[2] -= 0.01
+        return bool(np.all(object_position > lower) and np.all(object_position < upper))
+
+    def _get_object_subtree(self) -> AnyElement:
+        children: list[AnyElement] = [rs_joint(**spec) for spec in self.joint_specs]
+        children.extend(rs_site(**spec) for spec in self.site_specs)
+        rows = zip(
+            self.obj_types,
+            self.geom_types,
+            self.geom_sizes,
+            self.geom_locations,
+            self.geom_names,
+            self.geom_rgbas,
+            self.geom_frictions,
+            self.geom_condims,
+            self.geom_quats,
+            self.geom_materials,
+            self.density,
+            self.solref,
+            self.solimp,
+            strict=False,
+        )
+        for index, row in enumerate(rows):
+            children.extend(self._geoms(index, *row))
+        return with_children(rs_body(name="root"), children)
+
+    def _geoms(
+        self,
+        index: int,
+        obj_type: Any,
+        geom_type: Any,
+        size: Any,
+        location: Any,
+        name: Any,
+        rgba: Any,
+        friction: Any,
+        condim: Any,
+        quat: Any,
+        material: Any,
+        density: Any,
+        solref: Any,
+        solimp: Any,
+    ) -> list[AnyElement]:
+        half = self._size_to_cartesian_half_lengths(geom_type, size)
+        if self.locations_relative_to_center:
+            pos = location
+        else:
+            pos = [(-self.total_size[k] + half[k]) + location[k] for k in range(3)]
+        base: dict[str, Any] = {
+            "size": size,
+            "pos": pos,
+            "name": name if name is not None else f"g{index}",
+            "type": geom_type,
+        }
+        if quat is not None:
+            base["quat"] = array_to_string(quat)
+        geoms: list[AnyElement] = []
+        if obj_type in {"collision", "all"}:
+            collision = deepcopy(base)
+            collision.update(self.get_collision_attrib_template())
+            if density is not None:
+                collision["density"] = str(density)
+            collision["friction"] = array_to_string(
+                friction if friction is not None else _DEFAULT_FRICTION
+            )
+            collision["solref"] = array_to_string(solref)
+            collision["solimp"] = array_to_string(solimp)
+            collision["rgba"] = OBJECT_COLLISION_COLOR
+            if condim is not None:
+                collision["condim"] = str(condim)
+            geoms.append(rs_geom(**collision))
+        if obj_type in {"visual", "all"}:
+            visual = deepcopy(base)
+            visual.update(self.get_visual_attrib_template())
+            visual["name"] += "_vis"
+            if material is not None:
+                visual["material"] = material
+            visual["rgba"] = rgba if rgba is not None else self.rgba
+            geoms.append(rs_geom(**visual))
+        return geoms
+
+    @staticmethod
+    def _size_to_cartesian_half_lengths(geom_type: Any, geom_size: Any) -> Any:
+        """The x, y and z half-lengths of a geom's bounding box, from its type and size."""
+        if geom_type in ("box", "ellipsoid"):
+            return geom_size
+        if geom_type == "sphere":
+            return [geom_size[0], geom_size[0], geom_size[0]]
+        if geom_type == "capsule":
+            return [geom_size[0], geom_size[0], geom_size[0] + geom_size[1]]
+        if geom_type == "cylinder":
+            return [geom_size[0], geom_size[0], geom_size[1]]
+        raise MjcfValueError(
+            f"unsupported geom type {geom_type!r} for a composite object; "
+            "supported: box, ellipsoid, sphere, capsule, cylinder"
+        )
+
+    @property
+    def bottom_offset(self) -> Vector:
+        """``[0, 0, -total_size z]``."""
+        return np.array([0.0, 0.0, -self.total_size[2]])
+
+    @property
+    def top_offset(self) -> Vector:
+        """``[0, 0, total_size z]``."""
+        return np.array([0.0, 0.0, self.total_size[2]])
+
+    @property
+    def horizontal_radius(self) -> Any:
+        """The length of ``total_size``'s x and y."""
+        return np.linalg.norm(self.total_size[:2], 2)
+
+
+def _listed(values: Any, count: int) -> list[Any]:
+    return list(values) if values is not None else [None] * count
+
+
+def _name_unnamed(specs: list[dict[str, Any]], stem: str) -> None:
+    """Name the unnamed specs ``<stem><k>``, counting only those (robosuite's composite rule)."""
+    number = 0
+    for spec in specs:
+        if "name" not in spec:
+            spec["name"] = f"{stem}{number}"
+            number += 1

@@ -1,0 +1,110 @@
+"""The state of every compat object: an immutable document, named places in it, its ElementTree.
+
+:class:`ModelBacked` holds a ``<mujoco>`` node (:attr:`ModelBacked.mjcf`) and
+the paths of the places robosuite's API talks about (``asset``, ``worldbody``,
+the object body...). A change computes a new document with the pure transforms
+and installs it; the ElementTree handed to robosuite's code is kept in step by
+an :class:`~mjcf_model.compat.objects_etree.EtreeView`.
+
+>>> from mjcf_model import GenericElement
+>>> class Doc(ModelBacked):
+...     pass
+>>> doc = Doc()
+>>> doc._init_document(GenericElement(tag="mujoco", children=[GenericElement(tag="asset")]),
+...                    {"asset": (0,)})
+>>> live = doc.asset
+>>> doc._change("asset", lambda a: with_children(a, [GenericElement(tag="mesh")]))
+>>> doc.asset is live, [child.tag for child in live]
+(True, ['mesh'])
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from collections.abc import Callable
+from typing import Any
+
+from mjcf_model.base import AnyElement, GenericElement, TypedElement
+from mjcf_model.compat.objects_etree import EtreeView, replaced_at, subtree_at
+from mjcf_model.compat.objects_quirks import attribute
+from mjcf_model.errors import MjcfValueError
+from mjcf_model.queries import find
+from mjcf_model.traversal import Path, with_children
+from serializers import from_etree
+
+__all__ = ["ModelBacked", "as_node"]
+
+
+def as_node(value: object) -> AnyElement:
+    """A node from a node or an ElementTree element (as robosuite subclasses hand them over).
+
+    Example:
+        >>> as_node(ET.fromstring('<geom size="1"/>')).attributes["size"]
+        '1'
+
+    """
+    if isinstance(value, (TypedElement, GenericElement)):
+        return value
+    if isinstance(value, ET.Element):
+        node = from_etree(value, typed=False)
+        assert isinstance(node, (TypedElement, GenericElement))
+        return node
+    raise MjcfValueError(f"expected a node or an ElementTree element, found {value!r}")
+
+
+class ModelBacked:
+    """An immutable document node, named places in it, and its ElementTree view."""
+
+    _view: EtreeView
+    _paths: dict[str, Path]
+
+    def _init_document(self, document: AnyElement, paths: dict[str, Path]) -> None:
+        self._view = EtreeView(document)
+        self._paths = dict(paths)
+
+    @property
+    def mjcf(self) -> AnyElement:
+        """The whole state: an immutable ``<mujoco>`` node (the library's own model)."""
+        return self._view.node
+
+    def _set_mjcf(self, document: AnyElement) -> None:
+        self._view.update(document)
+
+    def _node(self, place: str) -> AnyElement:
+        return subtree_at(self.mjcf, self._paths[place])
+
+    def _replace(self, place: str, new: AnyElement) -> None:
+        self._set_mjcf(replaced_at(self.mjcf, self._paths[place], new))
+
+    def _change(self, place: str, change: Callable[[AnyElement], AnyElement]) -> None:
+        self._replace(place, change(self._node(place)))
+
+    def _live(self, place: str) -> ET.Element:
+        return self._view.at(self._paths[place])
+
+    @property
+    def asset(self) -> ET.Element:
+        """The ``<asset>`` ElementTree element (live: the same object until the object is gone)."""
+        return self._live("asset")
+
+    def merge_assets(self, other: Any) -> None:
+        """Append ``other``'s assets whose tag and name this asset section lacks.
+
+        ``other`` is any object with an ``asset`` element (this library's or
+        robosuite's). Its assets are copied into this object's model; robosuite
+        appends the very elements, shared between both trees.
+        """
+        if isinstance(other, ModelBacked):
+            theirs = list(other._node("asset").elements)
+        else:
+            theirs = [as_node(child) for child in other.asset]
+        mine = self._node("asset")
+        added: list[AnyElement] = []
+        for item in theirs:
+            name = attribute(item, "name")
+            if find(mine, item.tag, name=name) is None and all(
+                find(a, item.tag, name=name) is None for a in added
+            ):
+                added.append(item)
+        if added:
+            self._replace("asset", with_children(mine, [*mine.children, *added]))

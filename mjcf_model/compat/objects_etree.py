@@ -1,0 +1,241 @@
+"""The ElementTree face of an immutable model: built once, then patched in place.
+
+robosuite's pipeline appends and edits the elements an object hands out
+(``task.worldbody.append(obj.get_obj())``, ``obj.get_obj().set("pos", ...)``),
+and expects later changes made through the object (``set_pos``, ``set_scale``)
+to show in the elements it already holds, as they do in robosuite, where the
+object *is* its ElementTree. A fresh tree per call would break both.
+
+:class:`EtreeView` keeps one ElementTree for one model. When the model is
+replaced by a changed copy, :meth:`EtreeView.update` walks the old and new
+nodes side by side and touches only what differs: subtrees shared by identity
+(the pure transforms share every unchanged subtree) are skipped, changed
+attributes are set or removed on the existing elements (``set`` keeps an
+attribute's position, as robosuite's edits do), and children are rebuilt only
+where the children changed. Elements already handed out stay the live ones;
+edits other code made to them are kept unless the model changes that very
+attribute. The model stays the truth: such edits are not read back.
+
+>>> from mjcf_model import GenericElement
+>>> body = GenericElement(tag="body", attributes={"name": "b"})
+>>> view = EtreeView(body)
+>>> handed_out = view.element
+>>> view.update(GenericElement(tag="body", attributes={"name": "b", "pos": "0 0 1"}))
+>>> view.element is handed_out, ET.tostring(handed_out, encoding="unicode")
+(True, '<body name="b" pos="0 0 1" />')
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+from mjcf_model.base import AnyElement, Comment, GenericElement, Node, TypedElement
+from mjcf_model.traversal import Path, with_children
+from serializers import from_etree
+from serializers.writer import attribute_texts
+
+__all__ = ["EtreeView", "replaced_at", "subtree_at"]
+
+
+def subtree_at(node: AnyElement, path: Path) -> AnyElement:
+    """The element at ``path`` (child indexes from ``node`` down).
+
+    Example:
+        >>> from mjcf_model import GenericElement
+        >>> leaf = GenericElement(tag="geom")
+        >>> subtree_at(GenericElement(tag="body", children=[leaf]), (0,)) is leaf
+        True
+
+    """
+    current = node
+    for index in path:
+        child = current.children[index]
+        assert isinstance(child, (TypedElement, GenericElement))
+        current = child
+    return current
+
+
+def replaced_at(node: AnyElement, path: Path, new: AnyElement) -> AnyElement:
+    """A copy of ``node`` with the element at ``path`` replaced by ``new``; the rest is shared.
+
+    Example:
+        >>> from mjcf_model import GenericElement
+        >>> body = GenericElement(tag="body", children=[GenericElement(tag="geom")])
+        >>> replaced_at(body, (0,), GenericElement(tag="site")).children[0].tag
+        'site'
+
+    """
+    if not path:
+        return new
+    children = list(node.children)
+    child = children[path[0]]
+    assert isinstance(child, (TypedElement, GenericElement))
+    children[path[0]] = replaced_at(child, path[1:], new)
+    return with_children(node, children)
+
+
+class EtreeView:
+    """One ElementTree kept in step with a model that is replaced, never mutated.
+
+    Args:
+        node: The model.
+        element: An existing ElementTree element that already shows ``node``
+            (see :meth:`adopt`); by default a new one is built.
+
+    """
+
+    def __init__(self, node: AnyElement, element: ET.Element | None = None) -> None:
+        self._node = node
+        #: The elements built for each element's children, in model order.
+        self._kids: dict[ET.Element, list[ET.Element]] = {}
+        self._element = self._build(node) if element is None else self._record(node, element)
+
+    @classmethod
+    def adopt(cls, element: ET.Element) -> EtreeView:
+        """A view over an ElementTree someone else built; :meth:`update` then edits it in place.
+
+        Example:
+            >>> foreign = ET.fromstring('<body><geom size="1"/></body>')
+            >>> view = EtreeView.adopt(foreign)
+            >>> view.node.children[0].attributes["size"], view.element is foreign
+            ('1', True)
+
+        """
+        node = from_etree(element, typed=False)
+        assert isinstance(node, (TypedElement, GenericElement))
+        return cls(node, element)
+
+    @property
+    def node(self) -> AnyElement:
+        """The model the ElementTree currently shows."""
+        return self._node
+
+    @property
+    def element(self) -> ET.Element:
+        """The root ElementTree element (the same object for the view's whole life)."""
+        return self._element
+
+    def at(self, path: Path) -> ET.Element:
+        """The element built for the model element at ``path``.
+
+        Example:
+            >>> from mjcf_model import GenericElement
+            >>> view = EtreeView(GenericElement(tag="a", children=[GenericElement(tag="b")]))
+            >>> view.at((0,)).tag
+            'b'
+
+        """
+        element = self._element
+        for index in path:
+            element = self._kids[element][index]
+        return element
+
+    def update(self, node: AnyElement) -> None:
+        """Make the ElementTree show ``node``, editing the existing elements in place."""
+        if node is not self._node:
+            self._patch(self._node, node, self._element)
+            self._node = node
+
+    # -- building -----------------------------------------------------------------
+
+    def _build(self, node: Node) -> ET.Element:
+        if isinstance(node, Comment):
+            comment: ET.Element = ET.Comment(node.text)  # type: ignore[assignment]
+            return comment
+        assert isinstance(node, (TypedElement, GenericElement))
+        element = ET.Element(node.tag, dict(attribute_texts(node)))
+        element.text = node.text
+        kids = [self._build(child) for child in node.children]
+        element.extend(kids)
+        self._kids[element] = kids
+        return element
+
+    def _record(self, node: AnyElement, element: ET.Element) -> ET.Element:
+        kids = list(element)
+        self._kids[element] = kids
+        for child, kid in zip(node.children, kids, strict=True):
+            if isinstance(child, (TypedElement, GenericElement)):
+                self._record(child, kid)
+        return element
+
+    def _forget(self, element: ET.Element) -> None:
+        for kid in self._kids.pop(element, []):
+            self._forget(kid)
+
+    # -- patching -----------------------------------------------------------------
+
+    def _patch(self, old: AnyElement, new: AnyElement, element: ET.Element) -> None:
+        if old is new:
+            return
+        before = attribute_texts(old)
+        after = attribute_texts(new)
+        if before != after:
+            _patch_attributes(element, dict(before), after)
+        if old.text != new.text:
+            element.text = new.text
+        if old.children is not new.children:
+            self._patch_children(old, new, element)
+
+    def _patch_children(self, old: AnyElement, new: AnyElement, element: ET.Element) -> None:
+        kids = self._kids[element]
+        pairs = list(zip(old.children, new.children, strict=False))
+        if len(old.children) == len(new.children) and all(
+            _same_tag(a, b) for a, b in pairs
+        ):  # the same elements, some of them changed
+            for (a, b), kid in zip(pairs, kids, strict=True):
+                if a is not b and isinstance(a, (TypedElement, GenericElement)):
+                    assert isinstance(b, (TypedElement, GenericElement))
+                    self._patch(a, b, kid)
+            return
+        # Elements came or went: keep the elements of unchanged children, build the others.
+        by_identity = {id(child): index for index, child in enumerate(old.children)}
+        used: set[int] = set()
+        new_kids: list[ET.Element] = []
+        for child in new.children:
+            index = by_identity.get(id(child))
+            if index is not None and index not in used:
+                used.add(index)
+                new_kids.append(kids[index])
+            else:
+                new_kids.append(self._build(child))
+        dropped = [kid for index, kid in enumerate(kids) if index not in used]
+        live = list(element)
+        if len(live) == len(kids) and all(a is b for a, b in zip(live, kids, strict=True)):
+            element[:] = new_kids
+        else:  # someone else edited the children: keep their edits, apply ours
+            kept = {id(kid) for kid in kids}
+            for kid in dropped:
+                if any(kid is e for e in live):
+                    element.remove(kid)
+            for kid in new_kids:
+                if id(kid) not in kept:
+                    element.append(kid)
+        for kid in dropped:
+            self._forget(kid)
+        self._kids[element] = new_kids
+
+
+def _same_tag(a: Node, b: Node) -> bool:
+    if isinstance(a, Comment) or isinstance(b, Comment):
+        return isinstance(a, Comment) and isinstance(b, Comment)
+    assert isinstance(a, (TypedElement, GenericElement))
+    assert isinstance(b, (TypedElement, GenericElement))
+    return a.tag == b.tag
+
+
+def _patch_attributes(element: ET.Element, old: dict[str, str], new: list[tuple[str, str]]) -> None:
+    """Set what changed, remove what went; attributes other code added stay, at the end."""
+    new_values = dict(new)
+    for name in old:
+        if name not in new_values:
+            element.attrib.pop(name, None)
+    for name, text in new:
+        if old.get(name) != text:
+            element.set(name, text)
+    order = [name for name in element.attrib if name in new_values]
+    if order != [name for name, _ in new]:
+        foreign = {k: v for k, v in element.attrib.items() if k not in new_values}
+        mine = {name: element.attrib[name] for name, _ in new}
+        element.attrib.clear()
+        element.attrib.update(mine)
+        element.attrib.update(foreign)

@@ -1,0 +1,221 @@
+"""The XML objects robosuite ships (can, milk, nuts, door...), read from robosuite's own files.
+
+The files are found without importing robosuite
+(``importlib.util.find_spec("robosuite")``); without robosuite installed the
+classes raise :class:`~mjcf_model.MjcfLookupError`.
+
+>>> can = CanObject("can")
+>>> can.joints, can.contact_geoms, float(can.horizontal_radius)
+(['can_joint0'], ['can_g0'], 0.025)
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any
+
+import numpy as np
+
+from mjcf_model.compat.objects_etree import replaced_at
+from mjcf_model.compat.objects_quirks import attribute, with_texts
+from mjcf_model.compat.objects_xml import MujocoXMLObject
+from mjcf_model.compat.utils_text import array_to_string, assets_root
+from mjcf_model.errors import MjcfLookupError
+from mjcf_model.traversal import walk
+
+__all__ = [
+    "BottleObject",
+    "BreadObject",
+    "BreadVisualObject",
+    "CanObject",
+    "CanVisualObject",
+    "CerealObject",
+    "CerealVisualObject",
+    "DoorObject",
+    "LemonObject",
+    "MilkObject",
+    "MilkVisualObject",
+    "PlateWithHoleObject",
+    "RoundNutObject",
+    "SquareNutObject",
+    "robosuite_asset",
+]
+
+_DAMPED_FREE_JOINT = {"type": "free", "damping": "0.0005"}
+
+
+def robosuite_asset(relative: str) -> str:
+    """The absolute path of a file in robosuite's ``models/assets`` directory.
+
+    Raises:
+        MjcfLookupError: robosuite is not installed.
+
+    Example:
+        >>> robosuite_asset("objects/can.xml").endswith("robosuite/models/assets/objects/can.xml")
+        True
+
+    """
+    missing = (
+        f"robosuite's object {relative!r} is a file shipped with robosuite, which is not "
+        "installed; install robosuite or load your own file with MujocoXMLObject"
+    )
+    return os.path.join(assets_root(missing), relative)
+
+
+class _Shipped(MujocoXMLObject):
+    """An object of robosuite's assets: a file, joints, geom kinds.
+
+    A subclass names its file as a class argument, ``class CanObject(_Shipped,
+    file="objects/can.xml")``; its robosuite twin is the class of the same name
+    in ``robosuite.models.objects``.
+    """
+
+    _file = ""
+    _joints: Any = "damped"
+    _obj_type = "all"
+
+    def __init_subclass__(cls, file: str | None = None, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        if file is not None:
+            cls._file = file
+            cls._robosuite_class = ("robosuite.models.objects", cls.__name__)
+
+    def __init__(self, name: str) -> None:
+        joints = [dict(_DAMPED_FREE_JOINT)] if self._joints == "damped" else self._joints
+        super().__init__(
+            robosuite_asset(self._file),
+            name=name,
+            joints=joints,
+            obj_type=self._obj_type,
+            duplicate_collision_geoms=True,
+        )
+
+
+class _WithHandle(_Shipped):
+    """A nut: its handle site is important too."""
+
+    @property
+    def important_sites(self) -> dict[str, Any]:
+        """``obj`` and ``handle`` (the ``handle_site``)."""
+        sites = super().important_sites
+        sites["handle"] = self.naming_prefix + "handle_site"
+        return sites
+
+
+class _Visual(_Shipped):
+    """A visual fiducial: visual geoms only, no joints."""
+
+    _joints = None
+    _obj_type = "visual"
+
+
+class BottleObject(_Shipped, file="objects/bottle.xml"):
+    """robosuite's bottle (``objects/bottle.xml``)."""
+
+
+class CanObject(_Shipped, file="objects/can.xml"):
+    """robosuite's coke can (``objects/can.xml``), used in PickPlace."""
+
+
+class LemonObject(_Shipped, file="objects/lemon.xml"):
+    """robosuite's lemon (``objects/lemon.xml``), with an undamped free joint."""
+
+    _joints = "default"
+
+
+class MilkObject(_Shipped, file="objects/milk.xml"):
+    """robosuite's milk carton (``objects/milk.xml``)."""
+
+
+class BreadObject(_Shipped, file="objects/bread.xml"):
+    """robosuite's bread loaf (``objects/bread.xml``)."""
+
+
+class CerealObject(_Shipped, file="objects/cereal.xml"):
+    """robosuite's cereal box (``objects/cereal.xml``)."""
+
+
+class SquareNutObject(_WithHandle, file="objects/square-nut.xml"):
+    """robosuite's square nut (``objects/square-nut.xml``), used in NutAssembly."""
+
+
+class RoundNutObject(_WithHandle, file="objects/round-nut.xml"):
+    """robosuite's round nut (``objects/round-nut.xml``), used in NutAssembly."""
+
+
+class MilkVisualObject(_Visual, file="objects/milk-visual.xml"):
+    """Visual fiducial of the milk carton (``objects/milk-visual.xml``)."""
+
+
+class BreadVisualObject(_Visual, file="objects/bread-visual.xml"):
+    """Visual fiducial of the bread loaf (``objects/bread-visual.xml``)."""
+
+
+class CerealVisualObject(_Visual, file="objects/cereal-visual.xml"):
+    """Visual fiducial of the cereal box (``objects/cereal-visual.xml``)."""
+
+
+class CanVisualObject(_Visual, file="objects/can-visual.xml"):
+    """Visual fiducial of the coke can (``objects/can-visual.xml``)."""
+
+
+class PlateWithHoleObject(_Shipped, file="objects/plate-with-hole.xml"):
+    """Square plate with a hole (``objects/plate-with-hole.xml``), used in PegInHole."""
+
+    _joints = None
+
+
+class DoorObject(MujocoXMLObject):
+    """robosuite's door with a handle (``objects/door.xml``, ``door_lock.xml`` with ``lock``).
+
+    Args:
+        name: Name of the object.
+        friction: Replaces the hinge's ``frictionloss``.
+        damping: Replaces the hinge's ``damping``.
+        lock: Use the door with a latch lock.
+
+    """
+
+    _robosuite_class = ("robosuite.models.objects", "DoorObject")
+
+    def __init__(
+        self, name: str, friction: Any = None, damping: Any = None, lock: bool = False
+    ) -> None:
+        file = "objects/door_lock.xml" if lock else "objects/door.xml"
+        super().__init__(
+            robosuite_asset(file),
+            name=name,
+            joints=None,
+            obj_type="all",
+            duplicate_collision_geoms=True,
+        )
+        self.door_body = self.naming_prefix + "door"
+        self.frame_body = self.naming_prefix + "frame"
+        self.latch_body = self.naming_prefix + "latch"
+        self.hinge_joint = self.naming_prefix + "hinge"
+        self.lock = lock
+        self.friction = friction
+        self.damping = damping
+        if friction is not None:
+            self._set_hinge("frictionloss", friction)
+        if damping is not None:
+            self._set_hinge("damping", damping)
+
+    def _set_hinge(self, attribute_name: str, value: Any) -> None:
+        """Write ``value`` (as robosuite writes ``np.array([value])``) on the hinge joint."""
+        text = array_to_string(np.array([value]))
+        world = self._node("worldbody")
+        for path, element in walk(world):
+            if element.tag == "joint" and attribute(element, "name") == self.hinge_joint:
+                place = (*self._paths["worldbody"], *path)
+                changed = with_texts(element, {attribute_name: text})
+                self._set_mjcf(replaced_at(self.mjcf, place, changed))
+                return
+        raise MjcfLookupError(f"no joint {self.hinge_joint!r} in {self.file}")
+
+    @property
+    def important_sites(self) -> dict[str, Any]:
+        """``obj`` and ``handle`` (the door handle site)."""
+        sites = super().important_sites
+        sites["handle"] = self.naming_prefix + "handle"
+        return sites

@@ -1,0 +1,134 @@
+"""Shared checks for the differential tests of ``mjcf_model.compat.objects`` against robosuite.
+
+Trees are compared as tag, attributes (name and text, in order) and children,
+white space text and tails ignored, and as ``ET.tostring`` bytes after white
+space is stripped.
+"""
+
+from __future__ import annotations
+
+import copy
+import types
+import xml.etree.ElementTree as ET
+from typing import Any
+
+import mujoco
+import numpy as np
+
+from serializers import to_etree
+
+#: The properties every object answers, compared one by one.
+PROPERTIES = (
+    "name",
+    "naming_prefix",
+    "root_body",
+    "bodies",
+    "joints",
+    "actuators",
+    "sites",
+    "sensors",
+    "contact_geoms",
+    "visual_geoms",
+    "important_geoms",
+    "important_sites",
+    "important_sensors",
+    "bottom_offset",
+    "top_offset",
+    "horizontal_radius",
+)
+
+
+def stripped(element: ET.Element) -> ET.Element:
+    """A copy of ``element`` without white-space-only text and tails."""
+    element = copy.deepcopy(element)
+    for item in element.iter():
+        if item.text is not None and not item.text.strip():
+            item.text = None
+        if item.tail is not None and not item.tail.strip():
+            item.tail = None
+    return element
+
+
+def text_of(element: ET.Element) -> str:
+    """``ET.tostring`` of ``element`` with white space stripped."""
+    return ET.tostring(stripped(element), encoding="unicode")
+
+
+def tree(element: ET.Element) -> tuple[Any, ...]:
+    """Tag, ordered attributes, stripped text and children, recursively."""
+    text = element.text.strip() if element.text and element.text.strip() else None
+    return (element.tag, list(element.attrib.items()), text, [tree(c) for c in element])
+
+
+def assert_same_tree(ours: ET.Element, theirs: ET.Element) -> None:
+    """The two trees are equal as trees and as stripped text."""
+    assert text_of(ours) == text_of(theirs)
+    assert tree(ours) == tree(theirs)
+
+
+def assert_same_value(ours: Any, theirs: Any, label: str) -> None:
+    """Equal values: arrays element by element with the same dtype kind, others with ``==``."""
+    if isinstance(theirs, np.ndarray) or isinstance(ours, np.ndarray):
+        assert isinstance(ours, np.ndarray), label
+        np.testing.assert_array_equal(ours, theirs, err_msg=label)
+        assert ours.dtype.kind == np.asarray(theirs).dtype.kind, label
+    else:
+        assert ours == theirs, label
+        assert type(ours) is type(theirs), label
+
+
+def assert_view_matches_model(ours: Any) -> None:
+    """The live ElementTree shows exactly the immutable model."""
+    assert ET.tostring(ours._view.element) == ET.tostring(to_etree(ours.mjcf))
+
+
+def assert_same_object(ours: Any, theirs: Any, *, asset: bool = True) -> None:
+    """Same body, assets, document and every property as robosuite's object."""
+    assert_same_tree(ours.get_obj(), theirs.get_obj())
+    if asset:
+        assert_same_tree(ours.asset, theirs.asset)
+    if hasattr(theirs, "get_xml"):
+        assert_same_tree(ours.root, theirs.root)
+        assert [c.tag for c in ours.root] == [c.tag for c in theirs.root]
+        assert ours.get_obj() is ours.root.find("./worldbody/body/body")
+    for name in PROPERTIES:
+        assert_same_value(getattr(ours, name), getattr(theirs, name), name)
+    assert_same_value(ours.get_bounding_box_half_size(), theirs.get_bounding_box_half_size(), "bb")
+    assert_same_value(ours.get_bounding_box_size(), theirs.get_bounding_box_size(), "bbox")
+    for template in ("get_site_attrib_template", "get_joint_attrib_template"):
+        assert getattr(ours, template)() == getattr(theirs, template)()
+    assert ours.get_obj() is ours.get_obj()
+    assert_view_matches_model(ours)
+
+
+def mujoco4_shims(monkeypatch: Any) -> None:
+    """Let robosuite 1.5.2's environments run on MuJoCo 4.0.0 (unrelated to this library).
+
+    robosuite 1.5.2 calls ``mj_fullM(m, dst, d.qM)`` (MuJoCo 4 takes
+    ``(m, d, dst)`` and has no ``qM``) and tests ``jnt_type in (mjtJoint...)``,
+    which MuJoCo 4's enums fail for numpy integers; both break ``robosuite.make``
+    before any object is involved.
+    """
+    import robosuite.controllers.parts.controller as controller
+    import robosuite.utils.binding_utils as binding
+
+    class _Joints(types.SimpleNamespace):
+        pass
+
+    class _BindingMujoco:
+        mjtJoint = _Joints(mjJNT_FREE=0, mjJNT_BALL=1, mjJNT_SLIDE=2, mjJNT_HINGE=3)
+
+        def __getattr__(self, name: str) -> Any:
+            return getattr(mujoco, name)
+
+    class _ControllerMujoco:
+        @staticmethod
+        def mj_fullM(model: Any, dst: Any, data: Any) -> None:
+            mujoco.mj_fullM(model, data, dst)
+
+        def __getattr__(self, name: str) -> Any:
+            return getattr(mujoco, name)
+
+    monkeypatch.setattr(binding, "mujoco", _BindingMujoco())
+    monkeypatch.setattr(controller, "mujoco", _ControllerMujoco())
+    monkeypatch.setattr(binding.MjData, "qM", property(lambda self: self._data), raising=False)
