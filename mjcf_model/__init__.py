@@ -30,7 +30,7 @@ from mjcf_model.builders import (
     new_joint,
     new_site,
 )
-from mjcf_model.composition import attach
+from mjcf_model.composition import attach, attach_all
 from mjcf_model.errors import *  # noqa: F403  (every error class; listed in errors.__all__)
 from mjcf_model.materials import CustomMaterial, recolored_collision_geoms, with_material
 from mjcf_model.naming import declared_names, prefix_map, prefixed, renamed
@@ -49,6 +49,7 @@ __all__ = [
     "Node",
     "TypedElement",
     "attach",
+    "attach_all",
     "attribute_items",
     "categorized",
     "declared_names",

@@ -11,7 +11,7 @@ import pytest
 
 from mjcf_model import Mujoco
 from mjcf_model.compare import compile_text_beside, compiled_names
-from mjcf_model.composition import attach
+from mjcf_model.composition import attach, attach_all
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from serializers import dumps, load, loads
 from serializers.skins import inline_skin_files
@@ -134,3 +134,33 @@ def test_inputs_are_unchanged_and_includes_refused() -> None:
     assert dumps(parent) == text
     with pytest.raises(MjcfValueError, match="inline_includes"):
         attach(parent, loads('<mujoco><include file="x.xml"/></mujoco>'))
+
+
+def test_parent_keyframes_stay_when_the_child_has_none() -> None:
+    """A child without keys leaves the parent's keys as they were."""
+    parent = loads(
+        '<mujoco><worldbody><body><joint type="slide"/><geom size="0.1"/></body></worldbody>'
+        '<keyframe><key name="p" qpos="0.5"/></keyframe></mujoco>'
+    )
+    child = loads(
+        '<mujoco><worldbody><body name="c"><geom size="0.1"/></body></worldbody></mujoco>'
+    )
+    compiled = mujoco.MjModel.from_xml_string(dumps(attach(parent, child)))
+    assert compiled.nkey == 1 and np.allclose(compiled.key("p").qpos, [0.5])
+
+
+def test_attach_all_equals_attaching_one_by_one() -> None:
+    """``attach_all`` equals repeated ``attach``, and checks compilers across its children."""
+    cup = loads(
+        '<mujoco><default><geom rgba="1 0 0 1"/></default><asset><material name="m"/></asset>'
+        '<worldbody><body name="cup"><geom size="0.1" material="m"/></body></worldbody></mujoco>'
+    )
+    pairs = [(cup, f"c{i}_") for i in range(4)]
+    one_by_one = loads(EMPTY)
+    for child, prefix in pairs:
+        one_by_one = attach(one_by_one, child, prefix=prefix)
+    assert attach_all(loads(EMPTY), pairs) == one_by_one
+    radians = loads('<mujoco><compiler angle="radian"/></mujoco>')
+    degrees = loads('<mujoco><compiler angle="degree"/></mujoco>')
+    with pytest.raises(MjcfValueError, match="compiler"):
+        attach_all(loads(EMPTY), [(radians, ""), (degrees, "")])
