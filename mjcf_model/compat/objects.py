@@ -66,8 +66,10 @@ And where robosuite has a side effect this library avoids: the
 colour, not a PNG written to ``<tempdir>/robosuite_temp_tex/tex.png`` (one
 file shared by every object, so all showed the last colour). Further:
 ``merge``/``merge_assets`` copy the other model's elements (robosuite shares
-the element objects); white space text of the file is not kept (``get_xml()``
-equals robosuite's once white space is stripped); an element-level
+the element objects), and ``CompositeBodyObject`` leaves its children as they
+were (robosuite strips, moves and renames their elements in place); white
+space text of the file is not kept (``get_xml()`` equals robosuite's once
+white space is stripped); an element-level
 ``exclude_from_prefixing`` is consulted with names only; robosuite's
 ``macros.USING_INSTANCE_RANDOMIZATION`` (off by default) is not consulted.
 
@@ -87,6 +89,7 @@ from mjcf_model.compat.objects_base import (
     MujocoObject,
 )
 from mjcf_model.compat.objects_composite import CompositeObject
+from mjcf_model.compat.objects_composite_body import CompositeBodyObject, HingedBoxObject
 from mjcf_model.compat.objects_generated import MujocoGeneratedObject, PrimitiveObject
 from mjcf_model.compat.objects_model import MujocoXMLModel
 from mjcf_model.compat.objects_primitives import (
@@ -126,9 +129,11 @@ __all__ = [
     "CapsuleObject",
     "CerealObject",
     "CerealVisualObject",
+    "CompositeBodyObject",
     "CompositeObject",
     "CylinderObject",
     "DoorObject",
+    "HingedBoxObject",
     "LemonObject",
     "MilkObject",
     "MilkVisualObject",

@@ -1,0 +1,360 @@
+"""``CompositeBodyObject`` and ``HingedBoxObject``: robosuite's objects made of objects' bodies.
+
+A composite body object is a ``root`` body holding the bodies of other objects
+(each placed with a position and a quaternion under the root or under a body
+placed before it), their assets, and joints of its own. The children's bodies
+are taken from their models (robosuite's objects may be children too, read
+from their ``get_obj()``); the children themselves are not changed.
+
+>>> lid = BoxObject("lid", size=[0.05, 0.05, 0.01])
+>>> crate = CompositeBodyObject(
+...     "crate", objects=[BoxObject("base", size=[0.05, 0.05, 0.04]), lid],
+...     object_locations=[[0, 0, 0], [0, 0, 0.05]], object_parents=[None, "base_main"],
+...     body_joints={"lid_main": [{"type": "slide", "axis": "0 0 1"}]})
+>>> crate.bodies, crate.joints
+(['crate_root', 'crate_base_main', 'crate_lid_main'], ['crate_joint0', 'crate_lid_main_joint0'])
+>>> crate.top_offset.tolist(), lid.joints
+([0.0, 0.0, 0.060000000000000005], ['lid_joint0'])
+"""
+
+from __future__ import annotations
+
+from copy import deepcopy
+from typing import Any
+
+import numpy as np
+
+from mjcf_model.base import AnyElement, GenericElement, TypedElement
+from mjcf_model.compat.objects_base import MujocoObject, Vector
+from mjcf_model.compat.objects_composite import _name_unnamed as name_unnamed
+from mjcf_model.compat.objects_document import as_node
+from mjcf_model.compat.objects_etree import replaced_at, subtree_at
+from mjcf_model.compat.objects_generated import MujocoGeneratedObject
+from mjcf_model.compat.objects_primitives import BoxObject, CylinderObject
+from mjcf_model.compat.objects_quirks import (
+    attribute,
+    robosuite_prefixed,
+    rs_body,
+    rs_joint,
+    rs_site,
+    with_texts,
+)
+from mjcf_model.compat.utils_constants import BLUE, RED
+from mjcf_model.compat.utils_text import array_to_string
+from mjcf_model.errors import MjcfLookupError, MjcfValueError
+from mjcf_model.materials import CustomMaterial
+from mjcf_model.traversal import Path, walk, with_children
+
+__all__ = ["CompositeBodyObject", "HingedBoxObject"]
+
+
+def _body_path(tree: AnyElement, name: str) -> Path | None:
+    """The path of the first body named ``name``, parents first (robosuite's ``find_elements``)."""
+    for path, element in walk(tree):
+        if element.tag == "body" and attribute(element, "name") == name:
+            return path
+    return None
+
+
+def _without_joints(body: AnyElement) -> AnyElement:
+    """``body`` without its direct ``<joint>`` children (inner bodies keep theirs)."""
+    kept = [
+        c
+        for c in body.children
+        if not (isinstance(c, (TypedElement, GenericElement)) and c.tag == "joint")
+    ]
+    return with_children(body, kept)
+
+
+class CompositeBodyObject(MujocoGeneratedObject):
+    """robosuite's ``CompositeBodyObject``: other objects' bodies under one ``root`` body.
+
+    Args:
+        name: Name of the object.
+        objects: One object or a list (tuple) of them, added in order, so a
+            child comes after the object whose body it is placed in. Their
+            direct joints are dropped.
+        object_locations: Each child's position relative to its parent body
+            (``None``: the origin).
+        object_quats: Each child's quaternion, ``w x y z`` (``None``: identity).
+        object_parents: The body each child goes into (``None``: ``"root"``),
+            by its name before this object's prefix (a child's ``root_body``).
+        joints: ``"default"`` (a free joint), ``None`` or joint attribute dicts
+            for the root body; unnamed ones are named ``joint<k>``, counting
+            the unnamed only.
+        body_joints: Body name to ``"default"`` or joint attribute dicts added
+            to that body; unnamed ones are named ``<body>_joint<i>`` (written
+            into the caller's dicts, as robosuite does).
+        sites: Site attribute dicts for the root body (unnamed: ``site<k>``),
+            before the hidden ``default_site``.
+        total_size: Half-size of the bounding box, if known.
+        locations_relative_to_corner: Locations are of each child's lower
+            corner (from its bounding box) relative to the lower corner of
+            the ``total_size`` box.
+
+    Raises:
+        MjcfValueError: ``objects`` is not an object or a list of them, or
+            ``locations_relative_to_corner`` without ``total_size``
+            (robosuite asserts).
+        MjcfLookupError: a parent or ``body_joints`` body does not exist
+            (robosuite asserts), or a parent is not the root body of an
+            earlier child (robosuite: ``KeyError`` too).
+
+    Offsets are robosuite's bookkeeping: the top and bottom are the extremes
+    of the children's top and bottom offsets at their positions relative to
+    the root. The horizontal radius reproduces robosuite's quirk on purpose:
+    it is the largest ``max(x, y) + child radius`` over the children, the
+    larger *coordinate* of the child's position rather than its distance
+    from the root (so a child at ``(-0.1, -0.1)`` counts as nearer than one
+    at the origin).
+
+    Unlike robosuite, the children are left as they were: robosuite strips
+    their joints, moves them and prefixes their names and assets in place,
+    since their very elements become part of the composite.
+
+    """
+
+    _robosuite_class = ("robosuite.models.objects", "CompositeBodyObject")
+
+    def __init__(
+        self,
+        name: str,
+        objects: Any,
+        object_locations: Any,
+        object_quats: Any = None,
+        object_parents: Any = None,
+        joints: Any = "default",
+        body_joints: Any = None,
+        sites: Any = None,
+        total_size: Any = None,
+        locations_relative_to_corner: bool = False,
+    ) -> None:
+        super().__init__()
+        self._name = name
+        self._object_absolute_positions: dict[str, Vector] = {"root": np.zeros(3)}
+        self._top: Any = 0
+        self._bottom: Any = 0
+        self._horizontal: Any = 0
+        if type(objects) in {list, tuple}:
+            self.objects: list[Any] = list(objects)
+        elif callable(getattr(objects, "get_obj", None)):
+            self.objects = [objects]
+        else:
+            raise MjcfValueError(f"Invalid objects received, got type: {type(objects)}")
+        count = len(self.objects)
+        self.object_locations = np.array(object_locations)
+        self.object_quats = deepcopy(object_quats) if object_quats is not None else [None] * count
+        self.object_parents = (
+            deepcopy(object_parents) if object_parents is not None else ["root"] * count
+        )
+        if isinstance(joints, str) and joints == "default":
+            self.joint_specs: list[dict[str, Any]] = [self.get_joint_attrib_template()]
+        else:
+            self.joint_specs = [] if joints is None else joints
+        self.body_joint_specs: dict[Any, Any] = {} if body_joints is None else body_joints
+        name_unnamed(self.joint_specs, "joint")
+        self.site_specs: list[dict[str, Any]] = deepcopy(sites) if sites is not None else []
+        self.site_specs.append(self._default_site(hidden=True))
+        name_unnamed(self.site_specs, "site")
+        self.total_size = np.array(total_size) if total_size is not None else None
+        self.locations_relative_to_corner = locations_relative_to_corner
+        if self.locations_relative_to_corner and self.total_size is None:
+            raise MjcfValueError("locations_relative_to_corner needs total_size")
+        self.sanity_check()
+        self._obj = self._get_object_subtree()
+        self._get_object_properties()
+
+    def _get_object_subtree(self) -> AnyElement:
+        children: list[AnyElement] = [rs_joint(**spec) for spec in self.joint_specs]
+        children.extend(rs_site(**spec) for spec in self.site_specs)
+        tree: AnyElement = with_children(rs_body(name="root"), children)
+        rows = zip(
+            self.objects,
+            self.object_parents,
+            self.object_locations,
+            self.object_quats,
+            strict=False,
+        )
+        for obj, parent, pos, quat in rows:
+            tree = self._append_object(tree, obj, parent_name=parent, pos=pos, quat=quat)
+        for body_name, specs in self.body_joint_specs.items():
+            tree = self._append_joints(tree, body_name=body_name, joint_specs=specs)
+        return tree
+
+    def _get_object_properties(self) -> None:
+        """Record and prefix the names of the body, then prefix the assets' names too."""
+        super()._get_object_properties()
+        self._change(
+            "asset", lambda asset: robosuite_prefixed(asset, self.naming_prefix, self._excluded)
+        )
+
+    def _append_object(
+        self,
+        root: AnyElement,
+        obj: Any,
+        parent_name: Any = None,
+        pos: Any = None,
+        quat: Any = None,
+    ) -> AnyElement:
+        """``root`` with ``obj``'s body (joints dropped) placed in the body ``parent_name``.
+
+        ``obj``'s assets are merged into this object's, and the offsets are
+        updated with the child's.
+        """
+        parent_name = "root" if parent_name is None else parent_name
+        pos = np.zeros(3) if pos is None else pos
+        quat = np.array([1, 0, 0, 0]) if quat is None else quat
+        path = _body_path(root, parent_name)
+        if path is None:
+            raise MjcfLookupError(f"Could not find parent body with name: {parent_name}")
+        if parent_name not in self._object_absolute_positions:
+            raise MjcfLookupError(
+                f"parent {parent_name!r} is not the root body of an earlier object; known: "
+                f"{list(self._object_absolute_positions)}"
+            )
+        body = obj.obj_node if isinstance(obj, MujocoObject) else as_node(obj.get_obj())
+        if self.locations_relative_to_corner:
+            assert self.total_size is not None
+            half = obj.get_bounding_box_half_size()
+            pos = [(-self.total_size[k] + half[k]) + pos[k] for k in range(3)]
+        placed = with_texts(
+            _without_joints(body), {"pos": array_to_string(pos), "quat": array_to_string(quat)}
+        )
+        self.merge_assets(other=obj)
+        parent = subtree_at(root, path)
+        root = replaced_at(root, path, with_children(parent, [*parent.children, placed]))
+        absolute = self._object_absolute_positions[parent_name] + np.array(pos)
+        self._object_absolute_positions[obj.root_body] = absolute
+        self._top = max(self._top, absolute[2] + obj.top_offset[2])
+        self._bottom = min(self._bottom, absolute[2] + obj.bottom_offset[2])
+        self._horizontal = max(self._horizontal, max(absolute[:2]) + obj.horizontal_radius)
+        return root
+
+    def _append_joints(
+        self, root: AnyElement, body_name: Any = None, joint_specs: Any = "default"
+    ) -> AnyElement:
+        """``root`` with joints added to the body ``body_name`` (``"default"``: a free joint)."""
+        body_name = "root" if body_name is None else body_name
+        if isinstance(joint_specs, str) and joint_specs == "default":
+            joint_specs = [self.get_joint_attrib_template()]
+        for index, spec in enumerate(joint_specs):
+            if "name" not in spec:
+                spec["name"] = f"{body_name}_joint{index}"
+        path = _body_path(root, body_name)
+        if path is None:
+            raise MjcfLookupError(f"Could not find body with name: {body_name}")
+        body = subtree_at(root, path)
+        joints = [rs_joint(**spec) for spec in joint_specs]
+        return replaced_at(root, path, with_children(body, [*body.children, *joints]))
+
+    @property
+    def bottom_offset(self) -> Vector:
+        """``[0, 0, lowest child bottom]`` (at most 0)."""
+        return np.array([0.0, 0.0, self._bottom])
+
+    @property
+    def top_offset(self) -> Vector:
+        """``[0, 0, highest child top]`` (at least 0)."""
+        return np.array([0.0, 0.0, self._top])
+
+    @property
+    def horizontal_radius(self) -> Any:
+        """The largest ``max(x, y) + radius`` of the children (robosuite's quirk, not a norm)."""
+        return self._horizontal
+
+    def get_bounding_box_half_size(self) -> Vector:
+        """``total_size`` if given, else ``[r, r, 0]`` minus the bottom offset."""
+        if self.total_size is not None:
+            return np.array(self.total_size)
+        return super().get_bounding_box_half_size()
+
+
+class HingedBoxObject(CompositeBodyObject):
+    """robosuite's ``HingedBoxObject``: a box lid hinged (about y) on top of a box.
+
+    Args:
+        name: Name of the object.
+        box1_size: Half-sizes of the lower box.
+        box2_size: Half-sizes of the upper box (the lid).
+        use_texture: Red and blue wood materials; otherwise red and blue colours.
+
+    A third, visual-only cylinder marks the hinge. The bodies are
+    ``root``, ``box1_main``, ``box2_main`` (in box 1, its hinge joint
+    ``box_hinge`` at the lid's lower +x edge) and ``hinge_main`` (in box 2).
+
+    """
+
+    _robosuite_class = ("robosuite.models.objects", "HingedBoxObject")
+
+    def __init__(
+        self,
+        name: str,
+        box1_size: Any = (0.025, 0.025, 0.025),
+        box2_size: Any = (0.025, 0.025, 0.0125),
+        use_texture: bool = True,
+    ) -> None:
+        self.box1_size = np.array(box1_size)
+        self.box2_size = np.array(box2_size)
+        self.use_texture = use_texture
+        self.box1_material: CustomMaterial | None = None
+        self.box2_material: CustomMaterial | None = None
+        self.box1_rgba: Any = RED
+        self.box2_rgba: Any = BLUE
+        if self.use_texture:
+            self.box1_rgba = None
+            self.box2_rgba = None
+            tex_attrib = {"type": "cube"}
+            mat_attrib = {"texrepeat": "3 3", "specular": "0.4", "shininess": "0.1"}
+            self.box1_material, self.box2_material = (
+                CustomMaterial(
+                    texture=texture,
+                    tex_name=f"{box}_tex",
+                    mat_name=f"{box}_mat",
+                    tex_attrib=tex_attrib,
+                    mat_attrib=mat_attrib,
+                )
+                for box, texture in (("box1", "WoodRed"), ("box2", "WoodBlue"))
+            )
+        objects: list[MujocoObject] = [
+            BoxObject(name=f"box{i + 1}", size=size, rgba=rgba, material=material)
+            for i, (size, material, rgba) in enumerate(
+                zip(
+                    (self.box1_size, self.box2_size),
+                    (self.box1_material, self.box2_material),
+                    (self.box1_rgba, self.box2_rgba),
+                    strict=True,
+                )
+            )
+        ]
+        hinge_size = np.array(
+            [
+                min(self.box1_size[2], self.box2_size[2]) / 5.0,
+                min(self.box1_size[0], self.box2_size[0]),
+            ]
+        )
+        objects.append(
+            CylinderObject(name="hinge", size=hinge_size, rgba=[0.5, 0.5, 0, 1], obj_type="visual")
+        )
+        rel_hinge_pos = [self.box2_size[0], 0, -self.box2_size[2]]
+        hinge_joint = {
+            "name": "box_hinge",
+            "type": "hinge",
+            "axis": "0 1 0",
+            "pos": array_to_string(rel_hinge_pos),
+            "stiffness": "0.0001",
+            "limited": "true",
+            "range": "0 1.57",
+        }
+        lid_pos = [
+            -(self.box2_size[0] - self.box1_size[0]),
+            0,
+            self.box1_size[2] + self.box2_size[2],
+        ]
+        super().__init__(
+            name=name,
+            objects=objects,
+            object_locations=[np.zeros(3), np.array(lid_pos), np.array(rel_hinge_pos)],
+            object_quats=[None, None, [0.707, 0.707, 0, 0]],
+            object_parents=[None, objects[0].root_body, objects[1].root_body],
+            body_joints={objects[1].root_body: [hinge_joint]},
+        )
