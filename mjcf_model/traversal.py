@@ -21,7 +21,15 @@ from typing import TypeVar
 
 import attrs
 
-from mjcf_model.base import AnyElement, Element, GenericElement, Node, TypedElement
+from mjcf_model.base import (
+    AnyElement,
+    Element,
+    GenericElement,
+    Node,
+    TypedElement,
+    build_node,
+    to_children,
+)
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.namespaces import child_key, children_context, guess_context
 
@@ -71,6 +79,8 @@ def with_children(element: _E, children: Sequence[Node]) -> _E:
     old = element.children
     if len(old) == len(children) and all(a is b for a, b in zip(old, children, strict=True)):
         return element
+    if isinstance(element, TypedElement):
+        return build_node(type(element), {"children": to_children(children)}, element)
     return attrs.evolve(element, children=tuple(children))
 
 

@@ -13,7 +13,14 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement, field_table
+from mjcf_model.base import (
+    AnyElement,
+    GenericElement,
+    Node,
+    TypedElement,
+    build_node,
+    field_table,
+)
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.registry import CLASS_BY_KEY
 
@@ -87,14 +94,15 @@ def build_element(
             extra.append((name, value))
         else:
             fields[field] = value
+    fields["attribute_order"] = tuple(name for name, _ in attributes)
+    if extra:
+        fields["extra"] = extra
+    if children:
+        fields["children"] = children
+    if text is not None:
+        fields["text"] = text
     try:
-        return cls(
-            **fields,
-            extra=extra,
-            children=children,
-            text=text,
-            attribute_order=tuple(name for name, _ in attributes),
-        )
+        return build_node(cls, fields)
     except MjcfValueError:
         raise _blame_attribute(cls, table, attributes) from None
 
