@@ -16,6 +16,7 @@ equality: two elements that differ only in attribute order are equal).
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Iterable, Iterator, Mapping
 from typing import Any, ClassVar, TypeVar
 
@@ -367,6 +368,27 @@ def build_node(cls: type[_TE], values: Mapping[str, Any], base: _TE | None = Non
     return node
 
 
+_GETTERS: dict[type[TypedElement], tuple[tuple[str, ...], Any]] = {}
+
+
+def _getter(cls: type[TypedElement]) -> tuple[tuple[str, ...], Any]:
+    """The MJCF names of a class's fields, and one getter reading all their values at once."""
+    found = _GETTERS.get(cls)
+    if found is None:
+        table = field_table(cls)
+        fields = tuple(table.values())
+        getter: Any
+        if len(fields) > 1:
+            getter = operator.attrgetter(*fields)
+        elif fields:
+            single = operator.attrgetter(fields[0])
+            getter = lambda element: (single(element),)  # noqa: E731
+        else:
+            getter = lambda element: ()  # noqa: E731
+        found = _GETTERS[cls] = (tuple(table), getter)
+    return found
+
+
 def attribute_items(element: AnyElement) -> list[tuple[str, Value]]:
     """The element's written attributes as ``(xml name, value)``, in source order.
 
@@ -381,13 +403,12 @@ def attribute_items(element: AnyElement) -> list[tuple[str, Value]]:
     """
     if isinstance(element, GenericElement):
         return list(element.attributes.items())
-    table = field_table(type(element))
-    values: dict[str, Value] = {}
-    for xml, field in table.items():
-        value = getattr(element, field)
-        if value is not None:
-            values[xml] = value
-    values.update(element.extra)
+    names, getter = _getter(type(element))
+    values: dict[str, Value] = {
+        xml: value for xml, value in zip(names, getter(element), strict=True) if value is not None
+    }
+    if element.extra:
+        values.update(element.extra)
     if not element.attribute_order:
         return list(values.items())
     ordered = [(k, values.pop(k)) for k in element.attribute_order if k in values]

@@ -19,6 +19,7 @@ the same double, so MuJoCo compiles the written model bit for bit the same.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Collection, Iterable
 from typing import Any
 
@@ -102,9 +103,16 @@ def _count_phrase(lo: int, hi: int | None) -> str:
     return f"{lo} to {hi} numbers"
 
 
+#: Text of plain decimal numbers (the common case), which ``float`` reads without a check.
+_PLAIN_NUMBERS = re.compile(r"\s*(?:[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*)*")
+
+
 def _floats(value: object, lo: int, hi: int | None) -> Floats:
+    items: Floats
     if isinstance(value, tuple) and value and all(type(v) is float for v in value):
-        items: Floats = value
+        items = value
+    elif type(value) is str and _PLAIN_NUMBERS.fullmatch(value):
+        items = tuple(map(float, value.split()))
     else:
         if isinstance(value, (int, float)) and not isinstance(value, bool):
             value = (value,)
