@@ -19,7 +19,7 @@ both, which are kept once.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Collection, Iterable, Mapping, Sequence
 
 import attrs
 
@@ -35,7 +35,7 @@ from mjcf_model.base import (
 from mjcf_model.composition_keys import merged_keyframes
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.namespaces import SCHEMA, child_key, guess_context
-from mjcf_model.naming import declared_names, prefixed
+from mjcf_model.naming import declarations, declared_names, prefixed_declared
 from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.nodes.root import Mujoco
@@ -85,27 +85,10 @@ def _check_compilers(mine: Sequence[Node], child: Mujoco) -> None:
         )
 
 
-def _shared_assets(parent: Mujoco, child: Mujoco) -> set[AnyElement]:
-    """Child assets that are equal to a parent asset (kept once)."""
-    mine = {e for section in _sections(parent, "asset") for e in _elements(section)}
-    return {e for section in _sections(child, "asset") for e in _elements(section) if e in mine}
-
-
-def _check_collisions(
-    declared: dict[str, set[str]], child: Mujoco, shared: set[AnyElement]
-) -> dict[str, frozenset[str]]:
-    """Raise when ``child`` declares a name in ``declared``; return the child's names."""
-    theirs = declared_names(
-        attrs.evolve(
-            child,
-            children=[
-                _without(section, shared) if section.tag == "asset" else section
-                for section in _elements(child)
-            ],
-        )
-    )
+def _check_collisions(declared: dict[str, set[str]], theirs: Mapping[str, Collection[str]]) -> None:
+    """Raise when the child's names ``theirs`` meet the parent's ``declared`` ones."""
     clashes = {
-        namespace: sorted(names & declared.get(namespace, set()))
+        namespace: sorted(set(names) & declared.get(namespace, set()))
         for namespace, names in theirs.items()
     }
     clashes = {namespace: names for namespace, names in clashes.items() if names}
@@ -116,11 +99,6 @@ def _check_collisions(
         raise MjcfValueError(
             f"the child declares names the parent already has ({listed}); attach it with a prefix"
         )
-    return theirs
-
-
-def _without(section: AnyElement, dropped: set[AnyElement]) -> AnyElement:
-    return with_children(section, [c for c in section.children if c not in dropped])
 
 
 def _has_settings(default: AnyElement) -> bool:
@@ -246,6 +224,7 @@ class _Composer:
             e for section in _sections(parent, "asset") for e in _elements(section)
         }
         self.pending: dict[str, list[Node]] = {}
+        self.names: dict[int, tuple[Mujoco, dict[str, frozenset[str]]]] = {}
         self.world: list[Node] = []
         self.keys: list[Node] | None = None
         self.target: AnyElement | None = None
@@ -259,17 +238,22 @@ class _Composer:
                 )
 
     def add(self, child: Mujoco, prefix: str) -> None:
-        for _, key, _ in keyed_walk(child):
-            refuse_include(key, "attach")
+        names = self._names_of(child)
         if prefix:
-            child = prefixed(child, prefix)  # type: ignore[assignment]
+            child = prefixed_declared(child, prefix, names)  # type: ignore[assignment]
+            names = {ns: frozenset(prefix + n for n in found) for ns, found in names.items()}
         _check_compilers(
             _sections(self.parent, "compiler") or self.pending.get("compiler", []), child
         )
         child_assets = [e for section in _sections(child, "asset") for e in _elements(section)]
         shared = {e for e in child_assets if e in self.assets}
-        for namespace, names in _check_collisions(self.declared, child, shared).items():
-            self.declared.setdefault(namespace, set()).update(names)
+        theirs = {ns: set(found) for ns, found in names.items()}
+        for asset in shared:
+            for _, namespace, name in declarations(asset, f"asset/{asset.tag}"):
+                theirs.get(namespace, set()).discard(name)
+        _check_collisions(self.declared, theirs)
+        for namespace, found in theirs.items():
+            self.declared.setdefault(namespace, set()).update(found)
         self.assets.update(child_assets)
         if _keys_of(self.parent) or _keys_of(child):
             self._merge_keys(child)
@@ -288,6 +272,15 @@ class _Composer:
         if class_name is not None:
             world = _classed(world, class_name, attribute_of_body=True)
         self.world.extend(world)
+
+    def _names_of(self, child: Mujoco) -> dict[str, frozenset[str]]:
+        """The names ``child`` declares, read once per child model (includes refused)."""
+        cached = self.names.get(id(child))
+        if cached is None or cached[0] is not child:
+            for _, key, _ in keyed_walk(child):
+                refuse_include(key, "attach")
+            cached = self.names[id(child)] = (child, declared_names(child))
+        return cached[1]
 
     def _add_defaults(self, child: Mujoco, prefix: str) -> str | None:
         defaults = _sections(child, "default")

@@ -38,9 +38,11 @@ from mjcf_model.values import Value
 
 __all__ = [
     "ALL",
+    "declarations",
     "declared_names",
     "prefix_map",
     "prefixed",
+    "prefixed_declared",
     "renamed",
 ]
 
@@ -59,7 +61,7 @@ _MAIN_CLASS = ("main", "class")
 Renamer = Callable[[str, str], str]
 
 
-def _declarations(element: AnyElement, key: str | None) -> Iterator[tuple[str, str, str]]:
+def declarations(element: AnyElement, key: str | None) -> Iterator[tuple[str, str, str]]:
     """``(attribute, namespace, name)`` for each name ``element`` declares (file stems too)."""
     spec = SCHEMA.get(key) if key is not None else None
     if spec is None:
@@ -88,7 +90,7 @@ def declared_names(node: AnyElement) -> dict[str, frozenset[str]]:
     """
     found: dict[str, set[str]] = {}
     for element, key, _ in keyed_walk(node):
-        for _, namespace, name in _declarations(element, key):
+        for _, namespace, name in declarations(element, key):
             found.setdefault(namespace, set()).add(name)
     return {namespace: frozenset(names) for namespace, names in found.items()}
 
@@ -144,7 +146,7 @@ def _renamed_attributes(
     if spec is None:
         return {}
     changes: dict[str, Value | None] = {}
-    for attribute, namespace, name in _declarations(element, key):
+    for attribute, namespace, name in declarations(element, key):
         new = rename(namespace, name)
         if new != name:
             changes[attribute] = new
@@ -267,6 +269,8 @@ def prefixed(
             return name if keep else prefix + name
     else:
         declared = declared_names(node)
+        if chosen == ALL and exclude is None:
+            return prefixed_declared(node, prefix, declared)
 
         def rename(namespace: str, name: str) -> str:
             keep = (
@@ -275,3 +279,25 @@ def prefixed(
             return name if keep else prefix + name
 
     return _apply(node, rename, prefix if chosen == ALL else None)
+
+
+def prefixed_declared(
+    node: AnyElement, prefix: str, declared: Mapping[str, Collection[str]]
+) -> AnyElement:
+    """:func:`prefixed` in every namespace, given the names ``node`` declares.
+
+    For callers that prefix the same model many times (composition): the names
+    are read once instead of on every call.
+
+    Example:
+        >>> from mjcf_model import Body
+        >>> body = Body(name="b")
+        >>> prefixed_declared(body, "p_", declared_names(body)).name
+        'p_b'
+
+    """
+
+    def rename(namespace: str, name: str) -> str:
+        return prefix + name if name in declared.get(namespace, ()) else name
+
+    return _apply(node, rename, prefix)
