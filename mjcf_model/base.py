@@ -297,10 +297,13 @@ class _Plan:
     building a node then costs one assignment per field.
     """
 
-    __slots__ = ("converters", "defaults", "validators")
+    __slots__ = ("converters", "defaults", "slots", "validators")
 
     def __init__(self, cls: type[TypedElement]) -> None:
-        self.defaults: list[tuple[str, Any]] = []
+        #: Per field: the slot's setter and the field's default (converted).
+        self.defaults: list[tuple[Any, Any]] = []
+        #: Per field name: the slot descriptor (its ``__get__``/``__set__`` are the fastest way in).
+        self.slots: dict[str, Any] = {}
         self.converters: dict[str, Any] = {}
         self.validators: dict[str, Any] = {}
         for field in attrs.fields(cls):
@@ -310,7 +313,9 @@ class _Plan:
                 default = factory()
             elif field.converter is not None and default is not None:
                 default = field.converter(default)
-            self.defaults.append((field.name, default))
+            slot = next(c.__dict__[field.name] for c in cls.__mro__ if field.name in c.__dict__)
+            self.slots[field.name] = slot
+            self.defaults.append((slot.__set__, default))
             if field.converter is not None:
                 self.converters[field.name] = field.converter
             if field.validator is not None:
@@ -325,9 +330,6 @@ def _plan(cls: type[TypedElement]) -> _Plan:
     if plan is None:
         plan = _PLANS[cls] = _Plan(cls)
     return plan
-
-
-_set = object.__setattr__
 
 
 def build_node(cls: type[_TE], values: Mapping[str, Any], base: _TE | None = None) -> _TE:
@@ -348,12 +350,12 @@ def build_node(cls: type[_TE], values: Mapping[str, Any], base: _TE | None = Non
     plan = _plan(cls)
     node = object.__new__(cls)
     if base is None:
-        for name, default in plan.defaults:
-            _set(node, name, default)
+        for setter, default in plan.defaults:
+            setter(node, default)
     else:
-        for name, _ in plan.defaults:
-            _set(node, name, getattr(base, name))
-    converters, validators = plan.converters, plan.validators
+        for slot in plan.slots.values():
+            slot.__set__(node, slot.__get__(base))
+    converters, validators, slots = plan.converters, plan.validators, plan.slots
     for name, value in values.items():
         if name == "children":
             value = value if isinstance(value, tuple) else tuple(value)
@@ -364,7 +366,7 @@ def build_node(cls: type[_TE], values: Mapping[str, Any], base: _TE | None = Non
         checks = validators.get(name)
         if checks is not None:
             checks[0](node, checks[1], value)
-        _set(node, name, value)
+        slots[name].__set__(node, value)
     return node
 
 
