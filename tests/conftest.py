@@ -57,6 +57,22 @@ def compiling_corpus() -> list[Path]:
     return compiling
 
 
+@functools.cache
+def loading_corpus() -> list[Path]:
+    """The corpus files mjcf-model loads (the non-MJCF ones are left out)."""
+    from mjcf_model.errors import MjcfError
+    from serializers import load
+
+    loading = []
+    for path in corpus_files():
+        try:
+            load(path)
+        except MjcfError:
+            continue
+        loading.append(path)
+    return loading
+
+
 def corpus_id(path: Path) -> str:
     """A short test id: the package and the path inside it."""
     parts = path.parts

@@ -29,7 +29,6 @@ from mjcf_model import (
     Worldbody,
 )
 from mjcf_model.base import AnyElement, Element, get_attribute
-from mjcf_model.errors import MjcfError
 from mjcf_model.materials import (
     DEFAULT_MATERIAL,
     TEXTURE_FILES,
@@ -39,21 +38,9 @@ from mjcf_model.materials import (
     with_material,
 )
 from serializers import dumps, load, loads, to_etree
-from tests.conftest import corpus_files, corpus_id
+from tests.conftest import corpus_id, loading_corpus
 
-
-def _loading(paths: list[Path]) -> list[Path]:
-    loading = []
-    for path in paths:
-        try:
-            load(path)
-        except MjcfError:
-            continue
-        loading.append(path)
-    return loading
-
-
-CORPUS = _loading(corpus_files())
+CORPUS = loading_corpus()
 ROBOSUITE_CORPUS = [p for p in CORPUS if "robosuite" in p.parts]
 
 TREE = loads(

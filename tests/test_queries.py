@@ -13,24 +13,11 @@ from robosuite.utils import mjcf_utils
 import serializers
 from mjcf_model import Body, Geom, Mujoco, Site, Worldbody, traversal
 from mjcf_model.base import AnyElement, get_attribute
-from mjcf_model.errors import MjcfError
 from mjcf_model.queries import Categories, categorized, find, find_all, parent_of, walk
 from serializers import load, loads
-from tests.conftest import corpus_files, corpus_id
+from tests.conftest import corpus_id, loading_corpus
 
-
-def _loading(paths: list[Path]) -> list[Path]:
-    loading = []
-    for path in paths:
-        try:
-            load(path)
-        except MjcfError:
-            continue
-        loading.append(path)
-    return loading
-
-
-CORPUS = _loading(corpus_files())
+CORPUS = loading_corpus()
 
 MODEL = loads(
     """
