@@ -32,7 +32,7 @@ import numpy.typing as npt
 from mjcf_model.base import AnyElement, with_attributes
 from mjcf_model.defaults import DefaultClasses
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.scaling_rules import ScaleContext, joint_layout
+from mjcf_model.scaling_rules import ScaleContext
 from mjcf_model.scaling_table import RULES
 from mjcf_model.traversal import GUESS, map_elements, refuse_include
 
@@ -98,9 +98,7 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     if factors == (1.0, 1.0, 1.0):
         return node
     classes = DefaultClasses.of(node)
-    context = ScaleContext(
-        factors=factors, mass=mass, classes=classes, layout=joint_layout(node, classes)
-    )
+    context = ScaleContext(factors=factors, mass=mass, classes=classes, model=node)
 
     def visit(
         element: AnyElement, key: str | None, ancestors: tuple[AnyElement, ...]

@@ -65,8 +65,27 @@ class ScaleContext:
     mass: str = "keep"
     #: The model's default classes.
     classes: DefaultClasses = attrs.field(factory=DefaultClasses.empty)
-    #: The joints in ``qpos`` order, or ``None`` when that order cannot be known.
-    layout: tuple[JointInfo, ...] | None = ()
+    #: The tree being scaled, whose joints keyframes, fixed tendons and position
+    #: actuators refer to (read only when one of those is met).
+    model: AnyElement | None = None
+    #: The joints, worked out on first use.
+    _memo: dict[str, Any] = attrs.field(factory=dict, init=False, eq=False, repr=False)
+
+    @property
+    def layout(self) -> tuple[JointInfo, ...] | None:
+        """The joints in ``qpos`` order, or ``None`` when that order cannot be known."""
+        if "layout" not in self._memo:
+            found = () if self.model is None else joint_layout(self.model, self.classes)
+            self._memo["layout"] = found
+        layout: tuple[JointInfo, ...] | None = self._memo["layout"]
+        return layout
+
+    def joint(self, name: object) -> JointInfo | None:
+        """The joint called ``name`` (``None`` for no such joint, or no known order)."""
+        if "by_name" not in self._memo:
+            self._memo["by_name"] = {j.name: j for j in self.layout or () if j.name}
+        found: JointInfo | None = self._memo["by_name"].get(name)
+        return found
 
     @property
     def mean(self) -> float:

@@ -188,9 +188,8 @@ def _fixed_tendon(
     element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
 ) -> Changes:
     """A fixed tendon's length is a length only when every joint in it slides."""
-    types = {j.name: j.type for j in context.layout or ()}
-    joints = [get_attribute(c, "joint") for c in element.elements]
-    if not joints or any(types.get(j) != "slide" for j in joints if isinstance(j, str)):
+    joints = [context.joint(get_attribute(c, "joint")) for c in element.elements]
+    if not joints or any(j is None or j.type != "slide" for j in joints):
         return {}
     return combine(*_TENDON_LENGTHS)(element, ancestors, context)
 
@@ -199,12 +198,11 @@ def _position_ctrlrange(
     element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
 ) -> Changes:
     """A position actuator on a slide joint takes targets in length units."""
-    joint = get_attribute(element, "joint")
-    for info in context.layout or ():
-        if info.name == joint and info.type == "slide":
-            value = get_attribute(element, "ctrlrange")
-            return {} if value is None else {"ctrlrange": times(value, context.along(info.axis))}
-    return {}
+    info = context.joint(get_attribute(element, "joint"))
+    value = get_attribute(element, "ctrlrange")
+    if info is None or info.type != "slide" or value is None:
+        return {}
+    return {"ctrlrange": times(value, context.along(info.axis))}
 
 
 def _keyframe(

@@ -216,3 +216,21 @@ def test_tendon_lengths_from_default_classes_scale_on_spatial_tendons_only() -> 
     assert np.allclose(changed.tendon_range[0], 2 * original.tendon_range[0])
     assert np.allclose(changed.tendon_width[0], 2 * original.tendon_width[0])
     assert np.allclose(changed.tendon_range[1], original.tendon_range[1])
+
+
+def test_slide_joint_targets_scale_where_joints_slide() -> None:
+    """Position targets and fixed tendon ranges on slide joints double; on hinges they stay."""
+    model = loads(
+        """<mujoco><worldbody><body><joint name="s" type="slide" axis="1 0 0"/>
+        <joint name="h" type="hinge"/><geom size="0.1"/></body></worldbody>
+        <tendon><fixed name="ts" range="0 0.2" limited="true"><joint joint="s" coef="1"/></fixed>
+        <fixed name="th" range="0 1" limited="true"><joint joint="h" coef="1"/></fixed></tendon>
+        <actuator><position joint="s" ctrlrange="0 0.04"/><position joint="h" ctrlrange="0 1"/>
+        </actuator></mujoco>"""
+    )
+    original = mujoco.MjModel.from_xml_string(dumps(model))
+    changed = mujoco.MjModel.from_xml_string(dumps(scaled(model, 2)))
+    assert np.allclose(changed.actuator_ctrlrange[0], 2 * original.actuator_ctrlrange[0])
+    assert np.allclose(changed.actuator_ctrlrange[1], original.actuator_ctrlrange[1])
+    assert np.allclose(changed.tendon_range[0], 2 * original.tendon_range[0])
+    assert np.allclose(changed.tendon_range[1], original.tendon_range[1])
