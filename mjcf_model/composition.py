@@ -34,14 +34,14 @@ from mjcf_model.base import (
 )
 from mjcf_model.composition_keys import merged_keyframes
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.namespaces import SCHEMA, child_key, guess_context
+from mjcf_model.namespaces import SCHEMA
 from mjcf_model.naming import declarations, declared_names, prefixed_declared
 from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.queries import find, find_all
 from mjcf_model.registry import CLASS_BY_KEY
-from mjcf_model.traversal import keyed_walk, refuse_include, with_children
+from mjcf_model.traversal import keyed_walk, refuse_include, schema_key, with_children
 
 __all__ = ["attach", "attach_all"]
 
@@ -146,10 +146,10 @@ def _classed(nodes: Sequence[Node], name: str, attribute_of_body: bool) -> list[
     return result
 
 
-def _class_attributes(element: AnyElement) -> set[str]:
-    key = child_key(guess_context(element.tag), element.tag)
+def _class_attributes(element: AnyElement) -> frozenset[str]:
+    key = schema_key(element)
     spec = SCHEMA.get(key) if key is not None else None
-    return set(spec.attributes) if spec is not None else set()
+    return spec.attributes if spec is not None else frozenset()
 
 
 def attach(parent: Mujoco, child: Mujoco, *, at: str | None = None, prefix: str = "") -> Mujoco:

@@ -31,7 +31,7 @@ from mjcf_model.base import (
 from mjcf_model.defaults import DefaultClasses
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.scaling_rules import numbers
+from mjcf_model.scaling_rules import joint_type, numbers
 from mjcf_model.traversal import keyed_walk
 
 __all__ = ["merged_keyframes"]
@@ -56,13 +56,9 @@ def _joints(model: Mujoco, target: AnyElement | None) -> list[_Joint]:
     order = {id(element): index for index, (element, _, _) in enumerate(walked)}
     found: list[_Joint] = []
     for element, key, ancestors in walked:
-        if key not in ("body/freejoint", "body/joint"):
+        kind = joint_type(element, key, ancestors, classes)
+        if kind is None:
             continue
-        kind = (
-            "free"
-            if key == "body/freejoint"
-            else str(classes.resolve(element, ancestors, "type") or "hinge")
-        )
         before = (
             target is None
             or any(a is target for a in ancestors)

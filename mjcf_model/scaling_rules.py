@@ -31,6 +31,7 @@ __all__ = [
     "combine",
     "inertias",
     "joint_layout",
+    "joint_type",
     "lengths",
     "masses",
     "numbers",
@@ -289,13 +290,32 @@ def joint_layout(node: AnyElement, classes: DefaultClasses) -> tuple[JointInfo, 
     for element, key, ancestors in keyed_walk(node):
         if key in ("body/replicate", "body/flexcomp", "body/attach"):
             return None
-        if key == "body/freejoint":
-            joints.append(JointInfo(name=_name(element), type="free", axis=(0.0, 0.0, 1.0)))
-        elif key == "body/joint":
-            kind = classes.resolve(element, ancestors, "type")
-            axis = numbers(classes.resolve(element, ancestors, "axis")) or (0.0, 0.0, 1.0)
-            joints.append(JointInfo(name=_name(element), type=str(kind or "hinge"), axis=axis))
+        kind = joint_type(element, key, ancestors, classes)
+        if kind is not None:
+            axis = numbers(classes.resolve(element, ancestors, "axis")) if kind != "free" else None
+            joints.append(JointInfo(name=_name(element), type=kind, axis=axis or (0.0, 0.0, 1.0)))
     return tuple(joints)
+
+
+def joint_type(
+    element: AnyElement, key: str | None, ancestors: tuple[AnyElement, ...], classes: DefaultClasses
+) -> str | None:
+    """The type of a body's joint: ``free``, ``ball``, ``slide`` or ``hinge``.
+
+    Its own type or its class's (MuJoCo's default is ``hinge``); ``None`` for an
+    element that is not a body's joint.
+
+    Example:
+        >>> from mjcf_model import Joint
+        >>> joint_type(Joint(type="slide"), "body/joint", (), DefaultClasses.empty())
+        'slide'
+
+    """
+    if key == "body/freejoint":
+        return "free"
+    if key != "body/joint":
+        return None
+    return str(classes.resolve(element, ancestors, "type") or "hinge")
 
 
 def _name(element: AnyElement) -> str | None:
