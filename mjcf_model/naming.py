@@ -153,10 +153,11 @@ def _renamed_attributes(
     if not spec.references:
         return changes
     values = {attribute: get_attribute(element, attribute) for attribute in spec.references}
+    context = {**values, **_selectors(element, spec)}
     for attribute, value in values.items():
         if not isinstance(value, str) or not value:
             continue
-        target = reference_namespace(spec, attribute, {**values, **_selectors(element, spec)})
+        target = reference_namespace(spec, attribute, context)
         if target is None:
             continue
         if attribute in spec.list_references:
