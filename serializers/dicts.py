@@ -15,6 +15,7 @@ True
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -28,8 +29,10 @@ from mjcf_model.values import Floats
 
 __all__ = ["converter", "from_dict", "to_dict"]
 
-#: The converter behind :func:`to_dict` and :func:`from_dict`.
-converter = cattrs.Converter(omit_if_default=True, forbid_extra_keys=True)
+#: The converter behind :func:`to_dict` and :func:`from_dict`, built on first use
+#: (``serializers.dicts.converter``): configuring the union over every node class
+#: takes longer than importing the whole library, and most programs never need it.
+converter: cattrs.Converter
 
 
 def _json_float(value: float) -> float | str:
@@ -40,20 +43,28 @@ def _unstructure_floats(values: Floats) -> list[float | str]:
     return [_json_float(v) if isinstance(v, float) else v for v in values]
 
 
-converter.register_unstructure_hook(float, _json_float)
-converter.register_unstructure_hook_func(lambda t: t == Floats, _unstructure_floats)
-converter.register_structure_hook_func(
-    lambda t: t == Floats, lambda value, _: tuple(float(v) for v in value)
-)
-converter.register_unstructure_hook(AttributeMap, dict)
-converter.register_structure_hook(AttributeMap, lambda value, _: AttributeMap(value))
-
-
 def _union(cl: Any, conv: cattrs.Converter) -> None:
     configure_tagged_union(cl, conv, tag_name="_node")
 
 
-include_subclasses(Node, converter, union_strategy=_union)
+@functools.cache
+def _built_converter() -> cattrs.Converter:
+    built = cattrs.Converter(omit_if_default=True, forbid_extra_keys=True)
+    built.register_unstructure_hook(float, _json_float)
+    built.register_unstructure_hook_func(lambda t: t == Floats, _unstructure_floats)
+    built.register_structure_hook_func(
+        lambda t: t == Floats, lambda value, _: tuple(float(v) for v in value)
+    )
+    built.register_unstructure_hook(AttributeMap, dict)
+    built.register_structure_hook(AttributeMap, lambda value, _: AttributeMap(value))
+    include_subclasses(Node, built, union_strategy=_union)
+    return built
+
+
+def __getattr__(name: str) -> Any:
+    if name == "converter":
+        return _built_converter()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def to_dict(node: Node) -> dict[str, Any]:
@@ -65,7 +76,7 @@ def to_dict(node: Node) -> dict[str, Any]:
         {'range': [0.0, 'inf'], '_node': 'Joint'}
 
     """
-    result: dict[str, Any] = converter.unstructure(node, Node)
+    result: dict[str, Any] = _built_converter().unstructure(node, Node)
     return result
 
 
@@ -81,7 +92,7 @@ def from_dict(data: Mapping[str, Any]) -> Node:
 
     """
     try:
-        node: Node = converter.structure(dict(data), Node)
+        node: Node = _built_converter().structure(dict(data), Node)
     except MjcfValueError:
         raise
     except (cattrs.BaseValidationError, KeyError, TypeError, ValueError) as error:
