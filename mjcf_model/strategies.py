@@ -112,12 +112,27 @@ def names() -> st.SearchStrategy[str]:
     )
 
 
+#: The smallest normal single-precision float. Every MuJoCo the library supports
+#: compiles values from here up; before 4.0, MuJoCo rejects a number that is
+#: subnormal, or that a single-precision field (``rgba``...) would round to zero.
+_SMALLEST_COMPILABLE = 2.0**-126
+
+
+def _compilable(value: float) -> float:
+    return value if abs(value) >= _SMALLEST_COMPILABLE else 0.0
+
+
+def _number(low: float, high: float) -> st.SearchStrategy[float]:
+    """Finite numbers in ``[low, high]`` that every supported MuJoCo compiles."""
+    return st.floats(low, high, allow_nan=False, allow_infinity=False).map(_compilable)
+
+
 def _length(low: float = 0.01, high: float = 0.5) -> st.SearchStrategy[float]:
-    return st.floats(low, high, allow_nan=False, allow_infinity=False)
+    return _number(low, high)
 
 
 def _vec(n: int, low: float = -1.0, high: float = 1.0) -> st.SearchStrategy[Floats]:
-    return st.tuples(*[st.floats(low, high, allow_nan=False) for _ in range(n)])
+    return st.tuples(*[_number(low, high) for _ in range(n)])
 
 
 def _rgba() -> st.SearchStrategy[Floats]:
@@ -168,7 +183,7 @@ def joints(draw: _Draw[Any], name: str | None = None, scalar: bool = False) -> J
     joint_type = draw(st.sampled_from(kinds))
     limits = None
     if joint_type != "ball" and draw(st.booleans()):
-        low = draw(st.floats(-2.0, 0.0, allow_nan=False))
+        low = draw(_number(-2.0, 0.0))
         limits = (low, low + draw(_length(0.1, 2.0)))
     return JointNode(
         name=name,
