@@ -41,7 +41,7 @@ from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.queries import find, find_all
 from mjcf_model.registry import CLASS_BY_KEY
-from mjcf_model.traversal import keyed_walk, refuse_include, schema_key, with_children
+from mjcf_model.traversal import keyed_walk, refuse_include, with_children
 
 __all__ = ["attach", "attach_all"]
 
@@ -133,23 +133,44 @@ def _with_class(element: AnyElement, attribute: str, name: str) -> AnyElement:
     )
 
 
-def _classed(nodes: Sequence[Node], name: str, attribute_of_body: bool) -> list[Node]:
-    """Nodes that take the child's main defaults through class ``name``."""
+#: The ``<default>`` tags that set actuator defaults: each of them reaches every actuator.
+_ACTUATOR_DEFAULTS = frozenset(
+    key.partition("/")[2]
+    for key in SCHEMA
+    if key.startswith("default/") and f"actuator/{key.partition('/')[2]}" in SCHEMA
+)
+
+
+def _reached_by(key: str, settings: frozenset[str]) -> bool:
+    """Whether default settings with the tags ``settings`` reach an element of schema ``key``."""
+    section, _, tag = key.rpartition("/")
+    if section in ("tendon", "equality"):
+        return section in settings
+    if section == "actuator":
+        return bool(settings & _ACTUATOR_DEFAULTS)
+    return tag in settings
+
+
+def _classed(nodes: Sequence[Node], main: Default, section: str) -> list[Node]:
+    """The children of the child's ``section`` naming its class ``main`` where it applies.
+
+    Only elements that a setting of ``main`` reaches name it: the others read the
+    parent's defaults either way, and an older MuJoCo rejects ``class`` on some of
+    them (``<texture>`` before 4.0). Bodies and frames in the world take it as
+    ``childclass``.
+    """
+    assert main.dclass is not None
+    settings = frozenset(e.tag for e in _elements(main) if e.tag != "default")
     result: list[Node] = []
     for node in nodes:
         if isinstance(node, (TypedElement, GenericElement)):
-            if node.tag in ("body", "frame") and attribute_of_body:
-                node = _with_class(node, "childclass", name)
-            elif "class" in _class_attributes(node):
-                node = _with_class(node, "class", name)
+            key = f"{section}/{node.tag}"
+            if section == "body" and node.tag in ("body", "frame"):
+                node = _with_class(node, "childclass", main.dclass)
+            elif key in SCHEMA and "class" in SCHEMA[key].attributes and _reached_by(key, settings):
+                node = _with_class(node, "class", main.dclass)
         result.append(node)
     return result
-
-
-def _class_attributes(element: AnyElement) -> frozenset[str]:
-    key = schema_key(element)
-    spec = SCHEMA.get(key) if key is not None else None
-    return spec.attributes if spec is not None else frozenset()
 
 
 def attach(parent: Mujoco, child: Mujoco, *, at: str | None = None, prefix: str = "") -> Mujoco:
@@ -257,7 +278,7 @@ class _Composer:
         self.assets.update(child_assets)
         if _keys_of(self.parent) or _keys_of(child):
             self._merge_keys(child)
-        class_name = self._add_defaults(child, prefix)
+        main = self._add_defaults(child, prefix)
         for tag in _SETTINGS:
             if not _sections(self.parent, tag) and not self.pending.get(tag):
                 self.pending[tag] = list(_sections(child, tag))
@@ -265,12 +286,12 @@ class _Composer:
             nodes = _section_children(child, tag)
             if tag == "asset":
                 nodes = [n for n in nodes if n not in shared]
-            if class_name is not None and tag in _CLASSED_SECTIONS:
-                nodes = _classed(nodes, class_name, attribute_of_body=False)
+            if main is not None and tag in _CLASSED_SECTIONS:
+                nodes = _classed(nodes, main, tag)
             self.pending.setdefault(tag, []).extend(nodes)
         world = _section_children(child, "worldbody")
-        if class_name is not None:
-            world = _classed(world, class_name, attribute_of_body=True)
+        if main is not None:
+            world = _classed(world, main, "body")
         self.world.extend(world)
 
     def _names_of(self, child: Mujoco) -> dict[str, frozenset[str]]:
@@ -282,20 +303,21 @@ class _Composer:
             cached = self.names[id(child)] = (child, declared_names(child))
         return cached[1]
 
-    def _add_defaults(self, child: Mujoco, prefix: str) -> str | None:
+    def _add_defaults(self, child: Mujoco, prefix: str) -> Default | None:
+        """Add the child's defaults; return the class its top-level settings became, if any."""
         defaults = _sections(child, "default")
         added: list[Node] = [n for d in defaults for n in d.children]
-        class_name = None
+        main = None
         if any(_has_settings(default) for default in defaults):
-            class_name = f"{prefix}main"
-            if class_name == "main":
+            if not prefix:
                 raise MjcfValueError(
                     "the child's top-level defaults set values; attach it with a prefix so "
                     "they can become a class of their own"
                 )
-            added = [Default(dclass=class_name, children=_merged_settings(added))]
+            main = Default(dclass=f"{prefix}main", children=_merged_settings(added))
+            added = [main]
         self.pending.setdefault("default", []).extend(added)
-        return class_name
+        return main
 
     def _merge_keys(self, child: Mujoco) -> None:
         """Keyframes need the parent as composed so far: build it, then splice."""

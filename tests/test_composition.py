@@ -9,7 +9,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from mjcf_model import Mujoco
+from mjcf_model import Mujoco, find, get_attribute
 from mjcf_model.compare import compile_text_beside, compiled_names
 from mjcf_model.composition import attach, attach_all
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
@@ -87,6 +87,37 @@ def test_childs_main_defaults_stay_with_the_child() -> None:
     assert compiled.geom("c_g").friction[0] == 2.0
     assert compiled.geom("c_s").friction[0] == 2.0
     assert compiled.geom("c_s").solref[0] == 0.1
+
+
+def test_only_elements_the_childs_main_defaults_reach_name_its_class() -> None:
+    """The child's class goes where its settings apply, and the values MuJoCo compiles follow."""
+    parent = loads('<mujoco><default><material rgba="0 0 1 1"/></default></mujoco>')
+    child = loads(
+        '<mujoco><default><material rgba="1 0 0 1"/><motor gear="7"/><equality solref="0.3 1"/>'
+        '</default><asset><texture name="t" builtin="flat" width="8" height="8"/>'
+        '<material name="m" texture="t"/></asset><worldbody><geom name="g" size="0.1"/>'
+        '<body name="b"><joint name="j"/><geom size="0.1"/></body></worldbody>'
+        '<equality><joint joint1="j"/></equality><tendon><fixed name="f"><joint joint="j" '
+        'coef="1"/></fixed></tendon><actuator><position joint="j"/></actuator></mujoco>'
+    )
+    composed = attach(parent, child, prefix="c_")
+
+    def attribute(tag: str, which: str = "class", **match: str) -> object:
+        return get_attribute(find(composed, tag, **match), which)
+
+    assert attribute("material", name="c_m") == attribute("position") == "c_main"
+    assert attribute("joint", joint1="c_j") == "c_main"  # the equality
+    assert attribute("body", "childclass") == "c_main"
+    assert (
+        attribute("texture", name="c_t") is None
+    )  # class on a texture: MuJoCo before 4.0 rejects it
+    assert attribute("geom", name="c_g") is None  # nothing of c_main reaches these
+    assert attribute("fixed", name="c_f") is None
+    compiled = mujoco.MjModel.from_xml_string(dumps(composed))
+    alone = mujoco.MjModel.from_xml_string(dumps(child))
+    assert list(compiled.mat_rgba[0]) == list(alone.mat_rgba[0]) == [1, 0, 0, 1]
+    assert compiled.actuator_gear[0][0] == alone.actuator_gear[0][0] == 7
+    assert compiled.eq_solref[0][0] == alone.eq_solref[0][0] == 0.3
 
 
 def test_equal_assets_are_kept_once_and_different_ones_clash() -> None:
