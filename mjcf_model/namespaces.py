@@ -4,8 +4,10 @@ The table below mirrors the schema MuJoCo prints (``mujoco.mj_printSchema``), on
 element per entry, keyed by its *schema key*: the path from ``<mujoco>`` with
 ``worldbody`` read as ``body`` and recursion folded (a body in a body is
 ``body``; a geom in a body ``body/geom``; a geom in a spatial tendon
-``tendon/spatial/geom``). A test compares it with the installed MuJoCo, so an
-element or attribute added by a new MuJoCo release fails loudly.
+``tendon/spatial/geom``). It is the schema of MuJoCo :data:`SCHEMA_RELEASE`; a
+test compares it with the installed MuJoCo (equal for that release, a superset
+for an older one), so an element or attribute added by a new MuJoCo release
+fails loudly.
 
 Each attribute is written plain, or annotated:
 
@@ -36,6 +38,7 @@ __all__ = [
     "NAMESPACES",
     "OBJTYPE_NAMESPACES",
     "SCHEMA",
+    "SCHEMA_RELEASE",
     "ElementSpec",
     "child_key",
     "children_context",
@@ -472,6 +475,9 @@ def _parse(table: str) -> dict[str, ElementSpec]:
         )
     return specs
 
+
+#: The MuJoCo release whose printed schema the table mirrors, attribute for attribute.
+SCHEMA_RELEASE = "4.0.0"
 
 #: Every element MuJoCo knows, by schema key.
 SCHEMA: Mapping[str, ElementSpec] = MappingProxyType(_parse(_TABLE))

@@ -10,6 +10,7 @@ from __future__ import annotations
 import functools
 import importlib.util
 import os
+import re
 from pathlib import Path
 
 import mujoco
@@ -28,6 +29,8 @@ settings.register_profile(
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
 
 FIXTURES = Path(__file__).parent / "fixtures"
+#: The MuJoCo release this process runs, as (major, minor).
+MUJOCO_VERSION = tuple(int(part) for part in mujoco.__version__.split(".")[:2])
 
 
 def _package_dir(name: str) -> Path:
@@ -81,3 +84,22 @@ def corpus_id(path: Path) -> str:
             index = len(parts) - 1 - parts[::-1].index(package)
             return "/".join(parts[index:])
     return path.name
+
+
+@functools.cache
+def printed_schema() -> dict[str, set[str]]:
+    """The installed MuJoCo's ``mj_printSchema``, as schema keys and attribute sets."""
+    entries: list[tuple[int, str, list[str]]] = []
+    for line in mujoco.mj_printSchema(False, False).splitlines():
+        match = re.match(r"^(\s*)(\S+) \((.)\)\s*(.*)$", line)
+        if match:
+            entries.append((len(match.group(1)) // 3, match.group(2), match.group(4).split()))
+        elif entries:
+            entries[-1][2].extend(line.split())
+    schema: dict[str, set[str]] = {}
+    stack: list[str] = []
+    for depth, tag, attributes in entries:
+        stack = [*stack[:depth], tag.replace("(world)", "")]
+        key = "/".join(stack[1:]) or "mujoco"
+        schema[key] = set(attributes)
+    return schema

@@ -15,6 +15,7 @@ from mjcf_model import MjcfValueError
 from mjcf_model.base import field_table
 from mjcf_model.registry import CLASS_BY_KEY
 from serializers import loads
+from tests.conftest import printed_schema
 
 #: A model that holds one element of each key, with ``{a}`` where the attribute goes.
 HOSTS = {
@@ -77,6 +78,8 @@ def _cases() -> list[tuple[str, str, int]]:
         for xml, field in field_table(cls).items():
             counts = COUNTS.get(converters[field])
             if xml in SKIP or counts is None or f' {xml}="' in HOSTS[key]:
+                continue
+            if xml not in printed_schema()[key]:  # added after the installed MuJoCo
                 continue
             fewest, most = counts
             if fewest > 1:
