@@ -1,15 +1,15 @@
-"""The compat objects inside robosuite's own pipeline: worlds, tasks, grippers, environments."""
+"""The compat objects inside robosuite's own pipeline: worlds, tasks, grippers and arenas.
+
+robosuite's environments with these objects: test_compat_robosuite_environments.py.
+"""
 
 from __future__ import annotations
 
-import xml.etree.ElementTree as ET
 from typing import Any
 
 import mujoco
 import numpy as np
 import pytest
-import robosuite
-import robosuite.environments.manipulation.lift as lift
 import robosuite.models.objects as rs
 from robosuite.models.arenas import TableArena
 from robosuite.models.grippers import PandaGripper
@@ -23,7 +23,6 @@ from tests.test_compat_objects_support import (
     assert_same_tree,
     assert_same_value,
     assert_view_matches_model,
-    mujoco4_shims,
     text_of,
 )
 
@@ -131,29 +130,3 @@ def test_manipulation_task_scene_compiles_and_steps() -> None:
     np.testing.assert_array_equal(my_data.qpos, their_data.qpos)
     can_body = mujoco.mj_name2id(my_model, mujoco.mjtObj.mjOBJ_BODY, "can_main")
     assert my_data.xpos[can_body][2] < 0.9  # it fell towards the table
-
-
-def test_lift_runs_with_this_box(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Robosuite's Lift with its cube made by this library: same model, same 50 steps."""
-    mujoco4_shims(monkeypatch)
-    settings = {"has_renderer": False, "has_offscreen_renderer": False, "use_camera_obs": False}
-    settings["reward_shaping"] = (
-        True  # the staged rewards check grasps: isinstance(cube, MujocoModel)
-    )
-    runs = []
-    for box in (rs.BoxObject, ours.BoxObject):
-        monkeypatch.setattr(lift, "BoxObject", box)
-        env = robosuite.make("Lift", robots="Panda", seed=0, **settings)
-        env.reset()
-        assert isinstance(env.cube, box)
-        steps = [env.step(np.full(env.action_dim, 0.1)) for _ in range(50)]
-        observations = [(step[0], step[1]) for step in steps]
-        runs.append((env.model.get_xml(), observations, env.cube.root_body))
-        env.close()
-    (their_xml, their_obs, _), (my_xml, my_obs, root_body) = runs
-    assert root_body == "cube_main"
-    assert text_of(ET.fromstring(my_xml)) == text_of(ET.fromstring(their_xml))
-    for (theirs, their_reward), (mine, my_reward) in zip(their_obs, my_obs, strict=True):
-        np.testing.assert_array_equal(mine["cube_pos"], theirs["cube_pos"])
-        np.testing.assert_array_equal(mine["robot0_eef_pos"], theirs["robot0_eef_pos"])
-        assert my_reward == their_reward

@@ -8,11 +8,9 @@ space is stripped.
 from __future__ import annotations
 
 import copy
-import types
 import xml.etree.ElementTree as ET
 from typing import Any
 
-import mujoco
 import numpy as np
 
 from serializers import to_etree
@@ -99,36 +97,3 @@ def assert_same_object(ours: Any, theirs: Any, *, asset: bool = True) -> None:
         assert getattr(ours, template)() == getattr(theirs, template)()
     assert ours.get_obj() is ours.get_obj()
     assert_view_matches_model(ours)
-
-
-def mujoco4_shims(monkeypatch: Any) -> None:
-    """Let robosuite 1.5.2's environments run on MuJoCo 4.0.0 (unrelated to this library).
-
-    robosuite 1.5.2 calls ``mj_fullM(m, dst, d.qM)`` (MuJoCo 4 takes
-    ``(m, d, dst)`` and has no ``qM``) and tests ``jnt_type in (mjtJoint...)``,
-    which MuJoCo 4's enums fail for numpy integers; both break ``robosuite.make``
-    before any object is involved.
-    """
-    import robosuite.controllers.parts.controller as controller
-    import robosuite.utils.binding_utils as binding
-
-    class _Joints(types.SimpleNamespace):
-        pass
-
-    class _BindingMujoco:
-        mjtJoint = _Joints(mjJNT_FREE=0, mjJNT_BALL=1, mjJNT_SLIDE=2, mjJNT_HINGE=3)
-
-        def __getattr__(self, name: str) -> Any:
-            return getattr(mujoco, name)
-
-    class _ControllerMujoco:
-        @staticmethod
-        def mj_fullM(model: Any, dst: Any, data: Any) -> None:
-            mujoco.mj_fullM(model, data, dst)
-
-        def __getattr__(self, name: str) -> Any:
-            return getattr(mujoco, name)
-
-    monkeypatch.setattr(binding, "mujoco", _BindingMujoco())
-    monkeypatch.setattr(controller, "mujoco", _ControllerMujoco())
-    monkeypatch.setattr(binding.MjData, "qM", property(lambda self: self._data), raising=False)

@@ -1,0 +1,180 @@
+"""Run the test suite against the built wheel, installed as users install it.
+
+The README's test command ends with this script. It
+
+1. builds the wheel from this checkout (``pip wheel``, an isolated build);
+2. for each environment in ``tests/environments/`` (``newest``: MuJoCo 4.0.0;
+   ``oldest``: MuJoCo 3.9.0, where robosuite 1.5.2's own environments run),
+   creates a fresh virtual environment and installs the wheel with its ``test``
+   extra under that file's pip constraints;
+3. copies ``tests/`` and ``benchmarks/`` (which the tests run) into a folder of
+   their own, so that the source folders are not importable from where pytest
+   runs, and checks that ``mjcf_model`` and ``serializers`` import from the
+   environment's site-packages;
+4. runs pytest there: the tests, and the doctests of the installed modules.
+
+It ends with one line ``total: N passed, N failed`` and exits non-zero when
+anything failed. Usage::
+
+    python tests/run_installed.py [ENVIRONMENT ...] [-- PYTEST-ARGUMENTS]
+
+Without pytest arguments, ``-n 2`` is used. The folders live in
+``build/installed/`` and are made anew on every run.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+import venv
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+#: The checkout this script belongs to.
+SOURCE_TREE = Path(__file__).resolve().parents[1]
+#: The constraint files, one per environment, named ``<environment>.txt``.
+ENVIRONMENTS = SOURCE_TREE / "tests" / "environments"
+#: Where wheels, virtual environments and suite copies are made.
+WORK = SOURCE_TREE / "build" / "installed"
+#: The folders copied beside each other to form the suite (tests import both).
+SUITE_FOLDERS = ("tests", "benchmarks")
+#: The installed packages whose doctests run too.
+PACKAGES = ("mjcf_model", "serializers")
+
+
+def run(command: list[str], **kwargs: object) -> None:
+    """Run ``command``, echoing it first; a failure ends the script."""
+    print("+", " ".join(command), flush=True)
+    subprocess.run(command, check=True, **kwargs)  # type: ignore[call-overload]
+
+
+def build_wheel() -> Path:
+    """Build the wheel of this checkout into ``WORK/dist`` and return its path."""
+    dist = WORK / "dist"
+    shutil.rmtree(dist, ignore_errors=True)
+    run(
+        [sys.executable, "-m", "pip", "wheel", "--no-deps", "--quiet", "-w", str(dist), "."],
+        cwd=SOURCE_TREE,
+    )
+    (wheel,) = dist.glob("*.whl")
+    return wheel
+
+
+def environment_python(name: str, wheel: Path) -> Path:
+    """A fresh virtual environment with the wheel and its test extra installed."""
+    home = WORK / name / "venv"
+    shutil.rmtree(home, ignore_errors=True)
+    venv.create(home, with_pip=True)
+    python = home / "bin" / "python"
+    constraints = ENVIRONMENTS / f"{name}.txt"
+    run(
+        [
+            str(python),
+            "-m",
+            "pip",
+            "install",
+            "--quiet",
+            "--disable-pip-version-check",
+            f"{wheel}[test]",
+            "-c",
+            str(constraints),
+        ]
+    )
+    return python
+
+
+def suite_folder(name: str) -> Path:
+    """A copy of the tests and benchmarks, in a folder holding no package source."""
+    suite = WORK / name / "suite"
+    shutil.rmtree(suite, ignore_errors=True)
+    suite.mkdir(parents=True)
+    for folder in SUITE_FOLDERS:
+        shutil.copytree(
+            SOURCE_TREE / folder, suite / folder, ignore=shutil.ignore_patterns("__pycache__")
+        )
+    shutil.copy(SOURCE_TREE / "pyproject.toml", suite)  # pytest's settings
+    return suite
+
+
+def check_installed_imports(python: Path, suite: Path, environment: dict[str, str]) -> None:
+    """Fail unless the packages import from the environment, not from the checkout."""
+    script = (
+        "import sys, sysconfig, pathlib\n"
+        f"import {', '.join(PACKAGES)}\n"
+        "site = pathlib.Path(sysconfig.get_paths()['purelib']).resolve()\n"
+        f"for module in ({', '.join(PACKAGES)},):\n"
+        "    where = pathlib.Path(module.__file__).resolve()\n"
+        "    print(module.__name__, 'from', where)\n"
+        "    sys.exit(0 if where.is_relative_to(site) else f'{where} is not in {site}')\n"
+    )
+    run([str(python), "-c", script], cwd=suite, env=environment)
+
+
+def run_suite(name: str, wheel: Path, pytest_arguments: list[str]) -> tuple[int, int]:
+    """Install, copy, check and run the suite in one environment: (passed, failed)."""
+    print(f"\n=== environment {name!r}: {ENVIRONMENTS / f'{name}.txt'}", flush=True)
+    python = environment_python(name, wheel)
+    suite = suite_folder(name)
+    environment = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    environment.update(
+        MJCF_MODEL_SOURCE_TREE=str(SOURCE_TREE),
+        MJCF_MODEL_WHEEL=str(wheel),
+        MJCF_MODEL_ENVIRONMENT=name,
+    )
+    check_installed_imports(python, suite, environment)
+    report = suite / "junit.xml"
+    command = [
+        str(python),
+        "-m",
+        "pytest",
+        "-p",
+        "no:cacheprovider",
+        f"--junitxml={report}",
+        *pytest_arguments,
+        "tests",
+        "--pyargs",
+        *PACKAGES,
+    ]
+    print("+", " ".join(command), flush=True)
+    status = subprocess.run(command, cwd=suite, env=environment, check=False).returncode
+    totals = ET.parse(report).getroot().find("testsuite") if report.exists() else None
+    if totals is None:
+        print(f"pytest exited {status} and wrote no report", flush=True)
+        return 0, 1
+    tests, failures, errors, skipped = (
+        int(totals.get(key, "0")) for key in ("tests", "failures", "errors", "skipped")
+    )
+    failed = failures + errors
+    if status != 0 and failed == 0:
+        print(f"pytest exited {status} with no failed test: counted as one failure", flush=True)
+        failed = 1
+    return tests - failures - errors - skipped, failed
+
+
+def main(arguments: list[str]) -> int:
+    """Build, install and test; return the exit status."""
+    split = arguments.index("--") if "--" in arguments else len(arguments)
+    names, pytest_arguments = arguments[:split], arguments[split + 1 :]
+    available = sorted(path.stem for path in ENVIRONMENTS.glob("*.txt"))
+    unknown = sorted(set(names) - set(available))
+    if unknown:
+        print(f"unknown environments {unknown}; there are {available}", file=sys.stderr)
+        return 2
+    WORK.mkdir(parents=True, exist_ok=True)
+    wheel = build_wheel()
+    results = {
+        name: run_suite(name, wheel, pytest_arguments or ["-n", "2"]) for name in names or available
+    }
+    print()
+    for name, (passed, failed) in results.items():
+        print(f"environment {name}: {passed} passed, {failed} failed")
+    passed = sum(p for p, _ in results.values())
+    failed = sum(f for _, f in results.values())
+    print(f"total: {passed} passed, {failed} failed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
