@@ -41,7 +41,7 @@ from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.queries import find, find_all
 from mjcf_model.registry import CLASS_BY_KEY
-from mjcf_model.traversal import keyed_walk, refuse_include, with_children
+from mjcf_model.traversal import keyed_walk, refuse_opaque, with_children
 
 __all__ = ["attach", "attach_all"]
 
@@ -224,8 +224,8 @@ def attach_all(
         ['c0_cup', 'c1_cup', 'c2_cup']
 
     """
-    for _, key, _ in keyed_walk(parent):
-        refuse_include(key, "attach")
+    for element, key, _ in keyed_walk(parent):
+        refuse_opaque(element, key, "attach")
     composer = _Composer(parent, at)
     for child, prefix in children:
         composer.add(child, prefix)
@@ -298,8 +298,8 @@ class _Composer:
         """The names ``child`` declares, read once per child model (includes refused)."""
         cached = self.names.get(id(child))
         if cached is None or cached[0] is not child:
-            for _, key, _ in keyed_walk(child):
-                refuse_include(key, "attach")
+            for element, key, _ in keyed_walk(child):
+                refuse_opaque(element, key, "attach")
             cached = self.names[id(child)] = (child, declared_names(child))
         return cached[1]
 

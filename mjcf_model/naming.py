@@ -33,7 +33,7 @@ from collections.abc import Callable, Collection, Iterator, Mapping
 from mjcf_model.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.namespaces import NAMESPACES, SCHEMA, ElementSpec, reference_namespace
-from mjcf_model.traversal import GUESS, keyed_walk, map_elements, refuse_include
+from mjcf_model.traversal import GUESS, keyed_walk, map_elements, refuse_opaque
 from mjcf_model.values import Value
 
 __all__ = [
@@ -180,7 +180,7 @@ def _selectors(element: AnyElement, spec: ElementSpec) -> dict[str, Value | None
 
 def _apply(node: AnyElement, rename: Renamer, attach_prefix: str | None) -> AnyElement:
     def visit(element: AnyElement, key: str | None, _: tuple[AnyElement, ...]) -> AnyElement:
-        refuse_include(key, "rename names in")
+        refuse_opaque(element, key, "rename names in")
         changes = _renamed_attributes(element, key, rename)
         if attach_prefix and key == "body/attach":
             inner = get_attribute(element, "prefix")

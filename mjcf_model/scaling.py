@@ -34,7 +34,7 @@ from mjcf_model.defaults import DefaultClasses
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.scaling_rules import ScaleContext
 from mjcf_model.scaling_table import RULES
-from mjcf_model.traversal import GUESS, map_elements, refuse_include
+from mjcf_model.traversal import GUESS, map_elements, refuse_opaque
 
 __all__ = ["MassPolicy", "scaled"]
 
@@ -103,7 +103,7 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     def visit(
         element: AnyElement, key: str | None, ancestors: tuple[AnyElement, ...]
     ) -> AnyElement:
-        refuse_include(key, "scale")
+        refuse_opaque(element, key, "scale")
         if key is None:
             return element
         if key == "body/attach":

@@ -40,7 +40,7 @@ __all__ = [
     "keyed_walk",
     "map_elements",
     "map_tree",
-    "refuse_include",
+    "refuse_opaque",
     "schema_key",
     "walk",
     "with_children",
@@ -166,11 +166,17 @@ def _map_elements(
     return fn(element, key, ancestors)
 
 
-def refuse_include(key: str | None, action: str) -> None:
-    """Raise when a transform meets an ``<include>``, whose contents it cannot see.
+def refuse_opaque(element: AnyElement, key: str | None, action: str) -> None:
+    """Raise when a transform meets an element whose contents are not in the tree.
+
+    An ``<include>`` names another file. A ``<composite>`` (removed in MuJoCo 4.0,
+    expanded by older releases) makes bodies, joints and geoms whose names and
+    sizes are nowhere in the tree, so prefixing or scaling it would give a model
+    MuJoCo rejects or reads differently.
 
     Example:
-        >>> refuse_include("include", "prefix")
+        >>> from mjcf_model.base import GenericElement
+        >>> refuse_opaque(GenericElement(tag="include"), "include", "prefix")
         Traceback (most recent call last):
         ...
         mjcf_model.errors.MjcfValueError: cannot prefix a model with <include> elements: \
@@ -181,6 +187,12 @@ their files are not part of the tree; load it with inline_includes=True
         raise MjcfValueError(
             f"cannot {action} a model with <include> elements: their files are not part "
             "of the tree; load it with inline_includes=True"
+        )
+    if key is None and element.tag == "composite":
+        raise MjcfValueError(
+            f"cannot {action} a model with <composite> elements: MuJoCo before 4.0 expands "
+            "them into bodies, joints and geoms whose names and sizes are not in the tree "
+            "(MuJoCo 4.0 removed them); write them as <replicate> or <flexcomp> instead"
         )
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import mujoco
 import pytest
@@ -11,8 +12,10 @@ from hypothesis import strategies as st
 
 from mjcf_model import Body, Geom, Mujoco
 from mjcf_model.compare import compile_text_beside
+from mjcf_model.composition import attach
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.naming import declared_names, prefix_map, prefixed, renamed
+from mjcf_model.scaling import scaled
 from mjcf_model.strategies import models, names
 from serializers import dumps, load, loads, to_dict
 from serializers.skins import inline_skin_files
@@ -197,6 +200,25 @@ def test_includes_are_refused() -> None:
     model = loads('<mujoco><include file="other.xml"/></mujoco>')
     with pytest.raises(MjcfValueError, match="inline_includes=True"):
         prefixed(model, "p_")
+
+
+@pytest.mark.parametrize(
+    ("transform", "action"),
+    [
+        (lambda m: prefixed(m, "p_"), "rename names in"),
+        (lambda m: scaled(m, 2), "scale"),
+        (lambda m: attach(loads("<mujoco/>"), m, prefix="p_"), "attach"),
+    ],
+)
+def test_composites_are_refused(transform: Any, action: str) -> None:
+    """A <composite> makes names and sizes outside the tree: every transform says so."""
+    model = loads(
+        '<mujoco><worldbody><body name="rope"><composite type="cable" prefix="r" count="5 1 1" '
+        'size="1" curve="s"><geom type="capsule" size=".01"/></composite></body></worldbody>'
+        "</mujoco>"
+    )
+    with pytest.raises(MjcfValueError, match=f"cannot {action} .*<composite>.*<replicate>"):
+        transform(model)
 
 
 @given(st.text(min_size=1, max_size=5))
