@@ -27,9 +27,11 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
+from typing import Any
 
 import attrs
 import numpy as np
+from numpy.typing import NDArray
 
 from mjcf_model.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.errors import MjcfSyntaxError
@@ -46,7 +48,7 @@ class _Reader:
     def __init__(self, data: bytes, path: str) -> None:
         self.data, self.offset, self.path = data, 0, path
 
-    def take(self, dtype: str, count: int) -> np.ndarray:  # type: ignore[type-arg]
+    def take(self, dtype: str, count: int) -> NDArray[Any]:
         size = np.dtype(dtype).itemsize * count
         if self.offset + size > len(self.data):
             raise MjcfSyntaxError("not a MuJoCo skin file: it ends too early", file=self.path)
@@ -63,7 +65,7 @@ class _Reader:
             raise MjcfSyntaxError(f"not a MuJoCo skin file: {error}", file=self.path) from None
 
 
-def _floats(values: np.ndarray) -> tuple[float, ...] | None:  # type: ignore[type-arg]
+def _floats(values: NDArray[Any]) -> tuple[float, ...] | None:
     return tuple(float(v) for v in values) if len(values) else None
 
 
