@@ -98,18 +98,25 @@ def suite_folder(name: str) -> Path:
     return suite
 
 
+#: Run by the environment's interpreter: where each package imports from.
+_WHERE_FROM = """
+import importlib, pathlib, sys, sysconfig
+site = pathlib.Path(sysconfig.get_paths()["purelib"]).resolve()
+outside = []
+for name in sys.argv[1:]:
+    where = pathlib.Path(importlib.import_module(name).__file__).resolve()
+    print(name, "imports from", where)
+    outside += [] if where.is_relative_to(site) else [f"{where} is not in {site}"]
+sys.exit("; ".join(outside) or None)
+"""
+
+
 def check_installed_imports(python: Path, suite: Path, environment: dict[str, str]) -> None:
     """Fail unless the packages import from the environment, not from the checkout."""
-    script = (
-        "import sys, sysconfig, pathlib\n"
-        f"import {', '.join(PACKAGES)}\n"
-        "site = pathlib.Path(sysconfig.get_paths()['purelib']).resolve()\n"
-        f"for module in ({', '.join(PACKAGES)},):\n"
-        "    where = pathlib.Path(module.__file__).resolve()\n"
-        "    print(module.__name__, 'from', where)\n"
-        "    sys.exit(0 if where.is_relative_to(site) else f'{where} is not in {site}')\n"
+    print(f"+ check that {', '.join(PACKAGES)} import from site-packages", flush=True)
+    subprocess.run(
+        [str(python), "-c", _WHERE_FROM, *PACKAGES], cwd=suite, env=environment, check=True
     )
-    run([str(python), "-c", script], cwd=suite, env=environment)
 
 
 def run_suite(name: str, wheel: Path, pytest_arguments: list[str]) -> tuple[int, int]:
