@@ -42,6 +42,10 @@ WORK = SOURCE_TREE / "build" / "installed"
 SUITE_FOLDERS = ("tests", "benchmarks")
 #: The installed packages whose doctests run too.
 PACKAGES = ("mjcf_model", "serializers")
+#: Hypothesis profiles by environment (``tests/conftest.py`` defines them); the others
+#: keep the caller's (``ci`` under ``CI=true``). The oldest runs every property at the
+#: ``dev`` profile's 50 examples, which keeps the whole run under 15 minutes on 2 cores.
+HYPOTHESIS_PROFILES = {"oldest": "dev"}
 
 
 def run(command: list[str], **kwargs: object) -> None:
@@ -125,6 +129,8 @@ def run_suite(name: str, wheel: Path, pytest_arguments: list[str]) -> tuple[int,
     python = environment_python(name, wheel)
     suite = suite_folder(name)
     environment = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    if name in HYPOTHESIS_PROFILES:
+        environment["HYPOTHESIS_PROFILE"] = HYPOTHESIS_PROFILES[name]
     environment.update(
         MJCF_MODEL_SOURCE_TREE=str(SOURCE_TREE),
         MJCF_MODEL_WHEEL=str(wheel),

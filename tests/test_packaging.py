@@ -111,7 +111,8 @@ def test_the_suite_runs_on_the_package_it_says() -> None:
     direct = distribution.read_text("direct_url.json")
     editable = bool(direct) and json.loads(direct).get("dir_info", {}).get("editable", False)
     where = Path(mjcf_model.__file__).resolve()
-    assert where.is_relative_to(source_tree()) == editable
+    assert where.is_relative_to(source_tree() / "mjcf_model") == editable
+    assert where.is_relative_to(Path(site).resolve()) != editable
     if not editable:
         installed = {str(path) for path in distribution.files or ()}
         assert {n for n in _wheel_names() if not n.endswith("/RECORD")} <= installed

@@ -41,6 +41,12 @@ _REMOVED_SINCE_OLDEST = {
     "body/composite/skin",
     "equality/flexvert",
 }
+#: Attributes MuJoCo 3.9 prints that ``SCHEMA_RELEASE`` removed; they load and
+#: round-trip as attributes the typed class does not model.
+_ATTRIBUTES_REMOVED_SINCE_OLDEST = {
+    "body/flexcomp/contact": {"internal"},
+    "deformable/flex/contact": {"internal"},
+}
 
 
 def test_every_printed_element_is_in_the_table() -> None:
@@ -49,13 +55,14 @@ def test_every_printed_element_is_in_the_table() -> None:
     assert sorted(missing - (set() if TABLE_RELEASE_INSTALLED else _REMOVED_SINCE_OLDEST)) == []
 
 
-@pytest.mark.parametrize("key", sorted(PRINTED))
+@pytest.mark.parametrize("key", sorted(set(PRINTED) & set(SCHEMA)))
 def test_every_printed_attribute_is_in_the_table(key: str) -> None:
     """The table lists the attributes MuJoCo prints: exactly those of ``SCHEMA_RELEASE``."""
     if TABLE_RELEASE_INSTALLED:
         assert SCHEMA[key].attributes == PRINTED[key]
     else:
-        assert sorted(PRINTED[key] - SCHEMA[key].attributes) == []
+        removed = _ATTRIBUTES_REMOVED_SINCE_OLDEST.get(key, set())
+        assert sorted(PRINTED[key] - SCHEMA[key].attributes - removed) == []
 
 
 def test_table_has_nothing_mujoco_lacks() -> None:
