@@ -24,7 +24,7 @@ import attrs
 
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.node_building import build_node
-from mjcf_model.values import Value, format_value
+from mjcf_model.values import Value, check_name, check_text, format_value
 
 __all__ = [
     "AnyElement",
@@ -68,6 +68,8 @@ class AttributeMap(Mapping[str, str]):
                 raise MjcfValueError(
                     f"attribute names and values must be text, found {key!r}={value!r}"
                 )
+            check_name(key, "attribute name")
+            check_text(value, f"attribute {key!r}")
         self._data = data
         self._hash: int | None = None
 
@@ -157,6 +159,9 @@ def _check_comment(_instance: Any, _attribute: Any, value: str) -> None:
         raise MjcfValueError(f"comment text must be a string, found {value!r}")
     if "--" in value or value.endswith("-"):
         raise MjcfValueError(f"an XML comment cannot contain '--' or end with '-': {value!r}")
+    if "\r" in value:  # XML reads it as a line feed, and a comment has no character references
+        raise MjcfValueError(f"an XML comment cannot keep a carriage return: {value!r}")
+    check_text(value, "comment")
 
 
 @attrs.frozen(kw_only=True)
@@ -174,8 +179,10 @@ class Comment(Node):
 
 
 def _optional_text(_instance: Any, _attribute: Any, value: str | None) -> None:
-    if value is not None and not isinstance(value, str):
-        raise MjcfValueError(f"element text must be a string, found {value!r}")
+    if value is not None:
+        if not isinstance(value, str):
+            raise MjcfValueError(f"element text must be a string, found {value!r}")
+        check_text(value, "element text")
 
 
 @attrs.frozen(kw_only=True)
@@ -239,6 +246,12 @@ class TypedElement(Element):
         printer.text(repr(self))
 
 
+def _check_tag(_instance: Any, _attribute: Any, value: str) -> None:
+    if not isinstance(value, str):
+        raise MjcfValueError(f"a tag must be a string, found {value!r}")
+    check_name(value, "tag")
+
+
 @attrs.frozen(kw_only=True)
 class GenericElement(Element):
     """An element without a typed class: future MJCF, plugins' configuration, ``visual``...
@@ -251,7 +264,7 @@ class GenericElement(Element):
     """
 
     #: The XML tag.
-    tag: str = attrs.field(validator=attrs.validators.instance_of(str))
+    tag: str = attrs.field(validator=_check_tag)
     #: All attributes, as text, in source order.
     attributes: AttributeMap = attrs.field(factory=AttributeMap, converter=to_attribute_map)
 

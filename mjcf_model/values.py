@@ -31,7 +31,10 @@ __all__ = [
     "Floats",
     "Ints",
     "OneOf",
+    "Unparsed",
     "Value",
+    "check_name",
+    "check_text",
     "format_float",
     "format_value",
     "one_of",
@@ -55,8 +58,6 @@ __all__ = [
 Floats = tuple[float, ...]
 #: A vector of integers as a node stores it.
 Ints = tuple[int, ...]
-#: Anything a node field may hold.
-Value = str | int | float | bool | Floats | Ints
 
 
 def _parse_float(token: Any, original: object) -> float:
@@ -65,7 +66,7 @@ def _parse_float(token: Any, original: object) -> float:
     try:
         return float(token)
     except (TypeError, ValueError):
-        raise MjcfValueError(f"expected a number, found {token!r}") from None
+        raise MjcfValueError(f"expected a number, found {_shortened(token)!r}") from None
 
 
 def _parse_int(token: Any, original: object) -> int:
@@ -82,7 +83,7 @@ def _parse_int(token: Any, original: object) -> int:
     try:
         return int(token)
     except (TypeError, ValueError):
-        raise MjcfValueError(f"expected an integer, found {token!r}") from None
+        raise MjcfValueError(f"expected an integer, found {_shortened(token)!r}") from None
 
 
 def _tokens(value: object) -> list[Any]:
@@ -103,16 +104,20 @@ def _count_phrase(lo: int, hi: int | None) -> str:
     return f"{lo} to {hi} numbers"
 
 
-#: Text of plain decimal numbers (the common case), which ``float`` reads without a check.
-_PLAIN_NUMBERS = re.compile(r"\s*(?:[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*)*")
-
-
 def _floats(value: object, lo: int, hi: int | None) -> Floats:
     items: Floats
     if isinstance(value, tuple) and value and all(type(v) is float for v in value):
         items = value
-    elif type(value) is str and _PLAIN_NUMBERS.fullmatch(value):
-        items = tuple(map(float, value.split()))
+    elif type(value) is str:
+        # ``float`` reads one token in time linear in its length; no regular
+        # expression ever sees attribute text (see tests/test_values.py).
+        try:
+            items = tuple(map(float, value.split()))
+        except ValueError:
+            bad = next(t for t in value.split() if not _reads_as_float(t))
+            raise MjcfValueError(f"expected a number, found {_shortened(bad)!r}") from None
+    elif type(value) is Unparsed:
+        return value  # type: ignore[return-value]
     else:
         if isinstance(value, (int, float)) and not isinstance(value, bool):
             value = (value,)
@@ -120,21 +125,150 @@ def _floats(value: object, lo: int, hi: int | None) -> Floats:
     n = len(items)
     if n < lo or (hi is not None and n > hi):
         found = value if isinstance(value, str) else items
-        raise MjcfValueError(f"expected {_count_phrase(lo, hi)}, found {n} in {found!r}")
+        raise MjcfValueError(
+            f"expected {_count_phrase(lo, hi)}, found {n} in {_shortened(found)!r}"
+        )
     return items
 
 
+def _reads_as_float(token: str) -> bool:
+    try:
+        float(token)
+    except ValueError:
+        return False
+    return True
+
+
+def _shortened(value: object, limit: int = 80) -> object:
+    """``value`` for an error message: long text is cut, so a 50 MB attribute is not copied."""
+    if isinstance(value, str) and len(value) > limit:
+        return f"{value[:limit]}... ({len(value)} characters)"
+    if isinstance(value, tuple) and len(value) > limit // 8:
+        return (*value[: limit // 8], "...")
+    return value
+
+
+class Unparsed:
+    """Attribute text a typed field cannot read, kept verbatim because MuJoCo may read it.
+
+    MuJoCo reads some spellings the typed fields refuse (``size="0x10"`` is 16,
+    ``pos=""`` is "use the default"). The readers keep such text as it was and
+    the writers write it back unchanged, so the model compiles exactly as the
+    file did. Using the value (iterating, indexing, converting it to a number)
+    raises the :class:`~mjcf_model.errors.MjcfValueError` that reading it found,
+    with the file, line and element path it came from.
+
+    Example:
+        >>> from serializers import loads
+        >>> model = loads('<mujoco><worldbody><geom size="0x10"/></worldbody></mujoco>')
+        >>> geom = model.worldbody.geoms[0]
+        >>> geom.size
+        Unparsed('0x10')
+        >>> geom.size[0]
+        Traceback (most recent call last):
+        ...
+        mjcf_model.errors.MjcfValueError: <string>:1: /mujoco/worldbody/geom: attribute 'size': \
+expected a number, found '0x10' (kept verbatim: MuJoCo may read what mjcf-model cannot)
+
+    """
+
+    __slots__ = ("problem", "text")
+
+    def __init__(self, text: str, problem: str = "") -> None:
+        #: The attribute text exactly as read.
+        self.text = text
+        #: Why the typed field could not read it, with the place it was read from.
+        self.problem = problem
+
+    def __eq__(self, other: object) -> bool:
+        return type(other) is Unparsed and other.text == self.text
+
+    def __hash__(self) -> int:
+        return hash((Unparsed, self.text))
+
+    def __repr__(self) -> str:
+        return f"Unparsed({self.text!r})"
+
+    def fail(self, *_args: object) -> Any:
+        """Raise the error reading this value found."""
+        raise MjcfValueError(
+            f"{self.problem or f'cannot read {self.text!r}'} "
+            "(kept verbatim: MuJoCo may read what mjcf-model cannot)"
+        )
+
+    __iter__ = __len__ = __getitem__ = __float__ = __int__ = __index__ = fail
+    __add__ = __radd__ = __sub__ = __rsub__ = __mul__ = __rmul__ = __truediv__ = fail
+    __neg__ = __lt__ = __le__ = __gt__ = __ge__ = __array__ = fail
+
+
+#: Anything a node field may hold.
+Value = str | int | float | bool | Floats | Ints | Unparsed
+
+
+#: One character XML 1.0 cannot carry. Every pattern in the library is a single
+#: character class, which cannot backtrack (tests/test_values.py checks this).
+NOT_XML_CHARACTER = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+_NOT_NAME_CHARACTER = re.compile(
+    "[^-.0-9:A-Z_a-z\xb7\xc0-\xd6\xd8-\xf6\xf8-\u037d\u037f-\u1fff\u200c\u200d"
+    "\u203f\u2040\u2070-\u218f\u2c00-\u2fef\u3001-\ud7ff\uf900-\ufdcf\ufdf0-\ufffd"
+    "\U00010000-\U000effff]"
+)
+_NOT_NAME_START = frozenset("-.0123456789\xb7\u203f\u2040") | {chr(c) for c in range(0x300, 0x370)}
+
+
+def check_text(value: str, what: str = "text") -> str:
+    r"""Return ``value``, or raise when it holds a character XML cannot carry.
+
+    Such text (NUL and other control characters, lone surrogates) could be
+    built but not written and read back, so no node accepts it.
+
+    Example:
+        >>> check_text("arm\x00")
+        Traceback (most recent call last):
+        ...
+        mjcf_model.errors.MjcfValueError: text 'arm\x00' holds U+0000, which XML cannot carry
+
+    """
+    bad = NOT_XML_CHARACTER.search(value)
+    if bad is not None:
+        raise MjcfValueError(
+            f"{what} {_shortened(value)!r} holds U+{ord(bad.group()):04X}, which XML cannot carry"
+        )
+    return value
+
+
+def check_name(value: str, what: str = "name") -> str:
+    """Return ``value``, or raise unless it is an XML name (a tag or an attribute name).
+
+    Example:
+        >>> check_name("geom"), check_name("xmlns:mj")
+        ('geom', 'xmlns:mj')
+        >>> check_name("1st")
+        Traceback (most recent call last):
+        ...
+        mjcf_model.errors.MjcfValueError: name '1st' is not an XML name
+
+    """
+    if not value or value[0] in _NOT_NAME_START or _NOT_NAME_CHARACTER.search(value):
+        raise MjcfValueError(f"{what} {_shortened(value)!r} is not an XML name")
+    return value
+
+
 def to_str(value: str | None) -> str | None:
-    """Accept a string (names, references, keywords, file names) unchanged.
+    """Accept a string (names, references, keywords, file names) that XML can carry.
 
     Example:
         >>> to_str("torso")
         'torso'
 
     """
-    if value is None or isinstance(value, str):
+    if value is None:
         return value
-    raise MjcfValueError(f"expected text, found {value!r}")
+    if isinstance(value, str):
+        return check_text(value)
+    if type(value) is Unparsed:
+        return value  # type: ignore[return-value]
+    raise MjcfValueError(f"expected text, found {_shortened(value)!r}")
 
 
 def to_float(value: str | float | None) -> float | None:
@@ -150,6 +284,8 @@ def to_float(value: str | float | None) -> float | None:
     if isinstance(value, str):
         (item,) = _floats(value, 1, 1)
         return item
+    if type(value) is Unparsed:
+        return value  # type: ignore[return-value]
     return _parse_float(value, value)
 
 
@@ -166,8 +302,10 @@ def to_int(value: str | int | None) -> int | None:
     if isinstance(value, str):
         tokens = value.split()
         if len(tokens) != 1:
-            raise MjcfValueError(f"expected one integer, found {value!r}")
+            raise MjcfValueError(f"expected one integer, found {_shortened(value)!r}")
         return _parse_int(tokens[0], value)
+    if type(value) is Unparsed:
+        return value  # type: ignore[return-value]
     return _parse_int(value, value)
 
 
@@ -179,7 +317,7 @@ def to_bool(value: str | bool | None) -> bool | None:
         False
 
     """
-    if value is None or isinstance(value, bool):
+    if value is None or isinstance(value, bool) or type(value) is Unparsed:
         return value
     if value == "true":
         return True
@@ -209,9 +347,9 @@ def to_ints(value: object) -> Ints | None:
         (0, 1, 2)
 
     """
-    if value is None:
-        return None
-    return tuple(_parse_int(t, value) for t in _tokens(value))
+    if value is None or type(value) is Unparsed:
+        return value  # type: ignore[return-value]
+    return tuple(_parse_int(t, _shortened(value)) for t in _tokens(value))
 
 
 def to_vec2(value: object) -> Floats | None:
@@ -270,7 +408,7 @@ class OneOf:
 
     def __call__(self, _instance: Any, _attribute: Any, value: str | None) -> None:
         """Raise :class:`MjcfValueError` unless ``value`` is ``None`` or allowed."""
-        if value is not None and value not in self.allowed:
+        if value is not None and value not in self.allowed and type(value) is not Unparsed:
             raise MjcfValueError(f"expected one of {self._listing}, found {value!r}")
 
     def __repr__(self) -> str:
@@ -315,6 +453,8 @@ def format_value(value: Value) -> str:
     """
     if isinstance(value, str):
         return value
+    if type(value) is Unparsed:
+        return value.text
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):

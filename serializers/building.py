@@ -10,19 +10,19 @@ element to :func:`build_element`, so the two cannot disagree.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any
 
 from mjcf_model.base import (
     AnyElement,
     GenericElement,
     Node,
-    TypedElement,
     build_node,
     field_table,
 )
-from mjcf_model.errors import MjcfValueError
+from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.values import Unparsed
 
 __all__ = ["build_element", "element_step", "element_text"]
 
@@ -61,14 +61,24 @@ def element_step(tag: str, attributes: Sequence[tuple[str, str]], index: int) ->
     return tag if index == 1 else f"{tag}[{index}]"
 
 
+#: Adds the file, line and element path to an error about the element being built.
+Locate = Callable[[MjcfError], MjcfError]
+
+
 def build_element(
     key: str | None,
     tag: str,
     attributes: Sequence[tuple[str, str]],
     children: Sequence[Node],
     text: str | None,
+    locate: Locate | None = None,
 ) -> AnyElement:
     """Build the node for one element from its parsed parts.
+
+    An attribute text its typed field cannot read is kept verbatim as an
+    :class:`~mjcf_model.values.Unparsed` value (MuJoCo is the judge of what it
+    reads: ``size="0x10"`` is 16 to it); using that value raises the error,
+    located by ``locate``.
 
     Args:
         key: The element's schema key (see :func:`mjcf_model.namespaces.child_key`).
@@ -76,10 +86,11 @@ def build_element(
         attributes: ``(name, text)`` pairs in source order.
         children: The already built child nodes.
         text: Character data, or ``None`` when there is none but white space.
+        locate: Adds file, line and path to an error about this element.
 
-    Raises:
-        MjcfValueError: An attribute value does not fit its field; the message
-            names the attribute (the caller adds file, line and path).
+    Example:
+        >>> build_element("body/geom", "geom", [("size", "1 x")], [], None).size
+        Unparsed('1 x')
 
     """
     cls = CLASS_BY_KEY.get(key) if key is not None else None
@@ -104,20 +115,16 @@ def build_element(
     try:
         return build_node(cls, fields)
     except MjcfValueError:
-        raise _blame_attribute(cls, table, attributes) from None
-
-
-def _blame_attribute(
-    cls: type[TypedElement], table: dict[str, str], attributes: Sequence[tuple[str, str]]
-) -> MjcfValueError:
-    """Find the attribute whose value the class rejects (only on the error path)."""
-    for name, value in attributes:
+        pass
+    for name, value in attributes:  # only on the error path: find the values it cannot read
         field = table.get(name)
         if field is None:
             continue
-        single: dict[str, Any] = {field: value}
         try:
-            cls(**single)
+            build_node(cls, {field: value})
         except MjcfValueError as error:
-            return MjcfValueError(f"attribute {name!r}: {error.detail}")
-    return MjcfValueError(f"<{cls.tag}> rejects the combination of its attributes")
+            problem: MjcfError = MjcfValueError(f"attribute {name!r}: {error.detail}")
+            if locate is not None:
+                problem = locate(problem)
+            fields[field] = Unparsed(value, str(problem))
+    return build_node(cls, fields)

@@ -12,6 +12,7 @@ never sees a DTD or an entity: both are refused.
 from __future__ import annotations
 
 import os
+import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import IO, Any, NoReturn
@@ -19,7 +20,7 @@ from xml.parsers import expat
 
 import attrs
 
-from mjcf_model.base import AnyElement, Comment, Node
+from mjcf_model.base import AnyElement, Comment, GenericElement, Node, TypedElement
 from mjcf_model.errors import (
     MjcfError,
     MjcfIncludeError,
@@ -28,6 +29,8 @@ from mjcf_model.errors import (
 )
 from mjcf_model.namespaces import child_key, children_context, guess_context
 from mjcf_model.nodes.root import Include, Mujoco
+from mjcf_model.traversal import map_tree, with_children
+from mjcf_model.values import NOT_XML_CHARACTER
 from serializers.building import build_element, element_step, element_text
 
 __all__ = ["from_etree", "load", "loads"]
@@ -60,6 +63,19 @@ class _Session:
     include_chain: tuple[Path, ...] = ()
 
 
+@attrs.define
+class _PendingInclude:
+    """An ``<include>`` met while reading a file, to be replaced by its file's elements."""
+
+    node: Include
+    #: The file the ``<include>`` stands in, and where, for errors.
+    filename: str
+    line: int
+    path: str
+    #: The schema context of the including element: the included elements are read in it.
+    context: str
+
+
 class _Reader:
     """Builds nodes from expat events for one document."""
 
@@ -70,7 +86,10 @@ class _Reader:
         self.include_context = include_context
         self.stack: list[_Open] = []
         self.top: list[Node] = []  # comments around the root, and the root itself
-        self.parser = expat.ParserCreate()
+        #: The ``<include>`` elements read, when includes are inlined.
+        self.includes: list[_PendingInclude] = []
+        # MuJoCo reads the bytes as UTF-8 whatever the XML declaration says; so do we.
+        self.parser = expat.ParserCreate(encoding="utf-8")
         self.parser.ordered_attributes = True
         self.parser.buffer_text = True
         self.parser.SetParamEntityParsing(expat.XML_PARAM_ENTITY_PARSING_NEVER)
@@ -126,8 +145,8 @@ class _Reader:
             context, index = None, 1
         key = child_key(context, tag)
         inner = children_context(key, context)
-        if not self.stack and key == "mujoco" and self.include_context is not None:
-            inner = self.include_context
+        if not self.stack and self.include_context is not None:
+            inner = self.include_context  # MuJoCo takes the root's children, whatever its tag
         self.stack.append(
             _Open(
                 tag=tag,
@@ -143,16 +162,36 @@ class _Reader:
         item = self.stack.pop()
         text = element_text(item.text, bool(item.children))
         try:
-            node = build_element(item.key, item.tag, item.attributes, item.children, text)
+            node = build_element(
+                item.key,
+                item.tag,
+                item.attributes,
+                item.children,
+                text,
+                lambda error: error.located(
+                    file=self.filename, line=item.line, path=self.path_to(item)
+                ),
+            )
         except MjcfError as error:
             raise error.located(
                 file=self.filename, line=item.line, path=self.path_to(item)
             ) from None
         siblings = self.stack[-1].children if self.stack else self.top
+        siblings.append(node)
         if self.session.inline_includes and isinstance(node, Include):
-            siblings.extend(self.included(node, item))
-        else:
-            siblings.append(node)
+            if not node.file:
+                raise MjcfIncludeError(
+                    "<include> needs a 'file' attribute",
+                    file=self.filename,
+                    line=item.line,
+                    path=self.path_to(item),
+                )
+            context = self.stack[-1].context if self.stack else None
+            self.includes.append(
+                _PendingInclude(
+                    node, self.filename, item.line, self.path_to(item), context or "mujoco"
+                )
+            )
 
     def comment(self, text: str) -> None:
         (self.stack[-1].children if self.stack else self.top).append(Comment(text=text))
@@ -161,102 +200,262 @@ class _Reader:
         if self.stack:
             self.stack[-1].text.append(data)
 
-    # -- includes -----------------------------------------------------------------
-
-    def included(self, node: Include, item: _Open) -> list[Node]:
-        """The nodes an ``<include>`` stands for, read in the including element's context."""
-        if not node.file:
-            raise MjcfIncludeError(
-                "<include> needs a 'file' attribute",
-                file=self.filename,
-                line=item.line,
-                path=self.path_to(item),
-            )
-        path = self.resolve_include(node.file, item)
-        chain = self.session.include_chain
-        if path in chain:
-            cycle = " -> ".join(str(p) for p in (*chain[chain.index(path) :], path))
-            raise MjcfIncludeError(
-                f"include cycle: {cycle}",
-                file=self.filename,
-                line=item.line,
-                path=self.path_to(item),
-            )
-        session = attrs.evolve(self.session, include_chain=(*chain, path))
-        try:
-            data = path.read_bytes()
-        except OSError as error:
-            raise MjcfIncludeError(
-                f"cannot read included file {str(path)!r}: {error.strerror}",
-                file=self.filename,
-                line=item.line,
-                path=self.path_to(item),
-            ) from None
-        parent_context = self.stack[-1].context if self.stack else None
-        root = _read(data, str(path), session, parent_context or "mujoco")
-        return list(root.children)
-
-    def resolve_include(self, file: str, item: _Open) -> Path:
-        """Find an included file as MuJoCo does.
-
-        MuJoCo looks beside the main model first, then beside the including file.
-        """
-        candidates: list[Path] = []
-        if self.session.main_dir is not None:
-            candidates.append(self.session.main_dir / file)
-        if self.filename != _STRING:
-            here = Path(self.filename).parent / file
-            if here not in candidates:
-                candidates.append(here)
-        for candidate in candidates:
-            if candidate.is_file():
-                return candidate.resolve()
-        looked = ", ".join(repr(str(c)) for c in candidates) or "nowhere (no base directory)"
-        raise MjcfIncludeError(
-            f"included file {file!r} not found; looked in {looked}",
-            file=self.filename,
-            line=item.line,
-            path=self.path_to(item),
-        )
-
     # -- driver -------------------------------------------------------------------
 
     def parse(self, data: str | bytes) -> list[Node]:
+        """Read one document; text MuJoCo's lenient parser reads is repaired first."""
+        raw = data.encode("utf-8", "surrogatepass") if isinstance(data, str) else data
         try:
-            self.parser.Parse(data, True)
+            self.parser.Parse(raw, True)
         except expat.ExpatError as error:
-            path = self.path_to(None) if self.stack else None
-            message = expat.errors.messages[error.code] if error.code else str(error)
-            raise MjcfSyntaxError(
-                f"malformed XML: {message} (column {error.offset + 1})",
-                file=self.filename,
-                line=error.lineno,
-                path=path,
-            ) from None
+            if self.completed_root(error, raw):
+                return self.top  # MuJoCo reads the first root element and ignores what follows
+            repaired = _escape_stray_markup(raw)
+            if repaired is not None:
+                retry = _Reader(self.filename, self.session, self.include_context)
+                try:
+                    top = retry.parse(repaired)
+                except MjcfSyntaxError:
+                    pass
+                else:
+                    self.includes = retry.includes
+                    return top
+            raise self.syntax_error(error, raw) from None
         return self.top
 
+    def completed_root(self, error: expat.ExpatError, raw: bytes) -> bool:
+        """Whether ``error`` is an element after a complete root, which MuJoCo ignores."""
+        if error.code != expat.errors.codes[expat.errors.XML_ERROR_JUNK_AFTER_DOC_ELEMENT]:
+            return False
+        if self.stack or not any(not isinstance(n, Comment) for n in self.top):
+            return False
+        return raw[self.parser.ErrorByteIndex : self.parser.ErrorByteIndex + 1] == b"<"
 
-def _read(
+    def syntax_error(self, error: expat.ExpatError, raw: bytes) -> MjcfSyntaxError:
+        path = self.path_to(None) if self.stack else None
+        message = expat.errors.messages[error.code] if error.code else str(error)
+        detail = f"malformed XML: {message} (column {error.offset + 1})"
+        index = self.parser.ErrorByteIndex
+        if index >= 0:
+            found = raw[index : index + 4].decode("utf-8", "replace")[:1]
+            if found and NOT_XML_CHARACTER.match(found):
+                detail += (
+                    f"; U+{ord(found):04X} is a character XML cannot carry (MuJoCo's own"
+                    " parser reads it, mjcf-model refuses it: remove it or write it out)"
+                )
+        return MjcfSyntaxError(detail, file=self.filename, line=error.lineno, path=path)
+
+
+#: The characters that start markup or a reference (single character classes).
+_TEXT_MARK = re.compile(b"[<&]")
+_TAG_MARK = re.compile(b"[<&\"'>]")
+_REFERENCES = (b"&amp;", b"&lt;", b"&gt;", b"&quot;", b"&apos;")
+
+
+def _is_reference(raw: bytes, index: int) -> bool:
+    """Whether the ``&`` at ``index`` starts a reference MuJoCo's parser resolves."""
+    if raw.startswith(_REFERENCES, index):
+        return True
+    if not raw.startswith(b"&#", index):
+        return False
+    digits = b"0123456789abcdefABCDEF" if raw.startswith(b"&#x", index) else b"0123456789"
+    start = index + (3 if digits[10:] else 2)
+    end = start
+    while end < len(raw) and end - start < 10 and raw[end] in digits:
+        end += 1
+    return end > start and raw[end : end + 1] == b";"
+
+
+def _escape_stray_markup(raw: bytes) -> bytes | None:
+    """Escape what MuJoCo's parser reads as plain characters and expat refuses.
+
+    tinyxml2 (MuJoCo's parser) reads an ``&`` that starts no reference, and a
+    ``<`` inside an attribute value, as themselves. Both are escaped here so the
+    values read the same; comments, CDATA sections and processing instructions
+    are left alone. ``None`` when there is nothing to escape. Linear in the input.
+    """
+    out: list[bytes] = []
+    start = index = 0
+    length = len(raw)
+    while index < length:
+        found = _TEXT_MARK.search(raw, index)
+        if found is None:
+            break
+        index = found.start()
+        if raw[index] == ord("&"):
+            if not _is_reference(raw, index):
+                out += (raw[start:index], b"&amp;")
+                start = index + 1
+            index += 1
+            continue
+        for opening, closing in ((b"<!--", b"-->"), (b"<![CDATA[", b"]]>"), (b"<?", b"?>")):
+            if raw.startswith(opening, index):
+                end = raw.find(closing, index + len(opening))
+                index = length if end < 0 else end + len(closing)
+                break
+        else:
+            quote = 0
+            index += 1
+            while index < length:
+                mark = _TAG_MARK.search(raw, index)
+                if mark is None:
+                    index = length
+                    break
+                index = mark.start()
+                char = raw[index]
+                if quote:
+                    if char == quote:
+                        quote = 0
+                    elif char == ord("<") or (char == ord("&") and not _is_reference(raw, index)):
+                        out += (raw[start:index], b"&lt;" if char == ord("<") else b"&amp;")
+                        start = index + 1
+                elif char in b"\"'":
+                    quote = char
+                elif char == ord(">"):
+                    index += 1
+                    break
+                index += 1
+    if not out:
+        return None
+    out.append(raw[start:])
+    return b"".join(out)
+
+
+@attrs.define
+class _Document:
+    """One file being read, and the ``<include>`` elements in it not yet replaced."""
+
+    root: Mujoco | AnyElement
+    includes: list[_PendingInclude]
+    filename: str
+    #: The included elements found so far, by the ``<include>`` node they replace.
+    found: dict[int, tuple[Node, ...]] = attrs.field(factory=dict)
+
+
+def _parse(
     data: str | bytes, filename: str, session: _Session, include_context: str | None = None
-) -> Mujoco:
-    """Parse one document whose root must be ``<mujoco>``.
+) -> _Document:
+    """Parse one document; the main file's root must be ``<mujoco>``.
 
     Comments before and after the root become its first and last children. An
     included file's root children are read in ``include_context``, the context of
-    the element that includes it.
+    the element that includes it; MuJoCo takes them whatever the root's tag is.
     """
-    top = _Reader(filename, session, include_context).parse(data)
+    reader = _Reader(filename, session, include_context)
+    top = reader.parse(data)
     roots = [n for n in top if not isinstance(n, Comment)]
-    if len(roots) != 1 or not isinstance(roots[0], Mujoco):
-        found = roots[0].tag if roots and isinstance(roots[0], AnyElement) else "nothing"
+    root = roots[0] if roots else None
+    if root is None or (include_context is None and not isinstance(root, Mujoco)):
+        found = root.tag if isinstance(root, (TypedElement, GenericElement)) else "nothing"
         raise MjcfSyntaxError(f"expected a <mujoco> root element, found <{found}>", file=filename)
-    root = roots[0]
+    assert isinstance(root, (TypedElement, GenericElement))
     index = top.index(root)
     before = top[:index]
-    after = top[index + 1 :]
+    after = [n for n in top[index + 1 :] if isinstance(n, Comment)]
     if before or after:
-        root = attrs.evolve(root, children=(*before, *root.children, *after))
-    return root
+        root = with_children(root, [*before, *root.children, *after])
+    return _Document(root, reader.includes, filename)
+
+
+def _read(data: str | bytes, filename: str, session: _Session) -> Mujoco:
+    """Read the main document, and with ``inline_includes`` every file it includes.
+
+    Included files are read one after another from an explicit stack, not by
+    recursion, so an include chain as long as MuJoCo follows (it has no limit)
+    is read too.
+    """
+    stack = [_parse(data, filename, session)]
+    reading = {path: 0 for path in session.include_chain}
+    while True:
+        document = stack[-1]
+        if len(document.found) < len(document.includes):
+            pending = document.includes[len(document.found)]
+            path = _resolve_include(pending, session)
+            if path in reading:
+                chain = [*session.include_chain, *(Path(d.filename) for d in stack[1:]), path]
+                cycle = " -> ".join(str(p) for p in chain[chain.index(path) :])
+                raise MjcfIncludeError(
+                    f"include cycle: {cycle}",
+                    file=pending.filename,
+                    line=pending.line,
+                    path=pending.path,
+                )
+            try:
+                data = path.read_bytes()
+            except OSError as error:
+                raise _include_error(
+                    pending, f"cannot read included file {str(path)!r}", error
+                ) from None
+            reading[path] = len(stack)
+            stack.append(_parse(data, str(path), session, pending.context))
+            continue
+        stack.pop()
+        root = _splice(document)
+        if not stack:
+            assert isinstance(root, Mujoco)
+            return root
+        reading.pop(Path(document.filename), None)
+        parent = stack[-1]
+        parent.found[id(parent.includes[len(parent.found)].node)] = root.children
+
+
+def _splice(document: _Document) -> Mujoco | AnyElement:
+    """The document's root with each ``<include>`` replaced by the elements it stands for."""
+    if not document.found:
+        return document.root
+    found = document.found
+
+    def expand(node: Node) -> Node:
+        if isinstance(node, (TypedElement, GenericElement)) and any(
+            id(c) in found for c in node.children
+        ):
+            children: list[Node] = []
+            for child in node.children:
+                children.extend(found.get(id(child), (child,)))
+            return with_children(node, children)
+        return node
+
+    return map_tree(expand, document.root)  # type: ignore[return-value]
+
+
+def _include_error(pending: _PendingInclude, what: str, error: OSError) -> MjcfIncludeError:
+    return MjcfIncludeError(
+        f"{what}: {error.strerror or error}",
+        file=pending.filename,
+        line=pending.line,
+        path=pending.path,
+    )
+
+
+def _resolve_include(pending: _PendingInclude, session: _Session) -> Path:
+    """Find an included file as MuJoCo does.
+
+    MuJoCo looks beside the main model first, then beside the including file.
+    """
+    file = pending.node.file
+    assert file
+    candidates: list[Path] = []
+    if session.main_dir is not None:
+        candidates.append(session.main_dir / file)
+    if pending.filename != _STRING:
+        here = Path(pending.filename).parent / file
+        if here not in candidates:
+            candidates.append(here)
+    for candidate in candidates:
+        try:
+            if candidate.is_file():
+                return candidate.resolve()
+        except OSError as error:  # a name too long, a loop of links
+            raise _include_error(
+                pending, f"cannot look for included file {file!r}", error
+            ) from None
+    looked = ", ".join(repr(str(c)) for c in candidates) or "nowhere (no base directory)"
+    raise MjcfIncludeError(
+        f"included file {file!r} not found; looked in {looked}",
+        file=pending.filename,
+        line=pending.line,
+        path=pending.path,
+    )
 
 
 def loads(
