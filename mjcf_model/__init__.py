@@ -38,8 +38,10 @@ from mjcf_model.nodes import *  # noqa: F403  (every node class; listed in nodes
 from mjcf_model.queries import Categories, categorized, find, find_all, parent_of
 from mjcf_model.scaling import scaled
 from mjcf_model.traversal import map_elements, map_tree, walk
+from mjcf_model.values import Unparsed
 
 __all__ = [
+    "Unparsed",
     "AttributeMap",
     "Categories",
     "Comment",

@@ -185,12 +185,78 @@ def _optional_text(_instance: Any, _attribute: Any, value: str | None) -> None:
         check_text(value, "element text")
 
 
+_SHALLOW: dict[type, Any] = {}
+
+
+def _shallow(node: Node) -> tuple[Any, ...]:
+    """The values ``==`` compares on ``node`` itself, its children left out."""
+    cls = type(node)
+    getter = _SHALLOW.get(cls)
+    if getter is None:
+        names = [f.name for f in attrs.fields(cls) if f.eq and f.name != "children"]
+        if names:
+            get = operator.attrgetter(*names)
+            getter = (lambda n: (get(n),)) if len(names) == 1 else get
+        else:
+            getter = lambda n: ()  # noqa: E731
+        _SHALLOW[cls] = getter
+    values: tuple[Any, ...] = getter(node)
+    return values
+
+
+class Subtree:
+    """What ``==`` and ``hash`` see of an element's ``children``: the whole forest below.
+
+    Comparing and hashing walk the forest with an explicit stack, not by
+    recursion, so trees of any depth compare and hash (MuJoCo reads bodies
+    nested 496 deep; an include chain makes deeper ones). Shared subtrees are
+    skipped by identity.
+    """
+
+    __slots__ = ("children",)
+
+    def __init__(self, children: tuple[Node, ...]) -> None:
+        #: The children of the element compared.
+        self.children = children
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Subtree):
+            return NotImplemented
+        stack = [(self.children, other.children)]
+        while stack:
+            left, right = stack.pop()
+            if left is right:
+                continue
+            if len(left) != len(right):
+                return False
+            for a, b in zip(left, right, strict=True):
+                if a is b:
+                    continue
+                if type(a) is not type(b) or _shallow(a) != _shallow(b):
+                    return False
+                if isinstance(a, Element):
+                    stack.append((a.children, b.children))  # type: ignore[attr-defined]
+        return True
+
+    def __hash__(self) -> int:
+        parts: list[int] = []
+        stack = [self.children]
+        while stack:
+            forest = stack.pop()
+            parts.append(len(forest))
+            for node in forest:
+                parts.append(hash((type(node), _shallow(node))))
+                if isinstance(node, Element):
+                    stack.append(node.children)
+        return hash(tuple(parts))
+
+
 @attrs.frozen(kw_only=True)
 class Element(Node):
     """Base of every element node, typed or generic."""
 
-    #: Child elements and comments, in document order.
-    children: tuple[Node, ...] = attrs.field(default=(), converter=to_children)
+    #: Child elements and comments, in document order (compared as a :class:`Subtree`).
+    children: tuple[Node, ...] = attrs.field(default=(), converter=to_children, eq=Subtree)
     #: Character data inside the element, unless it is only white space.
     text: str | None = attrs.field(default=None, validator=_optional_text)
 

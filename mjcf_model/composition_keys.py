@@ -18,6 +18,8 @@ follow (MuJoCo itself completes a key that stops early).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import attrs
 
 from mjcf_model.base import (
@@ -71,7 +73,7 @@ def _joints(model: Mujoco, target: AnyElement | None) -> list[_Joint]:
 
 
 def _qpos0(
-    joint: AnyElement, kind: str, ancestors: tuple[AnyElement, ...], classes: DefaultClasses
+    joint: AnyElement, kind: str, ancestors: Sequence[AnyElement], classes: DefaultClasses
 ) -> tuple[float, ...] | str:
     if kind in ("hinge", "slide"):
         return numbers(classes.resolve(joint, ancestors, "ref")) or (0.0,)

@@ -15,7 +15,7 @@ class's parents. Transforms that depend on a value written elsewhere (a joint's
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from types import MappingProxyType
 
 import attrs
@@ -119,7 +119,7 @@ class DefaultClasses:
                     return value, current
         return None
 
-    def class_of(self, element: AnyElement, ancestors: tuple[AnyElement, ...]) -> str:
+    def class_of(self, element: AnyElement, ancestors: Sequence[AnyElement]) -> str:
         """The class ``element`` takes defaults from: its own, an inherited ``childclass``, or main.
 
         For an element inside ``<default>`` it is the enclosing class.
@@ -146,7 +146,7 @@ class DefaultClasses:
     def resolve(
         self,
         element: AnyElement,
-        ancestors: tuple[AnyElement, ...],
+        ancestors: Sequence[AnyElement],
         attribute: str,
         tag: str | None = None,
     ) -> Value | None:

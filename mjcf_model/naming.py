@@ -28,7 +28,7 @@ the new name explicitly.
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Collection, Iterator, Mapping
+from collections.abc import Callable, Collection, Iterator, Mapping, Sequence
 
 from mjcf_model.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.errors import MjcfValueError
@@ -179,7 +179,7 @@ def _selectors(element: AnyElement, spec: ElementSpec) -> dict[str, Value | None
 
 
 def _apply(node: AnyElement, rename: Renamer, attach_prefix: str | None) -> AnyElement:
-    def visit(element: AnyElement, key: str | None, _: tuple[AnyElement, ...]) -> AnyElement:
+    def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
         refuse_opaque(element, key, "rename names in")
         changes = _renamed_attributes(element, key, rename)
         if attach_prefix and key == "body/attach":

@@ -24,6 +24,7 @@ conventions and are an approximation (see :func:`scaled`).
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import Literal
 
 import numpy as np
@@ -100,9 +101,7 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     classes = DefaultClasses.of(node)
     context = ScaleContext(factors=factors, mass=mass, classes=classes, model=node)
 
-    def visit(
-        element: AnyElement, key: str | None, ancestors: tuple[AnyElement, ...]
-    ) -> AnyElement:
+    def visit(element: AnyElement, key: str | None, ancestors: Sequence[AnyElement]) -> AnyElement:
         refuse_opaque(element, key, "scale")
         if key is None:
             return element

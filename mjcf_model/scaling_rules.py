@@ -11,7 +11,7 @@ per schema key from these pieces.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Any
 
 import attrs
@@ -108,7 +108,7 @@ class ScaleContext:
 
 
 #: ``rule(element, ancestors, context)``: the attribute changes that scale ``element``.
-Rule = Callable[[AnyElement, tuple[AnyElement, ...], ScaleContext], Changes]
+Rule = Callable[[AnyElement, Sequence[AnyElement], ScaleContext], Changes]
 
 
 def numbers(value: Value | None) -> tuple[float, ...] | None:
@@ -142,7 +142,7 @@ def times(value: Value, factors: Any) -> Value:
     return result
 
 
-def _in_default(ancestors: tuple[AnyElement, ...]) -> bool:
+def _in_default(ancestors: Sequence[AnyElement]) -> bool:
     return bool(ancestors) and ancestors[-1].tag == "default"
 
 
@@ -150,7 +150,7 @@ def _scale(attribute: str, factors: Callable[[ScaleContext], Any]) -> Rule:
     """Multiply ``attribute`` where written."""
 
     def rule(
-        element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+        element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
     ) -> Changes:
         value = get_attribute(element, attribute)
         if numbers(value) is None:
@@ -175,7 +175,7 @@ def parts(attribute: str, unit: tuple[float, ...], start: int) -> Rule:
     """Multiply the values from index ``start`` on (friction: torsion and rolling)."""
 
     def rule(
-        element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+        element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
     ) -> Changes:
         found = numbers(get_attribute(element, attribute))
         if found is None:
@@ -214,7 +214,7 @@ def with_builtin(
     attribute: str,
     tag: str,
     builtin: Callable[[], tuple[float, ...]],
-    factors: Callable[[AnyElement, tuple[AnyElement, ...], ScaleContext], Any],
+    factors: Callable[[AnyElement, Sequence[AnyElement], ScaleContext], Any],
 ) -> Rule:
     """Scale ``attribute``; where nothing sets it, write MuJoCo's default (``builtin()``) scaled.
 
@@ -224,7 +224,7 @@ def with_builtin(
     """
 
     def rule(
-        element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+        element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
     ) -> Changes:
         value = get_attribute(element, attribute)
         own = numbers(value)
@@ -256,7 +256,7 @@ def combine(*rules: Rule | list[Rule]) -> Rule:
         flat.extend(given if isinstance(given, list) else [given])
 
     def rule(
-        element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+        element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
     ) -> Changes:
         changes: Changes = {}
         for part in flat:
@@ -267,7 +267,7 @@ def combine(*rules: Rule | list[Rule]) -> Rule:
 
 
 def _no_lengths(
-    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
     return {}
 
@@ -298,7 +298,7 @@ def joint_layout(node: AnyElement, classes: DefaultClasses) -> tuple[JointInfo, 
 
 
 def joint_type(
-    element: AnyElement, key: str | None, ancestors: tuple[AnyElement, ...], classes: DefaultClasses
+    element: AnyElement, key: str | None, ancestors: Sequence[AnyElement], classes: DefaultClasses
 ) -> str | None:
     """The type of a body's joint: ``free``, ``ball``, ``slide`` or ``hinge``.
 

@@ -9,7 +9,7 @@
 from __future__ import annotations
 
 import functools
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from types import MappingProxyType
 
 import numpy as np
@@ -61,12 +61,12 @@ def _builtin(tag: str, attribute: str) -> tuple[float, ...]:
     return tuple(values)
 
 
-def _mean(element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext) -> float:
+def _mean(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext) -> float:
     return context.mean
 
 
 def _per_axis(
-    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> tuple[float, float, float]:
     return context.factors
 
@@ -77,7 +77,7 @@ def _builtin_length(attribute: str, tag: str) -> Rule:
 
 
 def _size_factors(
-    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> list[float]:
     """Robosuite's per-axis convention for geom and site sizes, by how many are written.
 
@@ -92,7 +92,7 @@ def _size_factors(
 
 
 def _geom_size(
-    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
     """Scale a geom's ``size`` (every value is a length, whatever the type)."""
     size = numbers(get_attribute(element, "size"))
@@ -116,9 +116,7 @@ def _slide_factor(kind: object, axis: object, context: ScaleContext) -> float:
 _JOINT_LENGTHS = ("range", "ref", "springref", "margin")
 
 
-def _joint(
-    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
-) -> Changes:
+def _joint(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext) -> Changes:
     """Ranges, references and margins are lengths for slide joints only.
 
     A value a joint inherits was scaled in its class when that class's joints
@@ -161,7 +159,7 @@ def _materialized(attribute: str, tag: str) -> Rule:
     """
 
     def rule(
-        element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+        element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
     ) -> Changes:
         value = context.classes.resolve(element, ancestors, attribute, tag)
         if numbers(value) is None:
@@ -176,7 +174,7 @@ _TENDON_LENGTHS = [_materialized(a, "tendon") for a in ("range", "springlength",
 
 
 def _spatial_tendon(
-    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
     changes = combine(*_TENDON_LENGTHS)(element, ancestors, context)
     width = numbers(context.classes.resolve(element, ancestors, "width", "tendon"))
@@ -185,7 +183,7 @@ def _spatial_tendon(
 
 
 def _fixed_tendon(
-    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
     """A fixed tendon's length is a length only when every joint in it slides."""
     joints = [context.joint(get_attribute(c, "joint")) for c in element.elements]
@@ -195,7 +193,7 @@ def _fixed_tendon(
 
 
 def _position_ctrlrange(
-    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
     """A position actuator on a slide joint takes targets in length units."""
     info = context.joint(get_attribute(element, "joint"))
@@ -206,7 +204,7 @@ def _position_ctrlrange(
 
 
 def _keyframe(
-    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
     """Mocap positions, and the slide and free-joint parts of ``qpos`` and ``qvel``."""
     changes = points("mpos")[0](element, ancestors, context)
@@ -232,9 +230,7 @@ def _keyframe(
     return changes
 
 
-def _hfield(
-    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
-) -> Changes:
+def _hfield(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext) -> Changes:
     size = numbers(get_attribute(element, "size"))
     if size is None:
         return {}
@@ -243,7 +239,7 @@ def _hfield(
 
 
 def _weld_relpose(
-    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
     """The first three of ``relpose`` are a position; the rest a quaternion."""
     pose = numbers(get_attribute(element, "relpose"))
@@ -255,7 +251,7 @@ def _weld_relpose(
 
 
 def _cylinder_area(
-    element: AnyElement, ancestors: tuple[AnyElement, ...], context: ScaleContext
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
     area = get_attribute(element, "area")
     return {} if area is None else {"area": times(area, context.mean**2)}

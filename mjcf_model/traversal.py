@@ -17,7 +17,7 @@ True
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Sequence
-from typing import TypeVar
+from typing import TypeVar, overload
 
 import attrs
 
@@ -35,6 +35,7 @@ from mjcf_model.namespaces import child_key, children_context, guess_context
 
 __all__ = [
     "GUESS",
+    "Ancestors",
     "Path",
     "ElementVisitor",
     "keyed_walk",
@@ -50,11 +51,79 @@ __all__ = [
 Path = tuple[int, ...]
 
 #: ``fn(element, schema key, ancestors root first)``, as :func:`map_elements` calls it.
-ElementVisitor = Callable[[AnyElement, str | None, tuple[AnyElement, ...]], AnyElement]
+ElementVisitor = Callable[[AnyElement, str | None, Sequence[AnyElement]], AnyElement]
 
 _E = TypeVar("_E", bound=Element)
 _N = TypeVar("_N", bound=Node)
 _A = TypeVar("_A", bound=TypedElement | GenericElement)
+
+
+class Ancestors(Sequence[AnyElement]):
+    """The elements from the root down to a parent, as the walks hand them to visitors.
+
+    Each level extends its parent's ancestors in constant time and shares them,
+    so walking a chain of any depth stays linear; the last ancestors and
+    ``reversed`` are read without copying.
+
+    Example:
+        >>> from mjcf_model import Body
+        >>> a = Ancestors().extended(Body(name="root")).extended(Body(name="arm"))
+        >>> len(a), a[-1].name, [b.name for b in a]
+        (2, 'arm', ['root', 'arm'])
+
+    """
+
+    __slots__ = ("_items", "_last", "_length", "_parent")
+
+    def __init__(self, parent: Ancestors | None = None, last: AnyElement | None = None) -> None:
+        self._parent = parent
+        self._last = last
+        self._length: int = 0 if parent is None else parent._length + 1
+        self._items: tuple[AnyElement, ...] | None = None if parent is not None else ()
+
+    def extended(self, element: AnyElement) -> Ancestors:
+        """These ancestors followed by ``element``."""
+        return Ancestors(self, element)
+
+    def __len__(self) -> int:
+        return self._length
+
+    def __reversed__(self) -> Iterator[AnyElement]:
+        node: Ancestors | None = self
+        while node is not None and node._last is not None:
+            yield node._last
+            node = node._parent
+
+    def __iter__(self) -> Iterator[AnyElement]:
+        return iter(self.as_tuple())
+
+    def as_tuple(self) -> tuple[AnyElement, ...]:
+        """The ancestors as a tuple, root first (built once)."""
+        if self._items is None:
+            items = list(reversed(self))
+            items.reverse()
+            self._items = tuple(items)
+        return self._items
+
+    @overload
+    def __getitem__(self, index: int) -> AnyElement: ...
+    @overload
+    def __getitem__(self, index: slice) -> tuple[AnyElement, ...]: ...
+    def __getitem__(self, index: int | slice) -> AnyElement | tuple[AnyElement, ...]:
+        if index == -1 and self._last is not None:
+            return self._last
+        return self.as_tuple()[index]
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, (Ancestors, tuple)):
+            return self.as_tuple() == tuple(other)
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(self.as_tuple())
+
+    def __repr__(self) -> str:
+        return f"Ancestors({self.as_tuple()!r})"
 
 
 class _Guess:
@@ -106,9 +175,23 @@ def map_tree(fn: Callable[[Node], Node], node: _N) -> Node:
         (['z', 'b'], True)
 
     """
-    if isinstance(node, Element) and node.children:
-        node = with_children(node, [map_tree(fn, child) for child in node.children])
-    return fn(node)
+    if not (isinstance(node, Element) and node.children):
+        return fn(node)
+    # An explicit stack, not recursion: trees of any depth are mapped.
+    stack: list[tuple[Element, list[Node], Iterator[Node]]] = [(node, [], iter(node.children))]
+    while True:
+        parent, mapped, pending = stack[-1]
+        for child in pending:
+            if isinstance(child, Element) and child.children:
+                stack.append((child, [], iter(child.children)))
+                break
+            mapped.append(fn(child))
+        else:
+            stack.pop()
+            result = fn(with_children(parent, mapped))
+            if not stack:
+                return result
+            stack[-1][1].append(result)
 
 
 def schema_key(element: AnyElement, context: str | _Guess | None = GUESS) -> str | None:
@@ -143,27 +226,42 @@ def map_elements(fn: ElementVisitor, node: _A, context: str | _Guess | None = GU
     """
     if isinstance(context, _Guess):
         context = guess_context(node.tag)
-    return _map_elements(fn, node, context, ())  # type: ignore[return-value]
+    return _map_elements(fn, node, context)  # type: ignore[return-value]
 
 
-def _map_elements(
-    fn: ElementVisitor,
-    element: AnyElement,
-    context: str | None,
-    ancestors: tuple[AnyElement, ...],
-) -> AnyElement:
-    key = child_key(context, element.tag)
-    if element.children:
-        inner = children_context(key, context)
-        below = (*ancestors, element)
-        children = [
-            _map_elements(fn, child, inner, below)
-            if isinstance(child, (TypedElement, GenericElement))
-            else child
-            for child in element.children
-        ]
-        element = with_children(element, children)
-    return fn(element, key, ancestors)
+def _map_elements(fn: ElementVisitor, root: AnyElement, context: str | None) -> AnyElement:
+    """:func:`map_elements` with an explicit stack, so trees of any depth are mapped."""
+
+    class Frame:
+        __slots__ = ("ancestors", "element", "inner", "key", "mapped", "pending")
+
+        def __init__(self, element: AnyElement, context: str | None, ancestors: Ancestors):
+            self.element = element
+            self.key = child_key(context, element.tag)
+            self.inner = children_context(self.key, context)
+            self.ancestors = ancestors
+            self.mapped: list[Node] = []
+            self.pending = iter(element.children)
+
+    stack = [Frame(root, context, Ancestors())]
+    while True:
+        frame = stack[-1]
+        below: Ancestors | None = None
+        for child in frame.pending:
+            if isinstance(child, (TypedElement, GenericElement)):
+                below = below or frame.ancestors.extended(frame.element)
+                stack.append(Frame(child, frame.inner, below))
+                break
+            frame.mapped.append(child)
+        else:
+            stack.pop()
+            element = frame.element
+            if element.children:
+                element = with_children(element, frame.mapped)
+            result = fn(element, frame.key, frame.ancestors)
+            if not stack:
+                return result
+            stack[-1].mapped.append(result)
 
 
 def refuse_opaque(element: AnyElement, key: str | None, action: str) -> None:
@@ -223,7 +321,7 @@ def walk(node: Node) -> Iterator[tuple[Path, AnyElement]]:
 
 def keyed_walk(
     node: AnyElement, context: str | _Guess | None = GUESS
-) -> Iterator[tuple[AnyElement, str | None, tuple[AnyElement, ...]]]:
+) -> Iterator[tuple[AnyElement, str | None, Ancestors]]:
     """Yield ``(element, key, ancestors)`` for every element, parents first.
 
     Example:
@@ -234,13 +332,13 @@ def keyed_walk(
     """
     if isinstance(context, _Guess):
         context = guess_context(node.tag)
-    stack: list[tuple[AnyElement, str | None, tuple[AnyElement, ...]]] = [(node, context, ())]
+    stack: list[tuple[AnyElement, str | None, Ancestors]] = [(node, context, Ancestors())]
     while stack:
         element, parent_context, ancestors = stack.pop()
         key = child_key(parent_context, element.tag)
         yield element, key, ancestors
         inner = children_context(key, parent_context)
-        below = (*ancestors, element)
+        below = ancestors.extended(element)
         stack.extend(
             (child, inner, below)
             for child in reversed(element.children)

@@ -174,10 +174,10 @@ expected a number, found '0x10' (kept verbatim: MuJoCo may read what mjcf-model 
 
     __slots__ = ("problem", "text")
 
-    def __init__(self, text: str, problem: str = "") -> None:
+    def __init__(self, text: str, problem: MjcfValueError | None = None) -> None:
         #: The attribute text exactly as read.
         self.text = text
-        #: Why the typed field could not read it, with the place it was read from.
+        #: Why the typed field could not read it, located where it was read.
         self.problem = problem
 
     def __eq__(self, other: object) -> bool:
@@ -187,13 +187,16 @@ expected a number, found '0x10' (kept verbatim: MuJoCo may read what mjcf-model 
         return hash((Unparsed, self.text))
 
     def __repr__(self) -> str:
-        return f"Unparsed({self.text!r})"
+        return f"Unparsed({_shortened(self.text)!r})"
 
     def fail(self, *_args: object) -> Any:
         """Raise the error reading this value found."""
+        problem = self.problem or MjcfValueError(f"cannot read {_shortened(self.text)!r}")
         raise MjcfValueError(
-            f"{self.problem or f'cannot read {self.text!r}'} "
-            "(kept verbatim: MuJoCo may read what mjcf-model cannot)"
+            f"{problem.detail} (kept verbatim: MuJoCo may read what mjcf-model cannot)",
+            file=problem.file,
+            line=problem.line,
+            path=problem.path,
         )
 
     __iter__ = __len__ = __getitem__ = __float__ = __int__ = __index__ = fail
@@ -254,7 +257,7 @@ def check_name(value: str, what: str = "name") -> str:
     return value
 
 
-def to_str(value: str | None) -> str | None:
+def to_str(value: str | Unparsed | None) -> str | None:
     """Accept a string (names, references, keywords, file names) that XML can carry.
 
     Example:
@@ -271,7 +274,7 @@ def to_str(value: str | None) -> str | None:
     raise MjcfValueError(f"expected text, found {_shortened(value)!r}")
 
 
-def to_float(value: str | float | None) -> float | None:
+def to_float(value: str | float | Unparsed | None) -> float | None:
     """Convert text or a number to one float.
 
     Example:
@@ -289,7 +292,7 @@ def to_float(value: str | float | None) -> float | None:
     return _parse_float(value, value)
 
 
-def to_int(value: str | int | None) -> int | None:
+def to_int(value: str | int | Unparsed | None) -> int | None:
     """Convert text or an integral number to an int.
 
     Example:
@@ -309,7 +312,7 @@ def to_int(value: str | int | None) -> int | None:
     return _parse_int(value, value)
 
 
-def to_bool(value: str | bool | None) -> bool | None:
+def to_bool(value: str | bool | Unparsed | None) -> bool | None:
     """Convert MJCF ``"true"``/``"false"`` (or a bool) to a bool.
 
     Example:
@@ -317,8 +320,10 @@ def to_bool(value: str | bool | None) -> bool | None:
         False
 
     """
-    if value is None or isinstance(value, bool) or type(value) is Unparsed:
+    if value is None or isinstance(value, bool):
         return value
+    if type(value) is Unparsed:
+        return value  # type: ignore[return-value]
     if value == "true":
         return True
     if value == "false":
@@ -408,7 +413,7 @@ class OneOf:
 
     def __call__(self, _instance: Any, _attribute: Any, value: str | None) -> None:
         """Raise :class:`MjcfValueError` unless ``value`` is ``None`` or allowed."""
-        if value is not None and value not in self.allowed and type(value) is not Unparsed:
+        if value is not None and value not in self.allowed and not isinstance(value, Unparsed):
             raise MjcfValueError(f"expected one of {self._listing}, found {value!r}")
 
     def __repr__(self) -> str:

@@ -126,5 +126,6 @@ def build_element(
             problem: MjcfError = MjcfValueError(f"attribute {name!r}: {error.detail}")
             if locate is not None:
                 problem = locate(problem)
-            fields[field] = Unparsed(value, str(problem))
+            assert isinstance(problem, MjcfValueError)
+            fields[field] = Unparsed(value, problem)
     return build_node(cls, fields)

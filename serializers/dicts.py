@@ -4,7 +4,9 @@ Every node becomes a dict whose ``"_node"`` key names its class (a
 tag-discriminated union over all node classes; no MJCF attribute starts with
 ``_``, so the key never collides); only written attributes appear.
 Non-finite floats become the strings ``"inf"``, ``"-inf"`` and ``"nan"`` so the
-result passes ``json.dumps(..., allow_nan=False)``.
+result passes ``json.dumps(..., allow_nan=False)``; an
+:class:`~mjcf_model.values.Unparsed` value becomes ``{"_unparsed": text}``.
+Both directions walk the tree with an explicit stack: any depth converts.
 
 >>> from mjcf_model import Geom
 >>> to_dict(Geom(name="g", size=[0.1]))
@@ -17,15 +19,17 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import Any
 
+import attrs
 import cattrs
 from cattrs.strategies import configure_tagged_union, include_subclasses
 
-from mjcf_model.base import AttributeMap, Node
+from mjcf_model.base import AttributeMap, Element, GenericElement, Node, TypedElement
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.values import Floats
+from mjcf_model.node_building import build_node
+from mjcf_model.values import Floats, Unparsed
 
 __all__ = ["converter", "from_dict", "to_dict"]
 
@@ -39,8 +43,14 @@ def _json_float(value: float) -> float | str:
     return value if math.isfinite(value) else repr(value)
 
 
-def _unstructure_floats(values: Floats) -> list[float | str]:
+def _unstructure_floats(values: Floats | Unparsed) -> list[float | str] | Unparsed:
+    if type(values) is Unparsed:
+        return values  # written as {"_unparsed": text} by to_dict
     return [_json_float(v) if isinstance(v, float) else v for v in values]
+
+
+def _unstructure_float(value: float | Unparsed) -> float | str | Unparsed:
+    return value if type(value) is Unparsed else _json_float(value)  # type: ignore[arg-type]
 
 
 def _union(cl: Any, conv: cattrs.Converter) -> None:
@@ -50,7 +60,7 @@ def _union(cl: Any, conv: cattrs.Converter) -> None:
 @functools.cache
 def _built_converter() -> cattrs.Converter:
     built = cattrs.Converter(omit_if_default=True, forbid_extra_keys=True)
-    built.register_unstructure_hook(float, _json_float)
+    built.register_unstructure_hook(float, _unstructure_float)
     built.register_unstructure_hook_func(lambda t: t == Floats, _unstructure_floats)
     built.register_structure_hook_func(
         lambda t: t == Floats, lambda value, _: tuple(float(v) for v in value)
@@ -67,6 +77,16 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
+_UNPARSED = "_unparsed"
+
+
+def _children_of(data: Mapping[str, Any], where: Callable[[], str]) -> list[Any]:
+    children = data.get("children", [])
+    if not isinstance(children, list):
+        raise MjcfValueError(f"not a node dict: {where()}.children must be a list")
+    return children
+
+
 def to_dict(node: Node) -> dict[str, Any]:
     """Convert a node and its subtree to plain, JSON-safe dicts and lists.
 
@@ -76,8 +96,32 @@ def to_dict(node: Node) -> dict[str, Any]:
         {'range': [0.0, 'inf'], '_node': 'Joint'}
 
     """
-    result: dict[str, Any] = _built_converter().unstructure(node, Node)
+    converter = _built_converter()
+    result: dict[str, Any] = {}
+    stack: list[tuple[Node, dict[str, Any]]] = [(node, result)]
+    while stack:
+        current, out = stack.pop()
+        if isinstance(current, Element) and current.children:
+            shallow = _without_children(current)
+        else:
+            shallow = current
+        out.update(converter.unstructure(shallow, Node))
+        for key, value in out.items():
+            if type(value) is Unparsed:
+                out[key] = {_UNPARSED: value.text}
+        if shallow is not current:
+            assert isinstance(current, Element)
+            children: list[dict[str, Any]] = [{} for _ in current.children]
+            out["children"] = children
+            stack.extend(zip(current.children, children, strict=True))
     return result
+
+
+def _without_children(element: Element) -> Node:
+    if isinstance(element, TypedElement):
+        return build_node(type(element), {"children": ()}, element)
+    assert isinstance(element, GenericElement)
+    return GenericElement(tag=element.tag, attributes=element.attributes, text=element.text)
 
 
 def from_dict(data: Mapping[str, Any]) -> Node:
@@ -91,15 +135,67 @@ def from_dict(data: Mapping[str, Any]) -> Node:
         Site(name='s')
 
     """
+    if not isinstance(data, Mapping):
+        raise MjcfValueError(f"not a node dict: expected a mapping, found {type(data).__name__}")
+    # Children are rebuilt before their parent, from an explicit stack. Each entry
+    # keeps its index in its parent: the path for an error is built only then.
+    stack: list[tuple[Mapping[str, Any], int, list[Node], Any]] = []
+
+    def where(extra: int | None = None) -> str:
+        steps = [f".children[{index}]" for _, index, _, _ in stack[1:]]
+        if extra is not None:
+            steps.append(f".children[{extra}]")
+        return "$" + "".join(steps)
+
+    stack.append((data, 0, [], iter(enumerate(_children_of(data, where)))))
+    while True:
+        current, _, built, pending = stack[-1]
+        for index, child in pending:
+            if not isinstance(child, Mapping):
+                raise MjcfValueError(f"not a node dict: {where(index)} is not a mapping")
+            stack.append((child, index, [], None))  # on the stack first: errors name it
+            stack[-1] = (child, index, [], iter(enumerate(_children_of(child, where))))
+            break
+        else:
+            node = _node_from_dict(current, where, built)
+            stack.pop()
+            if not stack:
+                return node
+            stack[-1][2].append(node)
+
+
+def _node_from_dict(
+    data: Mapping[str, Any], where: Callable[[], str], children: list[Node]
+) -> Node:
+    """One node from its dict, its children already rebuilt."""
+    shallow = {k: v for k, v in data.items() if k != "children"}
+    unparsed = {
+        k: Unparsed(v[_UNPARSED])
+        for k, v in shallow.items()
+        if isinstance(v, Mapping) and set(v) == {_UNPARSED} and isinstance(v[_UNPARSED], str)
+    }
+    for key in unparsed:
+        del shallow[key]
     try:
-        node: Node = _built_converter().structure(dict(data), Node)
-    except MjcfValueError:
-        raise
+        node: Node = _built_converter().structure(shallow, Node)
+    except MjcfValueError as error:
+        raise MjcfValueError(f"{where()}: {error.detail}") from None
     except (cattrs.BaseValidationError, KeyError, TypeError, ValueError) as error:
         detail = (
-            "; ".join(cattrs.transform_error(error))
+            "; ".join(cattrs.transform_error(error, path=where()))
             if isinstance(error, cattrs.BaseValidationError)
-            else str(error)
+            else f"{where()}: {error}"
         )
         raise MjcfValueError(f"not a node dict: {detail}") from None
+    if isinstance(node, TypedElement):
+        values: dict[str, Any] = dict(unparsed)
+        if children:
+            values["children"] = tuple(children)
+        return build_node(type(node), values, node) if values else node
+    if unparsed:
+        raise MjcfValueError(f"not a node dict: {where()}: only typed fields hold unparsed text")
+    if isinstance(node, Element) and children:
+        return attrs.evolve(node, children=tuple(children))
+    if children:
+        raise MjcfValueError(f"not a node dict: {where()}: a {type(node).__name__} has no children")
     return node

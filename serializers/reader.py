@@ -208,7 +208,7 @@ class _Reader:
         try:
             self.parser.Parse(raw, True)
         except expat.ExpatError as error:
-            if self.completed_root(error, raw):
+            if self.completed_root(raw):
                 return self.top  # MuJoCo reads the first root element and ignores what follows
             repaired = _escape_stray_markup(raw)
             if repaired is not None:
@@ -223,13 +223,13 @@ class _Reader:
             raise self.syntax_error(error, raw) from None
         return self.top
 
-    def completed_root(self, error: expat.ExpatError, raw: bytes) -> bool:
-        """Whether ``error`` is an element after a complete root, which MuJoCo ignores."""
-        if error.code != expat.errors.codes[expat.errors.XML_ERROR_JUNK_AFTER_DOC_ELEMENT]:
-            return False
+    def completed_root(self, raw: bytes) -> bool:
+        """Whether expat stopped at markup after a complete root, which MuJoCo ignores."""
         if self.stack or not any(not isinstance(n, Comment) for n in self.top):
             return False
-        return raw[self.parser.ErrorByteIndex : self.parser.ErrorByteIndex + 1] == b"<"
+        index = self.parser.ErrorByteIndex  # at the "<" or just after it
+        start = index if raw[index : index + 1] == b"<" else index - 1
+        return raw[start : start + 1] == b"<" and start + 1 < len(raw)
 
     def syntax_error(self, error: expat.ExpatError, raw: bytes) -> MjcfSyntaxError:
         path = self.path_to(None) if self.stack else None
@@ -237,13 +237,27 @@ class _Reader:
         detail = f"malformed XML: {message} (column {error.offset + 1})"
         index = self.parser.ErrorByteIndex
         if index >= 0:
-            found = raw[index : index + 4].decode("utf-8", "replace")[:1]
-            if found and NOT_XML_CHARACTER.match(found):
-                detail += (
-                    f"; U+{ord(found):04X} is a character XML cannot carry (MuJoCo's own"
-                    " parser reads it, mjcf-model refuses it: remove it or write it out)"
-                )
+            detail += _character_hint(raw[index : index + 4])
         return MjcfSyntaxError(detail, file=self.filename, line=error.lineno, path=path)
+
+
+def _character_hint(found: bytes) -> str:
+    """What to say about the bytes where expat stopped, when they are the cause."""
+    try:
+        char = found.decode("utf-8", "strict")[:1]
+    except UnicodeDecodeError as error:
+        if error.start > 0:
+            return ""
+        return (
+            f"; byte 0x{found[0]:02X} is not UTF-8: MuJoCo reads every file as UTF-8,"
+            " whatever its declaration says; save the file as UTF-8"
+        )
+    if char and NOT_XML_CHARACTER.match(char):
+        return (
+            f"; U+{ord(char):04X} is a character XML cannot carry (MuJoCo's own parser"
+            " reads it, mjcf-model refuses it: remove it or write it out)"
+        )
+    return ""
 
 
 #: The characters that start markup or a reference (single character classes).
@@ -556,41 +570,66 @@ def from_etree(element: ET.Element, *, context: str | None = None, typed: bool =
         return Comment(text=element.text or "")
     if context is None:
         context = guess_context(element.tag)
-    try:
-        return _from_etree(element, context, typed)
-    except MjcfError as error:
-        raise _within(error, element, 1) from None
+    return _from_etree(element, context, typed)
 
 
-def _from_etree(element: ET.Element, context: str | None, typed: bool = True) -> AnyElement:
-    """Convert one element; an error names no path yet: each caller adds its step."""
-    key = child_key(context, element.tag)
-    inner = children_context(key, context)
-    children: list[Node] = []
-    chunks = [element.text]
-    counts: dict[str, int] = {}
-    for child in element:
-        if child.tag is ET.Comment:  # type: ignore[comparison-overlap]
-            children.append(Comment(text=child.text or ""))
-        elif isinstance(child.tag, str):
-            index = counts[child.tag] = counts.get(child.tag, 0) + 1
+@attrs.define
+class _EtreeFrame:
+    """An ElementTree element being converted: its children are converted first."""
+
+    element: ET.Element
+    key: str | None
+    #: The schema context of the element's children.
+    inner: str | None
+    #: This element's step in the element path, for errors.
+    step: str
+    pending: Any
+    children: list[Node] = attrs.field(factory=list)
+    chunks: list[str | None] = attrs.field(factory=list)
+    counts: dict[str, int] = attrs.field(factory=dict)
+
+
+def _from_etree(root: ET.Element, context: str | None, typed: bool) -> AnyElement:
+    """Convert ``root`` and its subtree with an explicit stack, so any depth is converted."""
+
+    def frame(element: ET.Element, context: str | None, index: int) -> _EtreeFrame:
+        key = child_key(context, element.tag)
+        step = element_step(element.tag, list(element.attrib.items()), index)
+        return _EtreeFrame(
+            element, key, children_context(key, context), step, iter(element), [], [element.text]
+        )
+
+    def path() -> str:
+        return "".join(f"/{f.step}" for f in stack)
+
+    stack = [frame(root, context, 1)]
+    while True:
+        top = stack[-1]
+        for child in top.pending:
+            if child.tag is ET.Comment:
+                top.children.append(Comment(text=child.text or ""))
+                top.chunks.append(child.tail)
+            elif isinstance(child, ET.Element) and isinstance(child.tag, str):
+                index = top.counts[child.tag] = top.counts.get(child.tag, 0) + 1
+                stack.append(frame(child, top.inner, index))
+                break
+            else:
+                top.chunks.append(child.tail)
+        else:
+            element = top.element
             try:
-                children.append(_from_etree(child, inner, typed))
+                node = build_element(
+                    top.key if typed else None,
+                    element.tag,
+                    list(element.attrib.items()),
+                    top.children,
+                    element_text(top.chunks, bool(top.children)),
+                    lambda error: error.located(path=path()),
+                )
             except MjcfError as error:
-                raise _within(error, child, index) from None
-        chunks.append(child.tail)
-    return build_element(
-        key if typed else None,
-        element.tag,
-        list(element.attrib.items()),
-        children,
-        element_text(chunks, bool(children)),
-    )
-
-
-def _within(error: MjcfError, element: ET.Element, index: int) -> MjcfError:
-    """The error with ``element``'s step put in front of its path."""
-    step = element_step(element.tag, list(element.attrib.items()), index)
-    return type(error)(
-        error.detail, file=error.file, line=error.line, path=f"/{step}{error.path or ''}"
-    )
+                raise error.located(path=path()) from None
+            stack.pop()
+            if not stack:
+                return node
+            stack[-1].children.append(node)
+            stack[-1].chunks.append(element.tail)

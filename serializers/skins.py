@@ -26,6 +26,7 @@ weights (float32).
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -135,7 +136,7 @@ def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str]) -> Mujoc
         if isinstance(folder, str):
             base = base / folder
 
-    def visit(element: AnyElement, key: str | None, _: tuple[AnyElement, ...]) -> AnyElement:
+    def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
         file = get_attribute(element, "file")
         if key not in ("asset/skin", "deformable/skin") or not isinstance(file, str):
             return element

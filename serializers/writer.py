@@ -57,30 +57,50 @@ def attribute_texts(element: AnyElement) -> list[tuple[str, str]]:
     return [(name, format_value(value)) for name, value in attribute_items(element)]
 
 
-def _write(node: Node, depth: int, indent: str, out: list[str]) -> None:
-    pad = indent * depth
-    if isinstance(node, Comment):
-        out.append(f"{pad}<!--{node.text}-->\n")
-        return
+def _element(node: Node) -> AnyElement:
     if not isinstance(node, AnyElement):
         raise MjcfValueError(f"cannot write {type(node).__name__}: not an element or a comment")
-    tag = node.tag
-    attrs = "".join(
-        f' {name}="{text.translate(_ATTRIBUTE_ESCAPES)}"' for name, text in attribute_texts(node)
-    )
-    if not node.children and node.text is None:
-        out.append(f"{pad}<{tag}{attrs}/>\n")
-        return
-    if not node.children:
-        out.append(f"{pad}<{tag}{attrs}>{node.text.translate(_TEXT_ESCAPES)}</{tag}>\n")  # type: ignore[union-attr]
-        return
-    out.append(f"{pad}<{tag}{attrs}>")
-    if node.text is not None:
-        out.append(node.text.translate(_TEXT_ESCAPES))
-    out.append("\n")
-    for child in node.children:
-        _write(child, depth + 1, indent, out)
-    out.append(f"{pad}</{tag}>\n")
+    return node
+
+
+#: Indentation stops growing below this depth (MuJoCo reads at most 499 levels from
+#: one file), so deeper trees, which only includes can make, are not written with
+#: indentation quadratic in their depth.
+MAX_INDENTED_DEPTH = 500
+
+
+def _write(root: Node, indent: str, out: list[str]) -> None:
+    """Append the text of ``root`` to ``out``; an explicit stack, so any depth is written."""
+    # Each entry is a node to write at a depth, or the closing tag of an element.
+    stack: list[tuple[Node | str, int]] = [(root, 0)]
+    pads: dict[int, str] = {}
+    while stack:
+        node, depth = stack.pop()
+        pad = pads.get(depth)
+        if pad is None:
+            pad = pads[depth] = indent * min(depth, MAX_INDENTED_DEPTH)
+        if isinstance(node, str):
+            out.append(f"{pad}</{node}>\n")
+            continue
+        if isinstance(node, Comment):
+            out.append(f"{pad}<!--{node.text}-->\n")
+            continue
+        element = _element(node)
+        tag = element.tag
+        attributes = "".join(
+            f' {name}="{text.translate(_ATTRIBUTE_ESCAPES)}"'
+            for name, text in attribute_texts(element)
+        )
+        text = None if element.text is None else element.text.translate(_TEXT_ESCAPES)
+        if not element.children:
+            if text is None:
+                out.append(f"{pad}<{tag}{attributes}/>\n")
+            else:
+                out.append(f"{pad}<{tag}{attributes}>{text}</{tag}>\n")
+            continue
+        out.append(f"{pad}<{tag}{attributes}>{text or ''}\n")
+        stack.append((tag, depth))
+        stack.extend((child, depth + 1) for child in reversed(element.children))
 
 
 def dumps(node: Node, *, indent: str = "  ") -> str:
@@ -97,7 +117,7 @@ def dumps(node: Node, *, indent: str = "  ") -> str:
 
     """
     out: list[str] = []
-    _write(node, 0, indent, out)
+    _write(node, indent, out)
     return "".join(out)
 
 
@@ -154,6 +174,21 @@ def to_etree(node: Node) -> ET.Element:
         '<body name="b"><geom size="1" /></body>'
 
     """
+    root = _etree_element(node)
+    stack = [(node, root)]  # an explicit stack, so any depth is converted
+    while stack:
+        parent, element = stack.pop()
+        if not isinstance(parent, AnyElement):
+            continue
+        for child in parent.children:
+            converted = _etree_element(child)
+            element.append(converted)
+            stack.append((child, converted))
+    return root
+
+
+def _etree_element(node: Node) -> ET.Element:
+    """One node as an ElementTree element, without its children."""
     if isinstance(node, Comment):
         comment: ET.Element = ET.Comment(node.text)  # type: ignore[assignment]
         return comment
@@ -161,5 +196,4 @@ def to_etree(node: Node) -> ET.Element:
         raise MjcfValueError(f"cannot convert {type(node).__name__}: not an element or a comment")
     element = ET.Element(node.tag, dict(attribute_texts(node)))
     element.text = node.text
-    element.extend(to_etree(child) for child in node.children)
     return element

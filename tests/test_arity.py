@@ -12,8 +12,10 @@ import mujoco
 import pytest
 
 from mjcf_model import MjcfValueError
-from mjcf_model.base import field_table
+from mjcf_model.base import build_node, field_table, get_attribute
 from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.traversal import keyed_walk
+from mjcf_model.values import Unparsed
 from serializers import loads
 from tests.conftest import printed_schema
 
@@ -99,11 +101,20 @@ def _mujoco_accepts(text: str) -> bool:
 
 @pytest.mark.parametrize(("key", "attribute", "count"), _cases())
 def test_count_limits_match_mujoco(key: str, attribute: str, count: int) -> None:
-    """We reject a value count exactly when MuJoCo does."""
-    text = HOSTS[key].format(a=f'{attribute}="{" ".join(["0.5"] * count)}"')
-    try:
-        loads(text)
-        ours = True
-    except MjcfValueError:
-        ours = False
+    """A typed field reads a value count exactly when MuJoCo does.
+
+    A count it cannot read loads as :class:`Unparsed` text (kept for MuJoCo to
+    judge), and the typed field refuses it when a node is built in Python.
+    """
+    value = " ".join(["0.5"] * count)
+    text = HOSTS[key].format(a=f'{attribute}="{value}"')
+    element = next(e for e, k, _ in keyed_walk(loads(text)) if k == key)
+    ours = not isinstance(get_attribute(element, attribute), Unparsed)
     assert ours == _mujoco_accepts(text)
+    cls = CLASS_BY_KEY[key]
+    try:
+        build_node(cls, {field_table(cls)[attribute]: value})
+        built = True
+    except MjcfValueError:
+        built = False
+    assert built == ours

@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+import mujoco
 import pytest
 
 from mjcf_model import (
@@ -16,7 +17,8 @@ from mjcf_model import (
     MjcfValueError,
     Mujoco,
 )
-from serializers import dump, from_dict, load, loads
+from mjcf_model.values import Unparsed
+from serializers import dump, dumps, from_dict, load, loads
 
 
 def _write(path: Path, text: str) -> Path:
@@ -44,12 +46,16 @@ def test_wrong_number_of_values(tmp_path: Path) -> None:
         "<mujoco>\n<worldbody>\n<body name='arm'>\n<geom size='1'/>\n<geom pos='0 1'/>\n"
         "</body>\n</worldbody>\n</mujoco>\n",
     )
+    geom = load(path).worldbody.bodies[0].geoms[1]
+    assert geom.pos == Unparsed("0 1")
     with pytest.raises(MjcfValueError) as caught:
-        load(path)
+        list(geom.pos)
     assert str(caught.value) == (
         f"{path}:5: /mujoco/worldbody/body[@name='arm']/geom[2]: "
-        "attribute 'pos': expected 3 numbers, found 2 in '0 1'"
+        "attribute 'pos': expected 3 numbers, found 2 in '0 1' "
+        "(kept verbatim: MuJoCo may read what mjcf-model cannot)"
     )
+    assert "pos=\"0 1\"" in dumps(load(path))
 
 
 def test_non_number(tmp_path: Path) -> None:
@@ -57,8 +63,10 @@ def test_non_number(tmp_path: Path) -> None:
     path = _write(
         tmp_path / "m.xml", "<mujoco><worldbody><geom size='0.1 big'/></worldbody></mujoco>"
     )
+    (geom,) = load(path).worldbody.geoms
     with pytest.raises(MjcfValueError) as caught:
-        load(path)
+        geom.size[0]
+    assert caught.value.file == str(path)
     assert caught.value.line == 1
     assert caught.value.path == "/mujoco/worldbody/geom"
     assert "attribute 'size': expected a number, found 'big'" in str(caught.value)
@@ -67,8 +75,11 @@ def test_non_number(tmp_path: Path) -> None:
 def test_non_integer(tmp_path: Path) -> None:
     """An integer attribute rejects fractions, as MuJoCo does."""
     path = _write(tmp_path / "m.xml", "<mujoco><worldbody><geom group='1.5'/></worldbody></mujoco>")
+    (geom,) = load(path).worldbody.geoms
     with pytest.raises(MjcfValueError, match=r"'group': expected an integer, found '1\.5'"):
-        load(path)
+        int(geom.group)
+    with pytest.raises(MjcfValueError, match=r"expected an integer, found '1\.5'"):
+        Geom(group="1.5")
 
 
 def test_unknown_keyword(tmp_path: Path) -> None:
@@ -76,8 +87,10 @@ def test_unknown_keyword(tmp_path: Path) -> None:
     path = _write(
         tmp_path / "m.xml", "<mujoco>\n<worldbody>\n<geom type='cube'/></worldbody></mujoco>"
     )
+    (geom,) = load(path).worldbody.geoms
+    assert geom.type == Unparsed("cube")
     with pytest.raises(MjcfValueError) as caught:
-        load(path)
+        geom.type.fail()
     message = str(caught.value)
     assert message.startswith(f"{path}:3: /mujoco/worldbody/geom: attribute 'type': ")
     assert "found 'cube'" in message and "'box'" in message and "'sphere'" in message
@@ -132,10 +145,12 @@ def test_external_entity_refused(tmp_path: Path) -> None:
         loads(text)
 
 
-def test_undefined_entity_is_a_syntax_error() -> None:
-    """Without a DTD an entity reference is simply malformed."""
-    with pytest.raises(MjcfSyntaxError, match="undefined entity"):
-        loads("<mujoco model='&x;'/>")
+def test_undefined_entity_is_read_as_text_like_mujoco() -> None:
+    """Without a DTD, MuJoCo's parser reads ``&x;`` as those three characters; so do we."""
+    text = "<mujoco model='&x; & &amp; &#65;'/>"
+    assert mujoco.MjModel.from_xml_string(text).names.split(b"\0")[0] == b"&x; & & A"
+    assert loads(text).model == "&x; & & A"
+    assert loads(dumps(loads(text))).model == "&x; & & A"
 
 
 def test_wrong_root() -> None:
@@ -209,7 +224,8 @@ def test_from_etree_error_names_the_element_path() -> None:
         "<mujoco><worldbody><geom size='1'/><body name='b'><geom size='1'/>"
         "<geom pos='0 1'/></body></worldbody></mujoco>"
     )
+    pos = from_etree(tree).worldbody.bodies[0].geoms[1].pos  # type: ignore[attr-defined]
     with pytest.raises(MjcfValueError) as caught:
-        from_etree(tree)
+        pos[0]
     assert caught.value.path == "/mujoco/worldbody/body[@name='b']/geom[2]"
     assert "attribute 'pos': expected 3 numbers, found 2" in str(caught.value)
