@@ -73,6 +73,19 @@ class AttributeMap(Mapping[str, str]):
         self._data = data
         self._hash: int | None = None
 
+    @classmethod
+    def unchecked(cls, data: dict[str, str]) -> AttributeMap:
+        r"""Wrap ``data`` without checking that XML can carry it.
+
+        Only for the robosuite layer, whose ElementTree elements take any text
+        (robosuite's ``new_element(name="\\x1f")`` works); such a map is converted
+        to ElementTree at once and never written by :mod:`serializers`.
+        """
+        made = cls.__new__(cls)
+        made._data = data
+        made._hash = None
+        return made
+
     def __getitem__(self, key: str) -> str:
         return self._data[key]
 

@@ -40,10 +40,15 @@ def _package_dir(name: str) -> Path:
 
 
 def corpus_files() -> list[Path]:
-    """Every XML file shipped in the installed robosuite and dm_control wheels."""
+    """Every XML file shipped in the installed robosuite and dm_control wheels.
+
+    Hidden files are left out: ``compile_text_beside`` writes its temporary
+    ``.mjcf-model-*.xml`` files there while other test workers run.
+    """
     files: list[Path] = []
     for package in ("robosuite", "dm_control"):
-        files.extend(sorted(_package_dir(package).rglob("*.xml")))
+        found = _package_dir(package).rglob("*.xml")
+        files.extend(sorted(p for p in found if not p.name.startswith(".")))
     return files
 
 

@@ -22,9 +22,10 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterable, Mapping
 from typing import Any
 
-from mjcf_model.base import GenericElement
+from mjcf_model.base import AttributeMap, GenericElement
 from mjcf_model.compat.utils_constants import RED
 from mjcf_model.compat.utils_text import convert_to_string
+from mjcf_model.errors import MjcfValueError
 from serializers import to_etree
 
 __all__ = [
@@ -60,10 +61,12 @@ def element_node(
         AttributeMap({'pos': '0 0 1', 'flag': 'true'})
 
     """
-    return GenericElement(
-        tag=tag,
-        attributes={key: text(value) for key, value in attributes if value is not None},
-    )
+    values = {key: text(value) for key, value in attributes if value is not None}
+    try:
+        return GenericElement(tag=tag, attributes=values)
+    except MjcfValueError:
+        # robosuite's ElementTree takes text XML cannot carry, and so does this layer.
+        return GenericElement(tag=tag, attributes=AttributeMap.unchecked(values))
 
 
 def joint_node(
