@@ -78,7 +78,7 @@ class AttributeMap(Mapping[str, str]):
         r"""Wrap ``data`` without checking that XML can carry it.
 
         Only for the robosuite layer, whose ElementTree elements take any text
-        (robosuite's ``new_element(name="\\x1f")`` works); such a map is converted
+        (robosuite's ``new_element(name="\x1f")`` works); such a map is converted
         to ElementTree at once and never written by :mod:`serializers`.
         """
         made = cls.__new__(cls)

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Collection, Iterable
+from collections.abc import Collection, Iterable, Iterator
 from typing import Any
 
 import numpy as np
@@ -110,9 +110,12 @@ def _floats(value: object, lo: int, hi: int | None) -> Floats:
         items = value
     elif type(value) is str:
         # ``float`` reads one token in time linear in its length; no regular
-        # expression ever sees attribute text (see tests/test_values.py).
+        # expression ever sees attribute text (see tests/test_hostile.py).
         try:
-            items = tuple(map(float, value.split()))
+            if len(value) > _CHUNK:
+                items = tuple(f for chunk in _chunks(value) for f in map(float, chunk.split()))
+            else:
+                items = tuple(map(float, value.split()))
         except ValueError:
             bad = next(t for t in value.split() if not _reads_as_float(t))
             raise MjcfValueError(f"expected a number, found {_shortened(bad)!r}") from None
@@ -129,6 +132,22 @@ def _floats(value: object, lo: int, hi: int | None) -> Floats:
             f"expected {_count_phrase(lo, hi)}, found {n} in {_shortened(found)!r}"
         )
     return items
+
+
+#: Longer text is split a piece at a time, so a 50 MB attribute never becomes
+#: millions of token strings at once.
+_CHUNK = 1 << 20
+_SPACES = (" ", "\n", "\t", "\r", "\f", "\v")
+
+
+def _chunks(text: str) -> Iterator[str]:
+    """``text`` in pieces of about ``_CHUNK`` characters, cut at white space."""
+    start = 0
+    while start < len(text):
+        cuts = [i for i in (text.find(c, start + _CHUNK) for c in _SPACES) if i >= 0]
+        end = min(cuts) if cuts else len(text)
+        yield text[start:end]
+        start = end
 
 
 def _reads_as_float(token: str) -> bool:
@@ -458,15 +477,22 @@ def format_value(value: Value) -> str:
     """
     if isinstance(value, str):
         return value
-    if type(value) is Unparsed:
-        return value.text
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, float):
         return format_float(value)
     if isinstance(value, int):
         return str(value)
-    return " ".join(format_float(v) if isinstance(v, float) else str(v) for v in value)
+    if isinstance(value, Unparsed):
+        return value.text
+    if len(value) > _CHUNK // 8:  # a piece at a time: no list of millions of strings
+        step = _CHUNK // 8
+        return " ".join(_format_items(value[i : i + step]) for i in range(0, len(value), step))
+    return _format_items(value)
+
+
+def _format_items(values: Floats | Ints) -> str:
+    return " ".join(format_float(v) if isinstance(v, float) else str(v) for v in values)
 
 
 def plain_value(value: Any) -> Any:
