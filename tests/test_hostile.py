@@ -409,3 +409,34 @@ def test_errors_from_bad_attributes_never_quote_megabytes() -> None:
         geom.size[0]
     assert len(str(caught.value)) < 400
     assert re.search(r"\(\d+ characters\)", str(caught.value))
+
+
+# -- memory ----------------------------------------------------------------------------
+
+
+def test_memory_stays_a_small_multiple_of_a_huge_attribute() -> None:
+    """A 10 MB attribute of numbers: load and dump each peak below 12x its size.
+
+    The floats themselves take 32 bytes per number (about 3.6x this text); the
+    bound fails if the text is ever split into one string per number at once,
+    which took the 50 MB case of the fuzzing campaign to 4.6 GB.
+    """
+    import tracemalloc
+
+    count = 10_000_000 // 9
+    text = (
+        '<mujoco><custom><numeric name="n" data="' + "0.123456 " * count + '"/></custom></mujoco>'
+    )
+    tracemalloc.start()
+    try:
+        model = loads(text)
+        _, load_peak = tracemalloc.get_traced_memory()
+        tracemalloc.reset_peak()
+        written = dumps(model)
+        _, dump_peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert len(model.children[0].children[0].data) == count  # type: ignore[attr-defined]
+    assert len(written) > len(text) * 0.9
+    assert load_peak < 12 * len(text), load_peak / len(text)
+    assert dump_peak < 12 * len(text), dump_peak / len(text)
