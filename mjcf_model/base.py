@@ -166,6 +166,12 @@ def to_children(value: Iterable[Node] | None) -> tuple[Node, ...]:
 class Node:
     """Anything that can stand in an element's ``children``: an element or a comment."""
 
+    def __copy__(self) -> Node:
+        return self  # immutable: a copy could only be the same value
+
+    def __deepcopy__(self, memo: dict[int, Any]) -> Node:
+        return self  # immutable all the way down, so sharing is copying (at any depth)
+
 
 def _check_comment(_instance: Any, _attribute: Any, value: str) -> None:
     if not isinstance(value, str):
@@ -306,6 +312,9 @@ class TypedElement(Element):
 
     def __repr__(self) -> str:
         """Show only the attributes that are written, then extras and children."""
+        return _tree_repr(self)
+
+    def _repr_frame(self) -> tuple[str, str]:
         table = field_table(type(self))
         parts = [
             f"{field}={getattr(self, field)!r}"
@@ -316,9 +325,10 @@ class TypedElement(Element):
             parts.append(f"extra={self.extra!r}")
         if self.text is not None:
             parts.append(f"text={self.text!r}")
-        if self.children:
-            parts.append(f"children={self.children!r}")
-        return f"{type(self).__name__}({', '.join(parts)})"
+        head = f"{type(self).__name__}({', '.join(parts)}"
+        if not self.children:
+            return head + ")", ""
+        return head + (", " if parts else "") + "children=(", "))"
 
     def _repr_pretty_(self, printer: Any, cycle: bool) -> None:
         """Print the compact repr in IPython and in hypothesis' failure reports."""
@@ -346,6 +356,45 @@ class GenericElement(Element):
     tag: str = attrs.field(validator=_check_tag)
     #: All attributes, as text, in source order.
     attributes: AttributeMap = attrs.field(factory=AttributeMap, converter=to_attribute_map)
+
+    def __repr__(self) -> str:
+        return _tree_repr(self)
+
+    def _repr_frame(self) -> tuple[str, str]:
+        rest = f"text={self.text!r}, tag={self.tag!r}, attributes={self.attributes!r})"
+        if not self.children:
+            return f"GenericElement(children=(), {rest}", ""
+        return "GenericElement(children=(", f"), {rest}"
+
+
+def _tree_repr(node: TypedElement | GenericElement) -> str:
+    """The repr of ``node``, built with an explicit stack so that any depth prints.
+
+    It is the repr recursion would give: each element's own fields, then its
+    children as a tuple.
+    """
+    out: list[str] = []
+    stack: list[Node | str] = [node]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, str):
+            out.append(item)
+            continue
+        if not isinstance(item, (TypedElement, GenericElement)):
+            out.append(repr(item))  # a comment, or a node subclass of someone else's
+            continue
+        head, tail = item._repr_frame()
+        out.append(head)
+        if not item.children:
+            continue
+        sequence: list[Node | str] = []
+        for index, child in enumerate(item.children):
+            if index:
+                sequence.append(", ")
+            sequence.append(child)
+        sequence.append(("," if len(item.children) == 1 else "") + tail)
+        stack.extend(reversed(sequence))
+    return "".join(out)
 
 
 #: Either kind of element.

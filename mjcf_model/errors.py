@@ -9,10 +9,21 @@ known), *what was expected* and *what was found*:
 
 >>> from serializers import loads
 >>> try:
-...     loads('<mujoco><worldbody><geom pos="0 1"/></worldbody></mujoco>')
-... except MjcfValueError as error:
+...     loads('<mujoco><worldbody><geom pos="0 1"/><bad></worldbody></mujoco>')
+... except MjcfSyntaxError as error:
 ...     print(error)
-<string>:1: /mujoco/worldbody/geom: attribute 'pos': expected 3 numbers, found 2 in '0 1'
+<string>:1: /mujoco/worldbody/bad: malformed XML: mismatched tag (column 44)
+
+A value MuJoCo may read although its typed field cannot (``pos="0 1"``) loads
+verbatim; the error comes, with the same location, when the value is used:
+
+>>> geom = loads('<mujoco><worldbody><geom pos="0 1"/></worldbody></mujoco>').worldbody.geoms[0]
+>>> try:
+...     geom.pos[0]
+... except MjcfValueError as error:
+...     print(error.path, error.detail)
+/mujoco/worldbody/geom attribute 'pos': expected 3 numbers, found 2 in '0 1' (kept verbatim: \
+MuJoCo may read what mjcf-model cannot)
 """
 
 from __future__ import annotations

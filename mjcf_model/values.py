@@ -195,7 +195,7 @@ expected a number, found '0x10' (kept verbatim: MuJoCo may read what mjcf-model 
 
     def __init__(self, text: str, problem: MjcfValueError | None = None) -> None:
         #: The attribute text exactly as read.
-        self.text = text
+        self.text = check_text(text, "unparsed text")
         #: Why the typed field could not read it, located where it was read.
         self.problem = problem
 

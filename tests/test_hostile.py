@@ -7,6 +7,7 @@ compiles a file, we load it and write it back so that it compiles identically.
 from __future__ import annotations
 
 import ast
+import copy
 import re
 import sys
 import time
@@ -176,6 +177,8 @@ OPERATIONS: dict[str, Callable[[Mujoco], object]] = {
     "ElementTree": lambda m: from_etree(to_etree(m)) == m,
     "prefixed": lambda m: len(dumps(prefixed(m, "p_"))) > 0,
     "scaled": lambda m: len(dumps(scaled(m, 2.0))) > 0,
+    "repr": lambda m: repr(m).count("Body(") >= 495 or repr(m).count("Default(") >= 495,
+    "deepcopy": lambda m: copy.deepcopy(m) == m,
 }
 
 
