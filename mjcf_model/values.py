@@ -35,6 +35,7 @@ __all__ = [
     "Value",
     "check_name",
     "check_text",
+    "float_key",
     "format_float",
     "format_value",
     "one_of",
@@ -60,13 +61,41 @@ Floats = tuple[float, ...]
 Ints = tuple[int, ...]
 
 
+#: The one NaN every field holds. ``nan != nan``, but tuples compare items by
+#: identity first: with a single NaN object, two nodes holding NaN are equal
+#: and hash alike, as their compiled models are identical.
+NAN = float("nan")
+
+
+def float_key(value: float | None) -> tuple[float | None]:
+    """What ``==`` and ``hash`` compare of a one-number field: NaN equals NaN.
+
+    ``float`` compares NaN unequal even to itself; a 1-tuple compares its item
+    by identity first, and every field holds the same :data:`NAN` object.
+
+    Example:
+        >>> NAN == NAN, float_key(NAN) == float_key(NAN)
+        (False, True)
+
+    """
+    return (value,)
+
+
+def _one_nan(items: Floats) -> Floats:
+    """``items`` with every NaN replaced by :data:`NAN`."""
+    if not any(map(math.isnan, items)):
+        return items
+    return tuple(NAN if math.isnan(v) else v for v in items)
+
+
 def _parse_float(token: Any, original: object) -> float:
     if isinstance(token, bool):
         raise MjcfValueError(f"expected a number, found {original!r}")
     try:
-        return float(token)
+        number = float(token)
     except (TypeError, ValueError):
         raise MjcfValueError(f"expected a number, found {_shortened(token)!r}") from None
+    return NAN if number != number else number
 
 
 def _parse_int(token: Any, original: object) -> int:
@@ -107,7 +136,7 @@ def _count_phrase(lo: int, hi: int | None) -> str:
 def _floats(value: object, lo: int, hi: int | None) -> Floats:
     items: Floats
     if isinstance(value, tuple) and value and all(type(v) is float for v in value):
-        items = value
+        items = _one_nan(value)
     elif type(value) is str:
         # ``float`` reads one token in time linear in its length; no regular
         # expression ever sees attribute text (see tests/test_hostile.py).
@@ -119,6 +148,7 @@ def _floats(value: object, lo: int, hi: int | None) -> Floats:
         except ValueError:
             bad = next(t for t in value.split() if not _reads_as_float(t))
             raise MjcfValueError(f"expected a number, found {_shortened(bad)!r}") from None
+        items = _one_nan(items)
     elif type(value) is Unparsed:
         return value  # type: ignore[return-value]
     else:
@@ -301,8 +331,10 @@ def to_float(value: str | float | Unparsed | None) -> float | None:
         0.001
 
     """
-    if value is None or type(value) is float:
+    if value is None:
         return value
+    if type(value) is float:
+        return NAN if value != value else value
     if isinstance(value, str):
         (item,) = _floats(value, 1, 1)
         return item

@@ -14,6 +14,7 @@ from mjcf_model.base import TypedElement
 from mjcf_model.keywords import LIMITED
 from mjcf_model.values import (
     Floats,
+    float_key,
     one_of,
     to_bool,
     to_float,
@@ -62,7 +63,7 @@ class ActuatorElement(TypedElement):
     #: Range of the control.
     ctrlrange: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Delay, in time units.
-    delay: float | None = attrs.field(default=None, converter=to_float)
+    delay: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Integer group, used for visualization filters and by convention.
     group: int | None = attrs.field(default=None, converter=to_int)
     #: Interpolation of delayed values.
@@ -78,9 +79,9 @@ class TransmissionActuator(ActuatorElement):
     """Actuators that drive a joint, tendon, site or slider-crank transmission."""
 
     #: Armature inertia added to the degree of freedom.
-    armature: float | None = attrs.field(default=None, converter=to_float)
+    armature: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Length of the slider-crank rod.
-    cranklength: float | None = attrs.field(default=None, converter=to_float)
+    cranklength: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Name of the crank site of a slider-crank.
     cranksite: str | None = attrs.field(default=None, converter=to_str)
     #: Damping (coefficients of a polynomial in MuJoCo 4).
@@ -175,7 +176,7 @@ class Position(TransmissionActuator):
     #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
     ctrllimited: str | None = attrs.field(default=None, converter=to_str, validator=one_of(LIMITED))
     #: Damping ratio (instead of ``kv``).
-    dampratio: float | None = attrs.field(default=None, converter=to_float)
+    dampratio: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Whether the force is clamped: ``true``, ``false`` or ``auto``.
     forcelimited: str | None = attrs.field(
         default=None, converter=to_str, validator=one_of(LIMITED)
@@ -185,15 +186,15 @@ class Position(TransmissionActuator):
     #: Scale for inheriting the control range from the joint range.
     inheritrange: str | None = attrs.field(default=None, converter=to_str)
     #: Position gain.
-    kp: float | None = attrs.field(default=None, converter=to_float)
+    kp: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Velocity gain.
-    kv: float | None = attrs.field(default=None, converter=to_float)
+    kv: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Name of the reference site of a Cartesian transmission.
     refsite: str | None = attrs.field(default=None, converter=to_str)
     #: Name of the site.
     site: str | None = attrs.field(default=None, converter=to_str)
     #: Time constant(s).
-    timeconst: float | None = attrs.field(default=None, converter=to_float)
+    timeconst: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
 
 
 @attrs.frozen(kw_only=True, repr=False)
@@ -210,7 +211,7 @@ class Velocity(TransmissionActuator):
     #: Range of the force.
     forcerange: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Velocity gain.
-    kv: float | None = attrs.field(default=None, converter=to_float)
+    kv: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Name of the reference site of a Cartesian transmission.
     refsite: str | None = attrs.field(default=None, converter=to_str)
     #: Name of the site.
@@ -229,7 +230,7 @@ class IntVelocity(TransmissionActuator):
     #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
     ctrllimited: str | None = attrs.field(default=None, converter=to_str, validator=one_of(LIMITED))
     #: Damping ratio (instead of ``kv``).
-    dampratio: float | None = attrs.field(default=None, converter=to_float)
+    dampratio: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Whether the force is clamped: ``true``, ``false`` or ``auto``.
     forcelimited: str | None = attrs.field(
         default=None, converter=to_str, validator=one_of(LIMITED)
@@ -239,9 +240,9 @@ class IntVelocity(TransmissionActuator):
     #: Scale for inheriting the control range from the joint range.
     inheritrange: str | None = attrs.field(default=None, converter=to_str)
     #: Position gain.
-    kp: float | None = attrs.field(default=None, converter=to_float)
+    kp: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Velocity gain.
-    kv: float | None = attrs.field(default=None, converter=to_float)
+    kv: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Name of the reference site of a Cartesian transmission.
     refsite: str | None = attrs.field(default=None, converter=to_str)
     #: Name of the site.
@@ -256,7 +257,7 @@ class Pid(TransmissionActuator):
     #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
     ctrllimited: str | None = attrs.field(default=None, converter=to_str, validator=one_of(LIMITED))
     #: Damping ratio (instead of ``kv``).
-    dampratio: float | None = attrs.field(default=None, converter=to_float)
+    dampratio: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Range of the feed-forward term.
     ffrange: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Whether the force is clamped: ``true``, ``false`` or ``auto``.
@@ -266,17 +267,17 @@ class Pid(TransmissionActuator):
     #: Range of the force.
     forcerange: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Bound of the integral term.
-    imax: float | None = attrs.field(default=None, converter=to_float)
+    imax: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Scale for inheriting the control range from the joint range.
     inheritrange: str | None = attrs.field(default=None, converter=to_str)
     #: Input mode of the controller.
     input: str | None = attrs.field(default=None, converter=to_str)
     #: Integral gain.
-    ki: float | None = attrs.field(default=None, converter=to_float)
+    ki: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Position gain.
-    kp: float | None = attrs.field(default=None, converter=to_float)
+    kp: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Velocity gain.
-    kv: float | None = attrs.field(default=None, converter=to_float)
+    kv: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Range of the position error.
     posrange: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Name of the reference site of a Cartesian transmission.
@@ -284,7 +285,7 @@ class Pid(TransmissionActuator):
     #: Name of the site.
     site: str | None = attrs.field(default=None, converter=to_str)
     #: Maximum rate of change of the control.
-    slewmax: float | None = attrs.field(default=None, converter=to_float)
+    slewmax: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Range of the velocity.
     velrange: Floats | None = attrs.field(default=None, converter=to_vec2)
 
@@ -301,7 +302,7 @@ class Damper(TransmissionActuator):
     #: Range of the force.
     forcerange: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Velocity gain.
-    kv: float | None = attrs.field(default=None, converter=to_float)
+    kv: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Name of the reference site of a Cartesian transmission.
     refsite: str | None = attrs.field(default=None, converter=to_str)
     #: Name of the site.
@@ -314,13 +315,13 @@ class Cylinder(TransmissionActuator):
 
     tag: ClassVar[str] = "cylinder"
     #: Cylinder area.
-    area: float | None = attrs.field(default=None, converter=to_float)
+    area: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Cylinder bias parameters.
     bias: Floats | None = attrs.field(default=None, converter=to_vec3)
     #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
     ctrllimited: str | None = attrs.field(default=None, converter=to_str, validator=one_of(LIMITED))
     #: Cylinder diameter (instead of ``area``).
-    diameter: float | None = attrs.field(default=None, converter=to_float)
+    diameter: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Whether the force is clamped: ``true``, ``false`` or ``auto``.
     forcelimited: str | None = attrs.field(
         default=None, converter=to_str, validator=one_of(LIMITED)
@@ -332,7 +333,7 @@ class Cylinder(TransmissionActuator):
     #: Name of the site.
     site: str | None = attrs.field(default=None, converter=to_str)
     #: Time constant(s).
-    timeconst: float | None = attrs.field(default=None, converter=to_float)
+    timeconst: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
 
 
 @attrs.frozen(kw_only=True, repr=False)
@@ -343,7 +344,7 @@ class Muscle(TransmissionActuator):
     #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
     ctrllimited: str | None = attrs.field(default=None, converter=to_str, validator=one_of(LIMITED))
     #: Peak force.
-    force: float | None = attrs.field(default=None, converter=to_float)
+    force: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Whether the force is clamped: ``true``, ``false`` or ``auto``.
     forcelimited: str | None = attrs.field(
         default=None, converter=to_str, validator=one_of(LIMITED)
@@ -351,23 +352,23 @@ class Muscle(TransmissionActuator):
     #: Range of the force.
     forcerange: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Passive force at lmax.
-    fpmax: float | None = attrs.field(default=None, converter=to_float)
+    fpmax: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Active force at saturating lengthening velocity.
-    fvmax: float | None = attrs.field(default=None, converter=to_float)
+    fvmax: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Upper bound of the operating range.
-    lmax: float | None = attrs.field(default=None, converter=to_float)
+    lmax: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Lower bound of the operating range.
-    lmin: float | None = attrs.field(default=None, converter=to_float)
+    lmin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Lower and upper limits.
     range: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Scale factor(s).
-    scale: float | None = attrs.field(default=None, converter=to_float)
+    scale: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Smoothing width of the activation time constant.
-    tausmooth: float | None = attrs.field(default=None, converter=to_float)
+    tausmooth: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Time constant(s).
     timeconst: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Shortening velocity at which force drops to zero.
-    vmax: float | None = attrs.field(default=None, converter=to_float)
+    vmax: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
 
 
 @attrs.frozen(kw_only=True, repr=False)
@@ -442,7 +443,7 @@ class Orientation(ActuatorElement):
 
     tag: ClassVar[str] = "orientation"
     #: Damping ratio (instead of ``kv``).
-    dampratio: float | None = attrs.field(default=None, converter=to_float)
+    dampratio: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Whether the force is clamped: ``true``, ``false`` or ``auto``.
     forcelimited: str | None = attrs.field(
         default=None, converter=to_str, validator=one_of(LIMITED)
@@ -454,9 +455,9 @@ class Orientation(ActuatorElement):
     #: Name of the joint.
     joint: str | None = attrs.field(default=None, converter=to_str)
     #: Position gain.
-    kp: float | None = attrs.field(default=None, converter=to_float)
+    kp: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Velocity gain.
-    kv: float | None = attrs.field(default=None, converter=to_float)
+    kv: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Name of the reference site of a Cartesian transmission.
     refsite: str | None = attrs.field(default=None, converter=to_str)
     #: Name of the site.
@@ -477,4 +478,4 @@ class Adhesion(ActuatorElement):
     #: Range of the force.
     forcerange: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Gain of the adhesion force.
-    gain: float | None = attrs.field(default=None, converter=to_float)
+    gain: float | None = attrs.field(default=None, converter=to_float, eq=float_key)

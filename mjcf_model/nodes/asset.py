@@ -14,6 +14,7 @@ from mjcf_model.base import TypedElement
 from mjcf_model.values import (
     Floats,
     Ints,
+    float_key,
     to_bool,
     to_float,
     to_floats,
@@ -151,7 +152,7 @@ class Skin(TypedElement):
     #: Integer group, used for visualization filters and by convention.
     group: int | None = attrs.field(default=None, converter=to_int)
     #: Distance by which skin vertices are pushed out along their normals.
-    inflate: float | None = attrs.field(default=None, converter=to_float)
+    inflate: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Name of the material asset used for rendering.
     material: str | None = attrs.field(default=None, converter=to_str)
     #: Colour and transparency (r, g, b, a).
@@ -227,7 +228,7 @@ class Texture(TypedElement):
     #: Number of colour channels.
     nchannel: int | None = attrs.field(default=None, converter=to_int)
     #: Probability of random dots in a built-in texture.
-    random: float | None = attrs.field(default=None, converter=to_float)
+    random: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: First colour of a built-in texture.
     rgb1: Floats | None = attrs.field(default=None, converter=to_vec3)
     #: Second colour of a built-in texture.
@@ -248,19 +249,19 @@ class Material(TypedElement):
     #: Default class whose values this element takes (XML ``class``).
     dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
     #: Emission, as a multiple of the colour.
-    emission: float | None = attrs.field(default=None, converter=to_float)
+    emission: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Metallic value for physically based rendering.
-    metallic: float | None = attrs.field(default=None, converter=to_float)
+    metallic: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Reflectance.
-    reflectance: float | None = attrs.field(default=None, converter=to_float)
+    reflectance: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Colour and transparency (r, g, b, a).
     rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
     #: Roughness value for physically based rendering.
-    roughness: float | None = attrs.field(default=None, converter=to_float)
+    roughness: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Shininess.
-    shininess: float | None = attrs.field(default=None, converter=to_float)
+    shininess: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Specular colour or intensity.
-    specular: float | None = attrs.field(default=None, converter=to_float)
+    specular: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: How many times the texture repeats.
     texrepeat: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Name of the texture asset.

@@ -17,6 +17,7 @@ from mjcf_model.keywords import JOINT_TYPES, LIMITED
 from mjcf_model.nodes.geom import Camera, Geom, Light, Oriented, Site
 from mjcf_model.values import (
     Floats,
+    float_key,
     one_of,
     to_bool,
     to_float,
@@ -99,7 +100,7 @@ class Inertial(Oriented):
     #: Full inertia matrix (ixx iyy izz ixy ixz iyz).
     fullinertia: Floats | None = attrs.field(default=None, converter=to_vec6)
     #: Mass.
-    mass: float | None = attrs.field(default=None, converter=to_float)
+    mass: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
 
 
 @attrs.frozen(kw_only=True, repr=False)
@@ -124,23 +125,23 @@ class Joint(TypedElement):
     #: Whether gravity compensation counts as actuator force.
     actuatorgravcomp: bool | None = attrs.field(default=None, converter=to_bool)
     #: Armature inertia added to the degree of freedom.
-    armature: float | None = attrs.field(default=None, converter=to_float)
+    armature: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Rotation or translation axis.
     axis: Floats | None = attrs.field(default=None, converter=to_vec3)
     #: Damping (coefficients of a polynomial in MuJoCo 4).
     damping: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Dry friction loss.
-    frictionloss: float | None = attrs.field(default=None, converter=to_float)
+    frictionloss: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Integer group, used for visualization filters and by convention.
     group: int | None = attrs.field(default=None, converter=to_int)
     #: Whether limits apply: ``true``, ``false`` or ``auto``.
     limited: str | None = attrs.field(default=None, converter=to_str, validator=one_of(LIMITED))
     #: Distance at which contacts (or limits) become active.
-    margin: float | None = attrs.field(default=None, converter=to_float)
+    margin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Lower and upper limits.
     range: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Reference position or angle of the joint.
-    ref: float | None = attrs.field(default=None, converter=to_float)
+    ref: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Solver impedance parameters of the friction constraint.
     solimpfriction: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Solver impedance parameters of the limit constraint.
@@ -152,9 +153,9 @@ class Joint(TypedElement):
     #: Spring-damper given as time constant and damping ratio.
     springdamper: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Joint position at which the spring force is zero.
-    springref: float | None = attrs.field(default=None, converter=to_float)
+    springref: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Yield threshold of the spring.
-    springyield: float | None = attrs.field(default=None, converter=to_float)
+    springyield: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Spring stiffness (coefficients of a polynomial in MuJoCo 4).
     stiffness: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Custom user data (numbers).
@@ -208,7 +209,7 @@ class Body(Oriented, TreeViews):
     #: Whether this static body may be fused into its parent.
     fuse: str | None = attrs.field(default=None, converter=to_str)
     #: Gravity compensation factor.
-    gravcomp: float | None = attrs.field(default=None, converter=to_float)
+    gravcomp: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Whether this is a mocap body.
     mocap: bool | None = attrs.field(default=None, converter=to_bool)
     #: Simplification hint for the body.

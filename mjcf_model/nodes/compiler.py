@@ -14,6 +14,7 @@ from mjcf_model.base import TypedElement
 from mjcf_model.values import (
     Floats,
     Ints,
+    float_key,
     to_float,
     to_floats,
     to_int,
@@ -119,15 +120,15 @@ class Option(TypedElement):
     #: Simulation option ``ccd_iterations``; see the MuJoCo XML reference.
     ccd_iterations: int | None = attrs.field(default=None, converter=to_int)
     #: Simulation option ``ccd_tolerance``; see the MuJoCo XML reference.
-    ccd_tolerance: float | None = attrs.field(default=None, converter=to_float)
+    ccd_tolerance: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Simulation option ``cone``; see the MuJoCo XML reference.
     cone: str | None = attrs.field(default=None, converter=to_str)
     #: Density used to compute mass from volume.
-    density: float | None = attrs.field(default=None, converter=to_float)
+    density: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Simulation option ``gravity``; see the MuJoCo XML reference.
     gravity: Floats | None = attrs.field(default=None, converter=to_vec3)
     #: Simulation option ``impratio``; see the MuJoCo XML reference.
-    impratio: float | None = attrs.field(default=None, converter=to_float)
+    impratio: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Simulation option ``integrator``; see the MuJoCo XML reference.
     integrator: str | None = attrs.field(default=None, converter=to_str)
     #: Simulation option ``iterations``; see the MuJoCo XML reference.
@@ -137,17 +138,17 @@ class Option(TypedElement):
     #: Simulation option ``ls_iterations``; see the MuJoCo XML reference.
     ls_iterations: int | None = attrs.field(default=None, converter=to_int)
     #: Simulation option ``ls_tolerance``; see the MuJoCo XML reference.
-    ls_tolerance: float | None = attrs.field(default=None, converter=to_float)
+    ls_tolerance: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Simulation option ``magnetic``; see the MuJoCo XML reference.
     magnetic: Floats | None = attrs.field(default=None, converter=to_vec3)
     #: Simulation option ``noslip_iterations``; see the MuJoCo XML reference.
     noslip_iterations: int | None = attrs.field(default=None, converter=to_int)
     #: Simulation option ``noslip_tolerance``; see the MuJoCo XML reference.
-    noslip_tolerance: float | None = attrs.field(default=None, converter=to_float)
+    noslip_tolerance: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Simulation option ``o_friction``; see the MuJoCo XML reference.
     o_friction: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Simulation option ``o_margin``; see the MuJoCo XML reference.
-    o_margin: float | None = attrs.field(default=None, converter=to_float)
+    o_margin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Simulation option ``o_solimp``; see the MuJoCo XML reference.
     o_solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Simulation option ``o_solref``; see the MuJoCo XML reference.
@@ -157,15 +158,15 @@ class Option(TypedElement):
     #: Simulation option ``sdf_iterations``; see the MuJoCo XML reference.
     sdf_iterations: int | None = attrs.field(default=None, converter=to_int)
     #: Simulation option ``sleep_tolerance``; see the MuJoCo XML reference.
-    sleep_tolerance: float | None = attrs.field(default=None, converter=to_float)
+    sleep_tolerance: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Simulation option ``solver``; see the MuJoCo XML reference.
     solver: str | None = attrs.field(default=None, converter=to_str)
     #: Simulation option ``timestep``; see the MuJoCo XML reference.
-    timestep: float | None = attrs.field(default=None, converter=to_float)
+    timestep: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Simulation option ``tolerance``; see the MuJoCo XML reference.
-    tolerance: float | None = attrs.field(default=None, converter=to_float)
+    tolerance: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Simulation option ``viscosity``; see the MuJoCo XML reference.
-    viscosity: float | None = attrs.field(default=None, converter=to_float)
+    viscosity: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Simulation option ``wind``; see the MuJoCo XML reference.
     wind: Floats | None = attrs.field(default=None, converter=to_vec3)
 
@@ -276,10 +277,10 @@ class Statistic(TypedElement):
     #: Model statistic ``center``; see the MuJoCo XML reference.
     center: Floats | None = attrs.field(default=None, converter=to_vec3)
     #: Model statistic ``extent``; see the MuJoCo XML reference.
-    extent: float | None = attrs.field(default=None, converter=to_float)
+    extent: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Model statistic ``meaninertia``; see the MuJoCo XML reference.
-    meaninertia: float | None = attrs.field(default=None, converter=to_float)
+    meaninertia: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Model statistic ``meanmass``; see the MuJoCo XML reference.
-    meanmass: float | None = attrs.field(default=None, converter=to_float)
+    meanmass: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Model statistic ``meansize``; see the MuJoCo XML reference.
-    meansize: float | None = attrs.field(default=None, converter=to_float)
+    meansize: float | None = attrs.field(default=None, converter=to_float, eq=float_key)

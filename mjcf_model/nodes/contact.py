@@ -11,7 +11,16 @@ from typing import ClassVar
 import attrs
 
 from mjcf_model.base import TypedElement
-from mjcf_model.values import Floats, to_float, to_floats, to_int, to_str, to_vec1to2, to_vec1to5
+from mjcf_model.values import (
+    Floats,
+    float_key,
+    to_float,
+    to_floats,
+    to_int,
+    to_str,
+    to_vec1to2,
+    to_vec1to5,
+)
 
 __all__ = ["Contact", "Exclude", "Pair"]
 
@@ -39,13 +48,13 @@ class Pair(TypedElement):
     #: Sliding, torsional and rolling friction coefficients.
     friction: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Part of the margin within which contacts are not generated.
-    gap: float | None = attrs.field(default=None, converter=to_float)
+    gap: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Name of the first geom.
     geom1: str | None = attrs.field(default=None, converter=to_str)
     #: Name of the second geom.
     geom2: str | None = attrs.field(default=None, converter=to_str)
     #: Distance at which contacts (or limits) become active.
-    margin: float | None = attrs.field(default=None, converter=to_float)
+    margin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Constraint solver impedance parameters.
     solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Constraint solver reference parameters (timeconst, dampratio).

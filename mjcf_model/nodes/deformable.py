@@ -15,6 +15,7 @@ from mjcf_model.nodes.geom import Oriented
 from mjcf_model.values import (
     Floats,
     Ints,
+    float_key,
     to_float,
     to_floats,
     to_int,
@@ -67,7 +68,7 @@ class Flexcomp(Oriented):
     #: Size of the inertia box of each point body.
     inertiabox: str | None = attrs.field(default=None, converter=to_str)
     #: Mass.
-    mass: float | None = attrs.field(default=None, converter=to_float)
+    mass: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Name of the material asset used for rendering.
     material: str | None = attrs.field(default=None, converter=to_str)
     #: Name of the mesh asset.
@@ -77,7 +78,7 @@ class Flexcomp(Oriented):
     #: Point coordinates.
     point: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Radius of the flex elements.
-    radius: float | None = attrs.field(default=None, converter=to_float)
+    radius: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Colour and transparency (r, g, b, a).
     rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
     #: Whether all points are in one rigid body.
@@ -117,19 +118,19 @@ class FlexElasticity(TypedElement):
     #: Elastic 2D mode.
     elastic2d: str | None = attrs.field(default=None, converter=to_str)
     #: Poisson ratio.
-    poisson: float | None = attrs.field(default=None, converter=to_float)
+    poisson: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Cross-section shape.
     section: str | None = attrs.field(default=None, converter=to_str)
     #: Cross-section size.
     sectionsize: str | None = attrs.field(default=None, converter=to_str)
     #: Shear parameter.
-    shear: float | None = attrs.field(default=None, converter=to_float)
+    shear: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Shell thickness.
-    thickness: float | None = attrs.field(default=None, converter=to_float)
+    thickness: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Yield parameter.
     yield_: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "yield"})
     #: Young modulus.
-    young: float | None = attrs.field(default=None, converter=to_float)
+    young: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
 
 
 @attrs.frozen(kw_only=True, repr=False)
@@ -148,9 +149,9 @@ class FlexContact(TypedElement):
     #: Sliding, torsional and rolling friction coefficients.
     friction: Floats | None = attrs.field(default=None, converter=to_vec1to3)
     #: Part of the margin within which contacts are not generated.
-    gap: float | None = attrs.field(default=None, converter=to_float)
+    gap: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Distance at which contacts (or limits) become active.
-    margin: float | None = attrs.field(default=None, converter=to_float)
+    margin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Whether passive contacts are generated.
     passive: str | None = attrs.field(default=None, converter=to_str)
     #: Contact priority.
@@ -160,7 +161,7 @@ class FlexContact(TypedElement):
     #: Constraint solver impedance parameters.
     solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Weight for mixing solver parameters of two contacting geoms.
-    solmix: float | None = attrs.field(default=None, converter=to_float)
+    solmix: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Constraint solver reference parameters (timeconst, dampratio).
     solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
 
@@ -217,7 +218,7 @@ class Flex(TypedElement):
     #: Node coordinates.
     nodecoord: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Radius of the flex elements.
-    radius: float | None = attrs.field(default=None, converter=to_float)
+    radius: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Colour and transparency (r, g, b, a).
     rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
     #: Texture coordinates.

@@ -13,6 +13,7 @@ import attrs
 from mjcf_model.base import TypedElement
 from mjcf_model.values import (
     Floats,
+    float_key,
     to_bool,
     to_float,
     to_floats,
@@ -107,7 +108,7 @@ class Weld(EqualityElement):
     #: Name of the second site.
     site2: str | None = attrs.field(default=None, converter=to_str)
     #: Scale of rotational relative to translational residual.
-    torquescale: float | None = attrs.field(default=None, converter=to_float)
+    torquescale: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
 
 
 @attrs.frozen(kw_only=True, repr=False)

@@ -15,6 +15,7 @@ from mjcf_model.keywords import GEOM_TYPES, LIGHT_TYPES, TRACKING_MODES
 from mjcf_model.values import (
     Floats,
     Ints,
+    float_key,
     one_of,
     to_bool,
     to_float,
@@ -78,7 +79,7 @@ class Geom(Oriented):
     #: Contact type bitmask.
     contype: int | None = attrs.field(default=None, converter=to_int)
     #: Density used to compute mass from volume.
-    density: float | None = attrs.field(default=None, converter=to_float)
+    density: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Scale applied when fitting a primitive to a mesh.
     fitscale: str | None = attrs.field(default=None, converter=to_str)
     #: Coefficients of the ellipsoid fluid model.
@@ -88,15 +89,15 @@ class Geom(Oriented):
     #: Sliding, torsional and rolling friction coefficients.
     friction: Floats | None = attrs.field(default=None, converter=to_vec1to3)
     #: Part of the margin within which contacts are not generated.
-    gap: float | None = attrs.field(default=None, converter=to_float)
+    gap: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Integer group, used for visualization filters and by convention.
     group: int | None = attrs.field(default=None, converter=to_int)
     #: Name of the height-field asset.
     hfield: str | None = attrs.field(default=None, converter=to_str)
     #: Distance at which contacts (or limits) become active.
-    margin: float | None = attrs.field(default=None, converter=to_float)
+    margin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Mass.
-    mass: float | None = attrs.field(default=None, converter=to_float)
+    mass: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Name of the material asset used for rendering.
     material: str | None = attrs.field(default=None, converter=to_str)
     #: Name of the mesh asset.
@@ -110,7 +111,7 @@ class Geom(Oriented):
     #: Constraint solver impedance parameters.
     solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
     #: Weight for mixing solver parameters of two contacting geoms.
-    solmix: float | None = attrs.field(default=None, converter=to_float)
+    solmix: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Constraint solver reference parameters (timeconst, dampratio).
     solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
     #: Surface velocity of a conveyor-like geom.
@@ -160,9 +161,9 @@ class Camera(Oriented):
     #: Focal length in pixels.
     focalpixel: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Vertical field of view in degrees.
-    fovy: float | None = attrs.field(default=None, converter=to_float)
+    fovy: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Inter-pupillary distance for stereo rendering.
-    ipd: float | None = attrs.field(default=None, converter=to_float)
+    ipd: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: How the element tracks its target (``fixed``, ``track``, ``trackcom``, ...).
     mode: str | None = attrs.field(default=None, converter=to_str, validator=one_of(TRACKING_MODES))
     #: Output channels of the camera.
@@ -203,11 +204,11 @@ class Light(TypedElement):
     #: Constant, linear and quadratic attenuation.
     attenuation: Floats | None = attrs.field(default=None, converter=to_vec3)
     #: Radius of the light bulb, for soft shadows.
-    bulbradius: float | None = attrs.field(default=None, converter=to_float)
+    bulbradius: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Whether the element casts shadows.
     castshadow: bool | None = attrs.field(default=None, converter=to_bool)
     #: Cutoff (spot angle for lights; output clamp for sensors).
-    cutoff: float | None = attrs.field(default=None, converter=to_float)
+    cutoff: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Diffuse colour.
     diffuse: Floats | None = attrs.field(default=None, converter=to_vec3)
     #: Direction the light points in.
@@ -215,13 +216,13 @@ class Light(TypedElement):
     #: Whether the light is directional (legacy form of ``type``).
     directional: bool | None = attrs.field(default=None, converter=to_bool)
     #: Spotlight exponent.
-    exponent: float | None = attrs.field(default=None, converter=to_float)
+    exponent: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Light intensity.
-    intensity: float | None = attrs.field(default=None, converter=to_float)
+    intensity: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: How the element tracks its target (``fixed``, ``track``, ``trackcom``, ...).
     mode: str | None = attrs.field(default=None, converter=to_str, validator=one_of(TRACKING_MODES))
     #: Lower and upper limits.
-    range: float | None = attrs.field(default=None, converter=to_float)
+    range: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Shadow softness.
     softness: str | None = attrs.field(default=None, converter=to_str)
     #: Specular colour or intensity.

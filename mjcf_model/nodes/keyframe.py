@@ -11,7 +11,7 @@ from typing import ClassVar
 import attrs
 
 from mjcf_model.base import TypedElement
-from mjcf_model.values import Floats, to_float, to_floats, to_str
+from mjcf_model.values import Floats, float_key, to_float, to_floats, to_str
 
 __all__ = ["Key", "Keyframe"]
 
@@ -50,4 +50,4 @@ class Key(TypedElement):
     #: Joint velocities.
     qvel: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Simulation time.
-    time: float | None = attrs.field(default=None, converter=to_float)
+    time: float | None = attrs.field(default=None, converter=to_float, eq=float_key)

@@ -11,7 +11,7 @@ from typing import ClassVar
 import attrs
 
 from mjcf_model.base import TypedElement
-from mjcf_model.values import Floats, to_float, to_floats, to_int, to_str
+from mjcf_model.values import Floats, float_key, to_float, to_floats, to_int, to_str
 
 __all__ = [
     "Accelerometer",
@@ -92,7 +92,7 @@ class SensorElement(TypedElement):
     #: Name, unique within its namespace.
     name: str | None = attrs.field(default=None, converter=to_str)
     #: Cutoff (spot angle for lights; output clamp for sensors).
-    cutoff: float | None = attrs.field(default=None, converter=to_float)
+    cutoff: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Custom user data (numbers).
     user: Floats | None = attrs.field(default=None, converter=to_floats)
 
@@ -102,7 +102,7 @@ class SampledSensor(SensorElement):
     """Sensors with delay and sampling settings."""
 
     #: Delay, in time units.
-    delay: float | None = attrs.field(default=None, converter=to_float)
+    delay: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Interpolation of delayed values.
     interp: str | None = attrs.field(default=None, converter=to_str)
     #: Sampling interval (and phase).
@@ -116,7 +116,7 @@ class NoisySensor(SampledSensor):
     """Sampled sensors that declare a noise level."""
 
     #: Standard deviation of noise (informational).
-    noise: float | None = attrs.field(default=None, converter=to_float)
+    noise: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
 
 
 @attrs.frozen(kw_only=True, repr=False)
@@ -560,7 +560,7 @@ class UserSensor(SensorElement):
     #: Computation stage the user sensor needs.
     needstage: str | None = attrs.field(default=None, converter=to_str)
     #: Standard deviation of noise (informational).
-    noise: float | None = attrs.field(default=None, converter=to_float)
+    noise: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Name of the referenced object.
     objname: str | None = attrs.field(default=None, converter=to_str)
     #: Type of the referenced object.

@@ -14,6 +14,7 @@ from mjcf_model.base import TypedElement
 from mjcf_model.keywords import LIMITED
 from mjcf_model.values import (
     Floats,
+    float_key,
     one_of,
     to_float,
     to_floats,
@@ -57,17 +58,17 @@ class TendonSettings(TypedElement):
     #: Range of the total actuator force.
     actuatorfrcrange: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Armature inertia added to the degree of freedom.
-    armature: float | None = attrs.field(default=None, converter=to_float)
+    armature: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Damping (coefficients of a polynomial in MuJoCo 4).
     damping: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Dry friction loss.
-    frictionloss: float | None = attrs.field(default=None, converter=to_float)
+    frictionloss: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Integer group, used for visualization filters and by convention.
     group: int | None = attrs.field(default=None, converter=to_int)
     #: Whether limits apply: ``true``, ``false`` or ``auto``.
     limited: str | None = attrs.field(default=None, converter=to_str, validator=one_of(LIMITED))
     #: Distance at which contacts (or limits) become active.
-    margin: float | None = attrs.field(default=None, converter=to_float)
+    margin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Lower and upper limits.
     range: Floats | None = attrs.field(default=None, converter=to_vec2)
     #: Solver impedance parameters of the friction constraint.
@@ -81,7 +82,7 @@ class TendonSettings(TypedElement):
     #: Spring rest length (or dead band).
     springlength: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Yield threshold of the spring.
-    springyield: float | None = attrs.field(default=None, converter=to_float)
+    springyield: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Spring stiffness (coefficients of a polynomial in MuJoCo 4).
     stiffness: Floats | None = attrs.field(default=None, converter=to_floats)
     #: Custom user data (numbers).
@@ -108,7 +109,7 @@ class DefaultTendon(TendonSettings):
     #: Colour and transparency (r, g, b, a).
     rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
     #: Width.
-    width: float | None = attrs.field(default=None, converter=to_float)
+    width: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
 
 
 @attrs.frozen(kw_only=True, repr=False)
@@ -121,7 +122,7 @@ class Spatial(TendonElement):
     #: Colour and transparency (r, g, b, a).
     rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
     #: Width.
-    width: float | None = attrs.field(default=None, converter=to_float)
+    width: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
 
 
 @attrs.frozen(kw_only=True, repr=False)
@@ -162,7 +163,7 @@ class Pulley(TypedElement):
 
     tag: ClassVar[str] = "pulley"
     #: Divisor of the tendon length of the branch after the pulley.
-    divisor: float | None = attrs.field(default=None, converter=to_float)
+    divisor: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
 
 
 @attrs.frozen(kw_only=True, repr=False)
@@ -171,6 +172,6 @@ class TendonJoint(TypedElement):
 
     tag: ClassVar[str] = "joint"
     #: Coefficient of the joint in the fixed tendon.
-    coef: float | None = attrs.field(default=None, converter=to_float)
+    coef: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
     #: Name of the joint.
     joint: str | None = attrs.field(default=None, converter=to_str)
