@@ -109,7 +109,8 @@ class _Reader:
 
     def refuse_doctype(self, name: str, *_args: Any) -> NoReturn:
         raise MjcfSecurityError(
-            f"DTD <!DOCTYPE {name}> refused: MJCF needs no DTD and entities are never expanded",
+            f"DTD <!DOCTYPE {name}> refused: MJCF needs no DTD and entities are never"
+            " expanded (MuJoCo ignores a DTD: remove it)",
             file=self.filename,
             line=self.parser.CurrentLineNumber,
         )
