@@ -277,6 +277,7 @@ def _character_hint(found: bytes) -> str:
 #: The characters that start markup or a reference (single character classes).
 _TEXT_MARK = re.compile(b"[<&\\]]")
 _TAG_MARK = re.compile(b"[<&\"'>]")
+_AFTER_VALUE = (b"", b" ", b"\t", b"\n", b"\r", b"/", b">", b"?")
 _VALUE_MARK = re.compile(b"[\t\n\r\"'>]")
 _REFERENCES = (b"&amp;", b"&lt;", b"&gt;", b"&quot;", b"&apos;")
 
@@ -455,8 +456,9 @@ def _escape_stray_markup(raw: bytes) -> bytes | None:
 
     tinyxml2 reads an ``&`` that starts no reference, and a ``<`` inside an
     attribute value, as themselves, reads ``&#;`` as nothing and ``]]>`` in text
-    as text, and accepts ``--`` inside a comment (kept as ``- -``: a comment
-    cannot hold ``--``, and MuJoCo ignores comments). CDATA sections and
+    as text, accepts ``--`` inside a comment (kept as ``- -``: a comment
+    cannot hold ``--``, and MuJoCo ignores comments), skips ``<!...>`` nodes
+    other than comments, CDATA and a DTD, and needs no space between attributes. CDATA sections and
     processing instructions are left alone. ``None`` when there is nothing to
     change. Linear in the input.
     """
@@ -514,6 +516,13 @@ def _escape_stray_markup(raw: bytes) -> bytes | None:
                 index = length if end < 0 else end + len(closing)
                 break
         else:
+            if raw.startswith(b"<!", index) and not raw.startswith(b"<!DOCTYPE", index):
+                end = raw.find(b">", index)  # tinyxml2 skips an unknown <!...> node
+                if end < 0:
+                    break
+                replace(index, end + 1 - index, b"\n" * raw.count(b"\n", index, end))
+                index = end + 1
+                continue
             index = _escape_in_tag(raw, index + 1, replace, ampersand)
     if not out:
         return None
@@ -538,6 +547,8 @@ def _escape_in_tag(
         if quote:
             if char == quote:
                 quote = 0
+                if raw[index + 1 : index + 2] not in _AFTER_VALUE:  # tinyxml2 needs no space
+                    replace(index + 1, 0, b" ")
             elif char == ord("<"):
                 replace(index, 1, b"&lt;")
             elif char == ord("&"):

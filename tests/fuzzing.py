@@ -748,6 +748,9 @@ MINIMAL_CASES: dict[str, bytes] = {
     "odd unicode in a name": _named("e\u0301\u202e\U0001f600".encode()),
     "junk after the root": _named(b"b") + b"x<y/>",
     "second root": _named(b"b") + b"<mujoco/>",
+    "no space between attributes": _geom(b'name="g"size="1"'),
+    "unknown <!...> node in an element": b'<mujoco><!,- x --><worldbody><geom size="1"/>'
+    b"</worldbody></mujoco>",
     "text before the root": b"x" + _named(b"b"),
     "> before the root": b">" + _named(b"b"),
     "]]> in text": b"<mujoco><worldbody>]]></worldbody></mujoco>",
