@@ -18,6 +18,8 @@ from typing import Any
 import mujoco
 import pytest
 
+import mjcf_model
+import serializers
 from mjcf_model import (
     Body,
     Comment,
@@ -35,10 +37,8 @@ from mjcf_model import (
 from mjcf_model.compare import model_differences
 from serializers import dump, dumps, from_dict, from_etree, load, loads, to_dict, to_etree
 
-PACKAGES = [
-    Path(__file__).parent.parent / "mjcf_model",
-    Path(__file__).parent.parent / "serializers",
-]
+#: The packages as imported: the installed wheel under tests/run_installed.py.
+PACKAGES = [Path(mjcf_model.__file__).parent, Path(serializers.__file__).parent]
 
 #: MuJoCo's parser (tinyxml2) refuses element nesting deeper than this.
 MUJOCO_DEEPEST_BODY_CHAIN = 496
