@@ -28,8 +28,9 @@ fuzzers have found, on every run.
 The number of examples per test is half the hypothesis profile's count of
 ``tests/conftest.py`` (``ci``: 200 gives 100, ``dev``: 50 gives 25; the
 generated-model test runs half of that and the deep-nesting test a quarter),
-which keeps the whole suite under CI's 15 minutes. A long campaign sets ``MJCF_FUZZ_EXAMPLES`` (the same shares apply),
-runs the tests in parallel and varies the seed::
+which keeps the whole suite under CI's 15 minutes. A long campaign sets
+``MJCF_FUZZ_EXAMPLES`` (the same shares apply), runs the tests in parallel and
+varies the seed::
 
     MJCF_FUZZ_EXAMPLES=100000 .venv/bin/python -m pytest tests/test_fuzz.py \
         -q -n 4 -p no:cacheprovider --hypothesis-seed=$RANDOM
