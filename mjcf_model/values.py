@@ -148,7 +148,8 @@ def _floats(value: object, lo: int, hi: int | None) -> Floats:
         except ValueError:
             bad = next(t for t in value.split() if not _reads_as_float(t))
             raise MjcfValueError(f"expected a number, found {_shortened(bad)!r}") from None
-        items = _one_nan(items)
+        if "n" in value or "N" in value:  # every spelling of NaN has an n; most text none
+            items = _one_nan(items)
     elif type(value) is Unparsed:
         return value  # type: ignore[return-value]
     else:
