@@ -26,9 +26,10 @@ import attrs
 import cattrs
 from cattrs.strategies import configure_tagged_union, include_subclasses
 
-from mjcf_model.base import AttributeMap, Element, GenericElement, Node, TypedElement
+from mjcf_model.base import AttributeMap, Element, Node, TypedElement
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.node_building import build_node
+from mjcf_model.traversal import with_children
 from mjcf_model.values import Floats, Unparsed
 
 __all__ = ["converter", "from_dict", "to_dict"]
@@ -101,10 +102,9 @@ def to_dict(node: Node) -> dict[str, Any]:
     stack: list[tuple[Node, dict[str, Any]]] = [(node, result)]
     while stack:
         current, out = stack.pop()
+        shallow: Node = current
         if isinstance(current, Element) and current.children:
-            shallow = _without_children(current)
-        else:
-            shallow = current
+            shallow = with_children(current, ())
         out.update(converter.unstructure(shallow, Node))
         for key, value in out.items():
             if type(value) is Unparsed:
@@ -115,13 +115,6 @@ def to_dict(node: Node) -> dict[str, Any]:
             out["children"] = children
             stack.extend(zip(current.children, children, strict=True))
     return result
-
-
-def _without_children(element: Element) -> Node:
-    if isinstance(element, TypedElement):
-        return build_node(type(element), {"children": ()}, element)
-    assert isinstance(element, GenericElement)
-    return GenericElement(tag=element.tag, attributes=element.attributes, text=element.text)
 
 
 def from_dict(data: Mapping[str, Any]) -> Node:
