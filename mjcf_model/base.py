@@ -401,7 +401,7 @@ def _tree_repr(node: TypedElement | GenericElement) -> str:
 AnyElement = TypedElement | GenericElement
 _E = TypeVar("_E", bound=TypedElement | GenericElement)
 
-_BASE_FIELDS = frozenset({"children", "text", "extra", "attribute_order"})
+_BASE_FIELDS = frozenset({"children", "text", "extra", "attribute_order", "base_dir"})
 
 
 def xml_name(field: attrs.Attribute[Any]) -> str:

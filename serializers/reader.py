@@ -29,6 +29,7 @@ from mjcf_model.errors import (
     MjcfSyntaxError,
 )
 from mjcf_model.namespaces import child_key, children_context, guess_context
+from mjcf_model.node_building import build_node
 from mjcf_model.nodes.root import Include, Mujoco
 from mjcf_model.registry import CLASS_BY_KEY
 from mjcf_model.traversal import map_tree, with_children
@@ -634,7 +635,9 @@ def _read(data: str | bytes, filename: str, session: _Session) -> Mujoco:
         root = _splice(document)
         if not stack:
             assert isinstance(root, Mujoco)
-            return root
+            if session.main_dir is None:
+                return root
+            return build_node(Mujoco, {"base_dir": session.main_dir}, root)
         reading.pop(Path(document.filename), None)
         parent = stack[-1]
         parent.found[id(parent.includes[len(parent.found)].node)] = root.children

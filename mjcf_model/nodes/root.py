@@ -7,6 +7,8 @@ Worldbody()
 
 from __future__ import annotations
 
+import os
+from pathlib import Path
 from typing import ClassVar
 
 import attrs
@@ -28,6 +30,18 @@ from mjcf_model.nodes.tendon import Tendon
 from mjcf_model.nodes.visual import Visual
 from mjcf_model.values import to_str
 
+
+def to_base_dir(value: str | os.PathLike[str] | None) -> Path | None:
+    """An absolute folder path, or ``None``.
+
+    Example:
+        >>> to_base_dir("/robots/panda")
+        PosixPath('/robots/panda')
+
+    """
+    return None if value is None else Path(os.path.abspath(value))
+
+
 __all__ = ["Include", "Mujoco"]
 
 
@@ -47,6 +61,11 @@ class Mujoco(TypedElement):
     tag: ClassVar[str] = "mujoco"
     #: Name of the model asset.
     model: str | None = attrs.field(default=None, converter=to_str)
+    #: The folder the model's relative file paths (meshes, textures, includes, ...)
+    #: resolve from: the loaded file's folder, or ``None`` for a model built in code,
+    #: whose paths resolve from wherever it is compiled or written. Where a model's
+    #: files are is not part of its value: ``==``, ``hash`` and the dict form ignore it.
+    base_dir: Path | None = attrs.field(default=None, eq=False, repr=False, converter=to_base_dir)
 
     @property
     def compiler(self) -> Compiler | None:
