@@ -30,6 +30,7 @@ from mjcf_model.builders import (
     new_joint,
     new_site,
 )
+from mjcf_model.compiling import compiled
 from mjcf_model.composition import attach, attach_all
 from mjcf_model.errors import *  # noqa: F403  (every error class; listed in errors.__all__)
 from mjcf_model.materials import CustomMaterial, recolored_collision_geoms, with_material
@@ -54,6 +55,7 @@ __all__ = [
     "attach_all",
     "attribute_items",
     "categorized",
+    "compiled",
     "declared_names",
     "find",
     "find_all",

@@ -23,6 +23,7 @@ __all__ = [
     "compiled_names",
     "model_differences",
     "model_fields",
+    "path_fields",
 ]
 
 #: Fields that describe how the model was loaded, not the model.
@@ -54,6 +55,22 @@ def model_fields() -> tuple[str, ...]:
 #: The fields that hold the name table, and the buffer size that grows with it:
 #: renaming changes them and nothing else.
 NAME_FIELDS = frozenset({"names", "names_map", "nnames", "nnames_map", "nbuffer"})
+
+
+@functools.cache
+def path_fields() -> frozenset[str]:
+    """The fields that record the file paths assets were read from (``paths``, ``*_pathadr``).
+
+    A model compiled from other paths to the same files (moved, bundled, read
+    from an asset dictionary) differs in these and nothing else.
+
+    Example:
+        >>> sorted(path_fields())[:3]
+        ['hfield_pathadr', 'mesh_pathadr', 'nbuffer']
+
+    """
+    found = {name for name in model_fields() if name.endswith("_pathadr")}
+    return frozenset({*found, "paths", "npaths", "nbuffer"})
 
 
 def _name_address_fields() -> tuple[str, ...]:

@@ -29,6 +29,8 @@ MuJoCo may read what mjcf-model cannot)
 from __future__ import annotations
 
 __all__ = [
+    "MjcfAssetError",
+    "MjcfCompileError",
     "MjcfError",
     "MjcfIncludeError",
     "MjcfLookupError",
@@ -115,6 +117,17 @@ class MjcfIncludeError(MjcfError, OSError):
 
     def __str__(self) -> str:
         return self._render()
+
+
+class MjcfAssetError(MjcfError, OSError):
+    """A file the model names (mesh, texture, height field, skin, sub-model) cannot be read."""
+
+    def __str__(self) -> str:
+        return self._render()
+
+
+class MjcfCompileError(MjcfError, ValueError):
+    """MuJoCo rejects the model; the message is MuJoCo's own."""
 
 
 class MjcfSecurityError(MjcfError, ValueError):

@@ -1,0 +1,290 @@
+"""Where a model's files are: asset, include and sub-model paths, resolved as MuJoCo does.
+
+A loaded :class:`~mjcf_model.Mujoco` records the folder it was read from in
+``base_dir``. A relative file path in it resolves the way MuJoCo resolves it:
+
+* meshes, height fields, skins and ``<flexcomp file>`` under ``<compiler meshdir>``;
+* textures under ``<compiler texturedir>``;
+* ``assetdir`` stands for whichever of the two is not set;
+* ``<include>`` and asset ``<model>`` files under the model's folder itself;
+* a relative folder is itself relative to the model's folder, an absolute path
+  is used as it is, and ``strippath="true"`` drops the directory part of every
+  file name first.
+
+A model built in code has no ``base_dir``: its paths resolve from wherever it is
+compiled or written (the working folder, when compiled).
+:func:`relocated` rewrites the relative paths of a model so that they resolve
+to the same files from another folder (and under other compiler folders): what
+:func:`serializers.dump` does when it writes a model somewhere else and what
+:func:`mjcf_model.attach` does when a child comes from another folder.
+
+>>> from serializers import loads
+>>> model = loads('<mujoco><compiler meshdir="meshes"/><asset><mesh file="arm.stl"/></asset>'
+...               '</mujoco>', base_dir="/robots/panda")
+>>> [str(reference.path) for reference in file_references(model)]
+['/robots/panda/meshes/arm.stl']
+>>> moved = relocated(model, "/scenes")
+>>> moved.asset.elements[0].file, moved.base_dir
+('../../robots/panda/meshes/arm.stl', PosixPath('/scenes'))
+"""
+
+from __future__ import annotations
+
+import os
+import posixpath
+from collections.abc import Callable, Iterator, Mapping
+from pathlib import Path, PurePosixPath
+from typing import Literal
+
+import attrs
+
+from mjcf_model.base import AnyElement, get_attribute, with_attributes
+from mjcf_model.errors import MjcfValueError
+from mjcf_model.node_building import build_node
+from mjcf_model.nodes.root import Mujoco, to_base_dir
+from mjcf_model.traversal import Ancestors, keyed_walk, map_elements
+
+__all__ = [
+    "FILE_ATTRIBUTES",
+    "FileReference",
+    "Folders",
+    "file_references",
+    "relocated",
+    "with_paths",
+    "without_folders",
+]
+
+#: Which compiler folder a file path resolves under (``model``: the model's own folder).
+Kind = Literal["mesh", "texture", "model"]
+
+_TEXTURE_FILES = ("file", "fileright", "fileleft", "fileup", "filedown", "filefront", "fileback")
+
+#: The attributes that name files, by schema key, with the folder each resolves under.
+FILE_ATTRIBUTES: Mapping[str, tuple[Kind, tuple[str, ...]]] = {
+    "asset/mesh": ("mesh", ("file",)),
+    "asset/hfield": ("mesh", ("file",)),
+    "asset/skin": ("mesh", ("file",)),
+    "deformable/skin": ("mesh", ("file",)),
+    "body/flexcomp": ("mesh", ("file",)),
+    "asset/texture": ("texture", _TEXTURE_FILES),
+    "asset/model": ("model", ("file",)),
+    "include": ("model", ("file",)),
+}
+
+
+def _true(value: object) -> bool:
+    return str(value).strip().lower() == "true"
+
+
+@attrs.frozen
+class Folders:
+    """The ``<compiler>`` settings that say where files are.
+
+    Example:
+        >>> from serializers import loads
+        >>> Folders.of(loads('<mujoco><compiler assetdir="a" texturedir="t"/></mujoco>'))
+        Folders(mesh='a', texture='t', strip=False)
+
+    """
+
+    #: ``meshdir`` (or ``assetdir``); empty when neither is set.
+    mesh: str = ""
+    #: ``texturedir`` (or ``assetdir``); empty when neither is set.
+    texture: str = ""
+    #: ``strippath``: file names lose their directory part.
+    strip: bool = False
+
+    @classmethod
+    def of(cls, model: Mujoco) -> Folders:
+        """The settings of all of ``model``'s ``<compiler>`` sections, later ones winning."""
+        settings: dict[str, object] = {}
+        for section in model.elements:
+            if section.tag == "compiler":
+                for name in ("meshdir", "texturedir", "assetdir", "strippath"):
+                    value = get_attribute(section, name)
+                    if value is not None:
+                        settings[name] = value
+        asset = str(settings.get("assetdir", ""))
+        return cls(
+            mesh=str(settings.get("meshdir", asset)),
+            texture=str(settings.get("texturedir", asset)),
+            strip=_true(settings.get("strippath", "false")),
+        )
+
+    def folder(self, kind: Kind) -> str:
+        """The folder setting that paths of ``kind`` resolve under."""
+        return {"mesh": self.mesh, "texture": self.texture, "model": ""}[kind]
+
+    def location(self, kind: Kind, base_dir: Path | None) -> Path:
+        """The folder a relative path of ``kind`` resolves in (no base: the working folder)."""
+        folder = self.folder(kind)
+        root = base_dir if base_dir is not None else Path(os.getcwd())
+        return Path(os.path.normpath(root / folder)) if folder else root
+
+
+@attrs.frozen
+class FileReference:
+    """One file path written in a model."""
+
+    #: The element that names the file.
+    element: AnyElement
+    #: The element's schema key (``"asset/mesh"``, ``"include"``, ...).
+    key: str
+    #: The attribute holding the path.
+    attribute: str
+    #: The path as written.
+    text: str
+    #: Which folder the path resolves under.
+    kind: Kind
+    #: Where the file is (the path MuJoCo opens, when no asset dictionary provides it).
+    path: Path
+    #: The path MuJoCo looks up in an asset dictionary: folder and file name joined.
+    lookup: str
+
+
+def _effective(text: str, folders: Folders, kind: Kind) -> str:
+    """The path MuJoCo uses: with ``strippath`` only the file name (includes keep theirs)."""
+    if folders.strip and kind != "model":
+        return PurePosixPath(text.replace("\\", "/")).name
+    return text
+
+
+def _lookup(text: str, folders: Folders, kind: Kind) -> str:
+    folder = folders.folder(kind)
+    return posixpath.normpath(posixpath.join(folder, text)) if folder else text
+
+
+def _references(
+    element: AnyElement, key: str | None, folders: Folders, base_dir: Path | None
+) -> Iterator[FileReference]:
+    found = FILE_ATTRIBUTES.get(key or "")
+    if found is None:
+        return
+    kind, attributes = found
+    for attribute in attributes:
+        value = get_attribute(element, attribute)
+        if not isinstance(value, str) or not value:
+            continue
+        text = _effective(value, folders, kind)
+        yield FileReference(
+            element=element,
+            key=str(key),
+            attribute=attribute,
+            text=value,
+            kind=kind,
+            path=Path(os.path.normpath(folders.location(kind, base_dir) / text)),
+            lookup=_lookup(text, folders, kind),
+        )
+
+
+def file_references(model: Mujoco) -> Iterator[FileReference]:
+    """Every file path written in ``model`` (kept ``<include>`` elements, not their contents).
+
+    Example:
+        >>> from serializers import loads
+        >>> model = loads('<mujoco><asset><texture type="2d" file="wood.png"/></asset></mujoco>')
+        >>> [(r.key, r.attribute, r.text, r.kind) for r in file_references(model)]
+        [('asset/texture', 'file', 'wood.png', 'texture')]
+
+    """
+    folders = Folders.of(model)
+    for element, key, _ in keyed_walk(model):
+        yield from _references(element, key, folders, model.base_dir)
+
+
+def with_paths(model: Mujoco, new_path: Callable[[FileReference], str]) -> Mujoco:
+    """``model`` with each file path replaced by ``new_path(reference)``; the rest is shared.
+
+    Example:
+        >>> from serializers import loads
+        >>> model = loads('<mujoco><asset><mesh file="a.stl"/></asset></mujoco>')
+        >>> with_paths(model, lambda r: r.text.upper()).asset.elements[0].file
+        'A.STL'
+
+    """
+    folders = Folders.of(model)
+
+    def visit(element: AnyElement, key: str | None, _: Ancestors) -> AnyElement:
+        changes = {}
+        for reference in _references(element, key, folders, model.base_dir):
+            text = new_path(reference)
+            if text != reference.text:
+                changes[reference.attribute] = text
+        return with_attributes(element, changes)
+
+    return map_elements(visit, model)
+
+
+def relocated(
+    model: Mujoco,
+    base_dir: str | os.PathLike[str] | None,
+    folders: Folders | None = None,
+) -> Mujoco:
+    """``model`` with its relative file paths rewritten to resolve from ``base_dir``.
+
+    Each relative path is rewritten so that, read from ``base_dir`` under the
+    compiler ``folders`` (by default the model's own), it names the file it
+    names now. A path whose folder does not change is kept exactly as written,
+    and absolute paths are kept. A model without a ``base_dir`` has paths that
+    resolve from wherever it is used: they are taken as relative to the new
+    place too, so only a change of compiler folder rewrites them. When the new
+    ``base_dir`` is ``None`` (a model built in code), paths that resolved from
+    a known folder become absolute.
+
+    Args:
+        model: The model whose paths are rewritten.
+        base_dir: The folder the result's paths should resolve from.
+        folders: The compiler folders they should resolve under.
+
+    Raises:
+        MjcfValueError: ``folders`` strips paths (``strippath``), and a file is
+            not directly in its folder.
+
+    Example:
+        >>> from serializers import loads
+        >>> model = loads('<mujoco><include file="parts/arm.xml"/></mujoco>', base_dir="/robots")
+        >>> relocated(model, "/robots/scenes").elements[0].file
+        '../parts/arm.xml'
+
+    """
+    target_base = to_base_dir(base_dir)
+    source = Folders.of(model)
+    target = folders if folders is not None else source
+    source_base = model.base_dir if model.base_dir is not None else target_base
+
+    def new_path(reference: FileReference) -> str:
+        text = _effective(reference.text, source, reference.kind)
+        old = source.location(reference.kind, source_base)
+        new = target.location(reference.kind, target_base)
+        if os.path.isabs(text) or (old == new and source.strip == target.strip):
+            return reference.text
+        path = os.path.normpath(old / text)
+        if target_base is None and source_base is not None:
+            return path
+        written = os.path.relpath(path, new)
+        if target.strip and reference.kind != "model" and os.path.dirname(written):
+            raise MjcfValueError(
+                f'cannot refer to {path!r} from {str(new)!r}: the compiler\'s strippath="true" '
+                "drops folder names; set strippath to false or move the file beside the model"
+            )
+        return written.replace(os.sep, "/")
+
+    moved = with_paths(model, new_path)
+    return build_node(Mujoco, {"base_dir": target_base}, moved)
+
+
+def without_folders(model: Mujoco) -> Mujoco:
+    r"""``model`` with the compiler's folder settings removed (every path then names its file).
+
+    Example:
+        >>> from serializers import dumps, loads
+        >>> dumps(without_folders(loads('<mujoco><compiler meshdir="m" angle="radian"/></mujoco>')))
+        '<mujoco>\n  <compiler angle="radian"/>\n</mujoco>\n'
+
+    """
+    unset = dict.fromkeys(("meshdir", "texturedir", "assetdir", "strippath"))
+
+    def visit(element: AnyElement, key: str | None, _: Ancestors) -> AnyElement:
+        return with_attributes(element, unset) if key == "compiler" else element
+
+    return map_elements(visit, model)
