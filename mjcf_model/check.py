@@ -16,7 +16,8 @@ from typing import Literal
 
 import attrs
 
-from mjcf_model.compare import compile_text_beside, model_differences
+from mjcf_model.compare import model_differences, path_fields
+from mjcf_model.compiling import compiled
 from mjcf_model.errors import MjcfError
 
 __all__ = ["CheckResult", "check_file"]
@@ -49,9 +50,10 @@ class CheckResult:
 def check_file(path: str | os.PathLike[str], *, inline_includes: bool = False) -> CheckResult:
     """Round-trip one MJCF file and compare the compiled models.
 
-    Loads the file, writes it back to text, compiles the original and the
-    written text (from the same directory, so relative paths resolve alike) and
-    compares every field of the two ``MjModel`` objects.
+    Loads the file, writes it back to text, compiles the original and, in
+    memory (:func:`mjcf_model.compiled`), the written text read as if it stood
+    in the original's folder, and compares every field of the two ``MjModel``
+    objects but the recorded file paths (:func:`mjcf_model.compare.path_fields`).
 
     Example:
         >>> check_file("/no/such/file.xml").status
@@ -60,7 +62,7 @@ def check_file(path: str | os.PathLike[str], *, inline_includes: bool = False) -
     """
     import mujoco
 
-    from serializers import dumps, load
+    from serializers import dumps, load, loads
 
     name = str(path)
     if not Path(path).is_file():
@@ -71,13 +73,14 @@ def check_file(path: str | os.PathLike[str], *, inline_includes: bool = False) -
         return CheckResult(path=name, status="not-compiled", message=str(error).strip())
     try:
         written = dumps(load(path, inline_includes=inline_includes))
+        reread = loads(written, base_dir=Path(path).parent, filename=name)
     except MjcfError as error:
         return CheckResult(path=name, status="error", message=str(error))
     try:
-        again = compile_text_beside(written, Path(path))
-    except ValueError as error:
-        message = f"the written model does not compile: {str(error).strip()}"
+        again = compiled(reread)
+    except MjcfError as error:
+        message = f"the written model does not compile: {error.detail}"
         return CheckResult(path=name, status="error", message=message)
-    differences = tuple(model_differences(original, again))
+    differences = tuple(model_differences(original, again, ignore=path_fields()))
     status: Status = "different" if differences else "identical"
     return CheckResult(path=name, status=status, differences=differences)

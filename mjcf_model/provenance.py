@@ -46,10 +46,12 @@ from mjcf_model.traversal import Ancestors, keyed_walk, map_elements
 
 __all__ = [
     "FILE_ATTRIBUTES",
+    "FILE_TAGS",
     "FileReference",
     "Folders",
     "file_references",
     "relocated",
+    "with_included_paths",
     "with_paths",
     "without_folders",
 ]
@@ -271,6 +273,53 @@ def relocated(
 
     moved = with_paths(model, new_path)
     return build_node(Mujoco, {"base_dir": target_base}, moved)
+
+
+#: The tags of elements that may name a file (see :data:`FILE_ATTRIBUTES`).
+FILE_TAGS = frozenset(key.rpartition("/")[2] for key in FILE_ATTRIBUTES)
+
+
+def with_included_paths(model: Mujoco, origins: Mapping[int, tuple[AnyElement, Path]]) -> Mujoco:
+    """``model`` (its includes inlined) with paths written in included files made explicit.
+
+    MuJoCo looks for a file named in an included file under the main model's
+    folder first and then beside the included file. Once the include is
+    inlined the second place is gone, so a path found only there is rewritten
+    to name it from the main model's folder.
+
+    Args:
+        model: The model, with ``base_dir`` set to the main model's folder.
+        origins: For each element that came from an included file, by ``id``:
+            the element and that file's folder.
+
+    Example:
+        >>> import pathlib, tempfile
+        >>> from serializers import loads
+        >>> folder = pathlib.Path(tempfile.mkdtemp())
+        >>> (folder / "parts").mkdir()
+        >>> _ = (folder / "parts" / "arm.obj").write_text("v 0 0 0")
+        >>> model = loads('<mujoco><asset><mesh file="arm.obj"/></asset></mujoco>', base_dir=folder)
+        >>> mesh = model.asset.elements[0]
+        >>> with_included_paths(model, {id(mesh): (mesh, folder / "parts")}).asset.elements[0].file
+        'parts/arm.obj'
+
+    """
+    if not origins:
+        return model
+    folders = Folders.of(model)
+
+    def new_path(reference: FileReference) -> str:
+        origin = origins.get(id(reference.element))
+        if origin is None or origin[0] is not reference.element or reference.path.exists():
+            return reference.text
+        text = _effective(reference.text, folders, reference.kind)
+        beside = Path(os.path.normpath(origin[1] / text))
+        if os.path.isabs(text) or not beside.exists():
+            return reference.text
+        written = os.path.relpath(beside, folders.location(reference.kind, model.base_dir))
+        return written.replace(os.sep, "/")
+
+    return with_paths(model, new_path)
 
 
 def without_folders(model: Mujoco) -> Mujoco:

@@ -10,7 +10,18 @@ True
 """
 
 from serializers.dicts import from_dict, to_dict
+from serializers.export import export
 from serializers.reader import from_etree, load, loads
 from serializers.writer import dump, dumps, to_etree
 
-__all__ = ["dump", "dumps", "from_dict", "from_etree", "load", "loads", "to_dict", "to_etree"]
+__all__ = [
+    "dump",
+    "dumps",
+    "export",
+    "from_dict",
+    "from_etree",
+    "load",
+    "loads",
+    "to_dict",
+    "to_etree",
+]

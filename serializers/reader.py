@@ -31,6 +31,7 @@ from mjcf_model.errors import (
 from mjcf_model.namespaces import child_key, children_context, guess_context
 from mjcf_model.node_building import build_node
 from mjcf_model.nodes.root import Include, Mujoco
+from mjcf_model.provenance import FILE_TAGS, with_included_paths
 from mjcf_model.registry import CLASS_BY_KEY
 from mjcf_model.traversal import map_tree, with_children
 from mjcf_model.values import NOT_XML_CHARACTER
@@ -608,6 +609,7 @@ def _read(data: str | bytes, filename: str, session: _Session) -> Mujoco:
     """
     stack = [_parse(data, filename, session)]
     reading = {path: 0 for path in session.include_chain}
+    origins: dict[int, tuple[AnyElement, Path]] = {}
     while True:
         document = stack[-1]
         if len(document.found) < len(document.includes):
@@ -637,10 +639,29 @@ def _read(data: str | bytes, filename: str, session: _Session) -> Mujoco:
             assert isinstance(root, Mujoco)
             if session.main_dir is None:
                 return root
-            return build_node(Mujoco, {"base_dir": session.main_dir}, root)
+            root = build_node(Mujoco, {"base_dir": session.main_dir}, root)
+            return with_included_paths(root, origins)
         reading.pop(Path(document.filename), None)
         parent = stack[-1]
         parent.found[id(parent.includes[len(parent.found)].node)] = root.children
+        _record_origins(root.children, Path(document.filename).parent, origins)
+
+
+def _record_origins(
+    nodes: tuple[Node, ...], folder: Path, origins: dict[int, tuple[AnyElement, Path]]
+) -> None:
+    """Note ``folder`` as the origin of each element in ``nodes`` that may name a file.
+
+    Elements of a file included deeper keep the folder noted first, their own:
+    MuJoCo looks beside the innermost included file.
+    """
+    stack = list(nodes)
+    while stack:
+        node = stack.pop()
+        if isinstance(node, (TypedElement, GenericElement)):
+            if node.tag in FILE_TAGS and id(node) not in origins:
+                origins[id(node)] = (node, folder)
+            stack.extend(node.children)
 
 
 def _splice(document: _Document) -> Mujoco | AnyElement:

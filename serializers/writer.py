@@ -24,6 +24,8 @@ from typing import IO
 
 from mjcf_model.base import AnyElement, Comment, GenericElement, Node, attribute_items
 from mjcf_model.errors import MjcfValueError
+from mjcf_model.nodes.root import Mujoco
+from mjcf_model.provenance import relocated
 from mjcf_model.values import format_value
 
 __all__ = ["attribute_texts", "dump", "dumps", "to_etree"]
@@ -129,6 +131,12 @@ def dump(
 ) -> None:
     r"""Write a node to a file path or an open text file.
 
+    Writing a loaded model to a path in another folder relocates it: relative
+    file paths (meshes, textures, includes...) are rewritten to name the same
+    files from the new folder (:func:`mjcf_model.provenance.relocated`). Written
+    back to its own folder, the text is unchanged. A model built in code has no
+    folder of its own: its paths are written as they are.
+
     Writing to a path is atomic: the text goes to a temporary file beside the
     target, which then replaces it. If anything fails, the old file is untouched
     and no partial file is left.
@@ -142,11 +150,13 @@ def dump(
         '<mujoco model="m"/>\n'
 
     """
-    text = dumps(node, indent=indent)
     if not isinstance(target, (str, os.PathLike)):
-        target.write(text)
+        target.write(dumps(node, indent=indent))
         return
     path = Path(target)
+    if isinstance(node, Mujoco) and node.base_dir is not None:
+        node = relocated(node, path.parent)
+    text = dumps(node, indent=indent)
     handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
         with os.fdopen(handle, "w", encoding="utf-8") as stream:
