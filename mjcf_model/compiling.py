@@ -30,7 +30,7 @@ from mjcf_model.traversal import keyed_walk
 if TYPE_CHECKING:
     import mujoco
 
-__all__ = ["Bundle", "bundled", "compiled"]
+__all__ = ["Bundle", "bundled", "compiled", "inlined"]
 
 
 @attrs.frozen
@@ -66,8 +66,20 @@ class _Names:
         return name
 
 
-def _inlined(model: Mujoco) -> Mujoco:
-    """``model`` with kept ``<include>`` elements replaced by their files' elements."""
+def inlined(model: Mujoco) -> Mujoco:
+    """``model`` with kept ``<include>`` elements replaced by their files' elements.
+
+    The files are found from the model's ``base_dir`` (a model built in code:
+    the working folder), as :func:`serializers.load` with ``inline_includes``
+    finds them.
+
+    Example:
+        >>> from serializers import loads
+        >>> model = loads("<mujoco><worldbody/></mujoco>")
+        >>> inlined(model) is model
+        True
+
+    """
     if not any(key == "include" for _, key, _ in keyed_walk(model)):
         return model
     from serializers import dumps, loads
@@ -128,7 +140,7 @@ def _bundle(
     names: _Names,
     chain: tuple[Path, ...],
 ) -> Mujoco:
-    model = _inlined(model)
+    model = inlined(model)
 
     def new_path(reference: FileReference) -> str:
         if reference.key == "asset/model":

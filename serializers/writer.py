@@ -23,9 +23,11 @@ from pathlib import Path
 from typing import IO
 
 from mjcf_model.base import AnyElement, Comment, GenericElement, Node, attribute_items
+from mjcf_model.compiling import inlined
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.provenance import relocated
+from mjcf_model.provenance import file_references, relocated
+from mjcf_model.traversal import keyed_walk
 from mjcf_model.values import format_value
 
 __all__ = ["attribute_texts", "dump", "dumps", "to_etree"]
@@ -155,7 +157,9 @@ def dump(
         return
     path = Path(target)
     if isinstance(node, Mujoco) and node.base_dir is not None:
-        node = relocated(node, path.parent)
+        moved = relocated(node, path.parent)
+        _refuse_lost_files(node, moved)
+        node = moved
     text = dumps(node, indent=indent)
     handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
@@ -171,6 +175,24 @@ def dump(
         with contextlib.suppress(OSError):
             os.unlink(temporary)
         raise
+
+
+def _refuse_lost_files(model: Mujoco, moved: Mujoco) -> None:
+    """Raise when a kept ``<include>`` names files that ``moved`` would no longer find.
+
+    An included file is not rewritten: a path in it that MuJoCo found under the
+    main model's folder is looked for under the new folder once the model moves.
+    """
+    if moved is model or not any(key == "include" for _, key, _ in keyed_walk(model)):
+        return
+    before = [r.path for r in file_references(inlined(model))]
+    for reference, path in zip(file_references(inlined(moved)), before, strict=True):
+        if reference.path != path:
+            raise MjcfValueError(
+                f"an included file names {reference.text!r}, found under the model's folder "
+                f"({str(path)!r}); written elsewhere the model would look for "
+                f"{str(reference.path)!r}: load it with inline_includes=True, or export it"
+            )
 
 
 def to_etree(node: Node) -> ET.Element:

@@ -64,7 +64,8 @@ class Mujoco(TypedElement):
     #: The folder the model's relative file paths (meshes, textures, includes, ...)
     #: resolve from: the loaded file's folder, or ``None`` for a model built in code,
     #: whose paths resolve from wherever it is compiled or written. Where a model's
-    #: files are is not part of its value: ``==``, ``hash`` and the dict form ignore it.
+    #: files are is not part of its value (``==`` and ``hash`` ignore it); the dict
+    #: form keeps it, so a model read back from its dict still finds its files.
     base_dir: Path | None = attrs.field(default=None, eq=False, repr=False, converter=to_base_dir)
 
     @property

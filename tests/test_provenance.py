@@ -1,0 +1,276 @@
+"""Where a model's files are: compiled in memory, dumped elsewhere, exported, MuJoCo as referee."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import mujoco
+import pytest
+
+from mjcf_model import (
+    MjcfAssetError,
+    MjcfCompileError,
+    MjcfValueError,
+    Mujoco,
+    compiled,
+)
+from mjcf_model.compare import model_differences, path_fields
+from mjcf_model.provenance import file_references
+from serializers import dump, dumps, export, from_dict, load, loads, to_dict
+from tests.conftest import compiling_corpus, corpus_id
+
+
+def _mesh(points: int) -> str:
+    """An OBJ mesh with ``points`` vertices: which file MuJoCo read shows in ``mesh_vertnum``."""
+    vertices = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+    vertices += [(0.2 + 0.01 * i, 0.2, 0.2) for i in range(points - 4)]
+    lines = [f"v {x} {y} {z}" for x, y, z in vertices]
+    return "\n".join([*lines, "f 1 2 3", "f 1 2 4", "f 1 3 4", "f 2 3 4", ""])
+
+
+def _tree(root: Path, files: dict[str, str]) -> Path:
+    """Write ``files`` (relative path: text) under ``root``; return ``root``."""
+    for name, text in files.items():
+        path = root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    return root
+
+
+def _same(a: mujoco.MjModel, b: mujoco.MjModel) -> list[str]:
+    return model_differences(a, b, ignore=path_fields())
+
+
+ROBOT = """<mujoco model="robot">
+  <compiler meshdir="assets" texturedir="textures" angle="radian"/>
+  <asset>
+    <mesh name="link" file="link.obj"/>
+    <texture name="grid" type="2d" builtin="checker" width="8" height="8"/>
+  </asset>
+  <worldbody>
+    <body name="base"><joint name="j" range="0 1"/><geom type="mesh" mesh="link"/></body>
+  </worldbody>
+</mujoco>
+"""
+
+
+@pytest.fixture
+def robot(tmp_path: Path) -> Path:
+    """A robot in a folder of its own, its mesh under ``assets/``."""
+    folder = _tree(tmp_path / "robots" / "arm", {"robot.xml": ROBOT, "assets/link.obj": _mesh(6)})
+    return folder / "robot.xml"
+
+
+def test_a_loaded_model_knows_its_folder_and_equality_ignores_it(robot: Path) -> None:
+    """``base_dir`` is the file's folder, kept by the dict form; ``==`` and ``hash`` ignore it."""
+    model = load(robot)
+    assert model.base_dir == robot.parent.resolve()
+    again = loads(robot.read_text())
+    assert again.base_dir is None and Mujoco().base_dir is None
+    assert model == again and hash(model) == hash(again)
+    assert from_dict(to_dict(model)) == model
+    assert from_dict(to_dict(model)).base_dir == model.base_dir
+    assert "base_dir" not in to_dict(again)
+    assert loads("<mujoco/>", base_dir=robot.parent).base_dir == robot.parent.resolve()
+
+
+def test_compiled_finds_files_through_the_folder(robot: Path, tmp_path: Path) -> None:
+    """A model compiled in memory equals MuJoCo's compile of the file, from any working folder."""
+    expected = mujoco.MjModel.from_xml_path(str(robot))
+    model = load(robot)
+    assert _same(compiled(model), expected) == []
+    assert compiled(model).mesh_vertnum.tolist() == [6]
+    assert [str(r.path) for r in file_references(model)] == [
+        str(robot.parent.resolve() / "assets" / "link.obj")
+    ]
+
+
+def test_compiled_takes_files_from_the_assets_mapping() -> None:
+    """A model built in code takes its files from ``assets``, by path with or without the folder."""
+    model = loads(ROBOT)
+    assert compiled(model, assets={"link.obj": _mesh(7).encode()}).mesh_vertnum.tolist() == [7]
+    with_folder = {"assets/link.obj": _mesh(5).encode()}
+    assert compiled(model, assets=with_folder).mesh_vertnum.tolist() == [5]
+
+
+def test_compiled_says_which_file_is_missing_and_what_mujoco_rejects() -> None:
+    """A missing file raises MjcfAssetError naming it; MuJoCo's refusal is MjcfCompileError."""
+    with pytest.raises(MjcfAssetError, match=r"link\.obj.*assets="):
+        compiled(loads(ROBOT))
+    with pytest.raises(MjcfCompileError, match="MuJoCo rejects the model"):
+        compiled(loads('<mujoco><worldbody><geom type="mesh" mesh="no"/></worldbody></mujoco>'))
+
+
+def test_dump_elsewhere_relocates_and_dump_in_place_keeps_the_text(
+    robot: Path, tmp_path: Path
+) -> None:
+    """Dumped into another folder the model compiles identically; in place its text is kept."""
+    expected = mujoco.MjModel.from_xml_path(str(robot))
+    model = load(robot)
+    elsewhere = tmp_path / "scenes" / "deep" / "scene.xml"
+    elsewhere.parent.mkdir(parents=True)
+    dump(model, elsewhere)
+    assert _same(mujoco.MjModel.from_xml_path(str(elsewhere)), expected) == []
+    assert 'file="../../../robots/arm/assets/link.obj"' in elsewhere.read_text()
+    beside = robot.parent / "copy.xml"
+    dump(model, beside)
+    assert beside.read_text() == dumps(model)
+    assert _same(mujoco.MjModel.from_xml_path(str(beside)), expected) == []
+
+
+def test_a_model_built_in_code_is_dumped_as_written(tmp_path: Path) -> None:
+    """Without a folder of its own, a model's paths are written unchanged."""
+    path = tmp_path / "m.xml"
+    dump(loads(ROBOT), path)
+    assert path.read_text() == dumps(loads(ROBOT))
+
+
+def test_kept_includes_are_relocated(tmp_path: Path) -> None:
+    """An ``<include>`` kept as such names its file from the folder the model is dumped to."""
+    folder = _tree(
+        tmp_path / "model",
+        {
+            "main.xml": '<mujoco><include file="parts/arm.xml"/></mujoco>',
+            "parts/arm.xml": '<mujoco><asset><mesh name="m" file="m.obj"/></asset>'
+            '<worldbody><geom type="mesh" mesh="m"/></worldbody></mujoco>',
+            "parts/m.obj": _mesh(5),
+        },
+    )
+    expected = mujoco.MjModel.from_xml_path(str(folder / "main.xml"))
+    target = tmp_path / "elsewhere" / "main.xml"
+    target.parent.mkdir()
+    dump(load(folder / "main.xml"), target)
+    assert _same(mujoco.MjModel.from_xml_path(str(target)), expected) == []
+    assert _same(compiled(load(folder / "main.xml")), expected) == []
+
+
+def test_dump_refuses_to_lose_a_file_an_included_file_names(tmp_path: Path) -> None:
+    """A kept include naming a file under the main folder cannot move: the error says why."""
+    folder = _tree(
+        tmp_path / "model",
+        {
+            "main.xml": '<mujoco><compiler meshdir="meshes"/><include file="parts/arm.xml"/>'
+            '<worldbody><geom type="mesh" mesh="m"/></worldbody></mujoco>',
+            "parts/arm.xml": '<mujoco><asset><mesh name="m" file="m.obj"/></asset></mujoco>',
+            "meshes/m.obj": _mesh(5),
+        },
+    )
+    mujoco.MjModel.from_xml_path(str(folder / "main.xml"))
+    target = tmp_path / "elsewhere" / "main.xml"
+    target.parent.mkdir()
+    with pytest.raises(MjcfValueError, match="inline_includes=True"):
+        dump(load(folder / "main.xml"), target)
+    assert not target.exists()
+    dump(load(folder / "main.xml", inline_includes=True), target)
+    expected = mujoco.MjModel.from_xml_path(str(folder / "main.xml"))
+    assert _same(mujoco.MjModel.from_xml_path(str(target)), expected) == []
+
+
+INCLUDED = '<mujoco><asset><mesh name="m" file="m.obj"/></asset></mujoco>'
+USES_MESH = '<worldbody><geom type="mesh" mesh="m"/></worldbody></mujoco>'
+
+
+@pytest.mark.parametrize(
+    ("files", "points"),
+    [
+        ({"sub/m.obj": _mesh(5)}, 5),
+        ({"sub/m.obj": _mesh(5), "m.obj": _mesh(6)}, 6),
+        ({"sub/deeper/m.obj": _mesh(7)}, 7),
+    ],
+    ids=["beside-include", "main-folder-first", "beside-innermost"],
+)
+def test_inlined_includes_name_files_as_mujoco_finds_them(
+    tmp_path: Path, files: dict[str, str], points: int
+) -> None:
+    """A path in an included file names, once inlined, the file MuJoCo reads for it."""
+    deeper = "deeper" in next(iter(files))
+    files = {
+        "main.xml": '<mujoco><include file="sub/inc.xml"/>' + USES_MESH,
+        "sub/inc.xml": '<mujoco><include file="deeper/inc.xml"/></mujoco>' if deeper else INCLUDED,
+        "sub/deeper/inc.xml": INCLUDED,
+        **files,
+    }
+    main = _tree(tmp_path, files) / "main.xml"
+    expected = mujoco.MjModel.from_xml_path(str(main))
+    assert expected.mesh_vertnum.tolist() == [points]
+    inlined = load(main, inline_includes=True)
+    assert _same(compiled(inlined), expected) == []
+    written = tmp_path / "written.xml"
+    written.write_text(dumps(inlined))
+    assert _same(mujoco.MjModel.from_xml_path(str(written)), expected) == []
+
+
+def test_export_is_self_contained_readable_and_movable(tmp_path: Path) -> None:
+    """Export copies every file under its own name, once per content, and survives a move."""
+    a = _tree(tmp_path / "a", {"link.obj": _mesh(5), "same.obj": _mesh(9)})
+    b = _tree(tmp_path / "b", {"link.obj": _mesh(6), "same.obj": _mesh(9)})
+    text = (
+        '<mujoco model="two arms"><asset>'
+        f'<mesh name="a" file="{a}/link.obj"/><mesh name="b" file="{b}/link.obj"/>'
+        f'<mesh name="c" file="{a}/same.obj"/><mesh name="d" file="{b}/same.obj"/>'
+        "</asset><worldbody>"
+        + "".join(f'<geom type="mesh" mesh="{n}"/>' for n in "abcd")
+        + "</worldbody></mujoco>"
+    )
+    model = loads(text)
+    expected = mujoco.MjModel.from_xml_string(text)
+    path = export(model, tmp_path / "out")
+    assert path == tmp_path / "out" / "two_arms.xml"
+    assert sorted(p.name for p in (tmp_path / "out" / "assets").iterdir()) == [
+        "link.obj",
+        "link_2.obj",
+        "same.obj",
+    ]
+    moved = tmp_path / "moved"
+    shutil.move(tmp_path / "out", moved)
+    assert _same(mujoco.MjModel.from_xml_path(str(moved / path.name)), expected) == []
+    with pytest.raises(MjcfValueError, match="not an empty folder"):
+        export(model, moved)
+
+
+def test_export_bundles_asset_models_with_their_own_files(tmp_path: Path) -> None:
+    """An asset ``<model>`` file is exported with its meshes and still attaches identically."""
+    folder = _tree(
+        tmp_path / "scene",
+        {
+            "scene.xml": '<mujoco><asset><model name="g" file="../gripper/gripper.xml"/></asset>'
+            '<worldbody><body name="arm"><attach model="g" body="palm" prefix="g_"/></body>'
+            "</worldbody></mujoco>",
+            "../gripper/gripper.xml": '<mujoco><compiler meshdir="meshes"/>'
+            '<asset><mesh name="finger" file="finger.obj"/></asset><worldbody><body name="palm">'
+            '<geom type="mesh" mesh="finger"/></body></worldbody></mujoco>',
+            "../gripper/meshes/finger.obj": _mesh(8),
+        },
+    )
+    expected = mujoco.MjModel.from_xml_path(str(folder / "scene.xml"))
+    assert _same(compiled(load(folder / "scene.xml")), expected) == []
+    path = export(load(folder / "scene.xml"), tmp_path / "out")
+    shutil.rmtree(tmp_path / "gripper")
+    assert _same(mujoco.MjModel.from_xml_path(str(path)), expected) == []
+
+
+#: Corpus models that name files: the ones relocation and export can get wrong.
+WITH_FILES = [p for p in compiling_corpus() if any(file_references(load(p, inline_includes=True)))]
+
+
+def test_most_of_the_corpus_names_files() -> None:
+    """The relocation corpus is not trivially small."""
+    assert len(WITH_FILES) >= 40
+
+
+@pytest.mark.parametrize("path", WITH_FILES, ids=corpus_id)
+def test_corpus_model_dumped_elsewhere_and_exported_compiles_identically(
+    path: Path, tmp_path: Path
+) -> None:
+    """A corpus model dumped into a fresh folder, or exported and moved, compiles identically."""
+    expected = mujoco.MjModel.from_xml_path(str(path))
+    model = load(path, inline_includes=True)
+    dumped = tmp_path / "dumped" / "model.xml"
+    dumped.parent.mkdir()
+    dump(model, dumped)
+    assert _same(mujoco.MjModel.from_xml_path(str(dumped)), expected) == []
+    exported = export(model, tmp_path / "exported")
+    shutil.move(tmp_path / "exported", tmp_path / "moved")
+    moved = tmp_path / "moved" / exported.name
+    assert _same(mujoco.MjModel.from_xml_path(str(moved)), expected) == []
