@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import os
 import posixpath
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from pathlib import Path, PurePosixPath
 from typing import Literal
 
@@ -42,7 +42,7 @@ from mjcf_model.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.node_building import build_node
 from mjcf_model.nodes.root import Mujoco, to_base_dir
-from mjcf_model.traversal import Ancestors, keyed_walk, map_elements
+from mjcf_model.traversal import keyed_walk, map_elements
 
 __all__ = [
     "FILE_ATTRIBUTES",
@@ -206,7 +206,7 @@ def with_paths(model: Mujoco, new_path: Callable[[FileReference], str]) -> Mujoc
     """
     folders = Folders.of(model)
 
-    def visit(element: AnyElement, key: str | None, _: Ancestors) -> AnyElement:
+    def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
         changes = {}
         for reference in _references(element, key, folders, model.base_dir):
             text = new_path(reference)
@@ -333,7 +333,7 @@ def without_folders(model: Mujoco) -> Mujoco:
     """
     unset = dict.fromkeys(("meshdir", "texturedir", "assetdir", "strippath"))
 
-    def visit(element: AnyElement, key: str | None, _: Ancestors) -> AnyElement:
+    def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
         return with_attributes(element, unset) if key == "compiler" else element
 
     return map_elements(visit, model)
