@@ -6,8 +6,17 @@ every attribute that refers to them follows: ``geom mesh``, ``childclass``,
 sensor ``objname`` (in the namespace its ``objtype`` names), flex ``body`` lists.
 
 Assets read from a file without a ``name`` (meshes, textures, height fields,
-skins, models) have the file's stem as their name in MuJoCo; renaming one writes
-the new name explicitly.
+skins) have the file's stem as their name in MuJoCo; an asset ``<model>`` has
+the ``model`` attribute of its file's root instead (read from the file, found
+through the model's ``base_dir``). Renaming one writes the new name explicitly.
+
+Names MuJoCo makes while reading (``<replicate>`` copies, ``<flexcomp>`` bodies,
+``<attach>`` prefixes) follow the name or prefix they are made from, and so do
+references to them: see :mod:`mjcf_model.naming_generated`. An ``<attach>``
+without ``model`` copies a body or frame of the same model, so its ``body`` and
+``frame`` are renamed with that model's names. A skin read from a file names its
+bones' bodies inside the file: renaming bodies then raises, saying to write the
+skin inline first.
 
 >>> from serializers import dumps, loads
 >>> model = loads('''<mujoco><worldbody><body name="arm"><joint name="elbow"/></body></worldbody>
@@ -27,12 +36,14 @@ the new name explicitly.
 
 from __future__ import annotations
 
-import os
-from collections.abc import Callable, Collection, Iterator, Mapping, Sequence
+from collections.abc import Callable, Collection, Mapping, Sequence
+from pathlib import Path
 
 from mjcf_model.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.namespaces import NAMESPACES, SCHEMA, ElementSpec, reference_namespace
+from mjcf_model.naming_generated import SAME_MODEL_ATTACH, GeneratedNames, declarations
+from mjcf_model.nodes.root import Mujoco
 from mjcf_model.traversal import GUESS, keyed_walk, map_elements, refuse_opaque
 from mjcf_model.values import Value
 
@@ -49,32 +60,11 @@ __all__ = [
 #: Every namespace, the default of ``namespaces=`` arguments.
 ALL: frozenset[str] = NAMESPACES
 
-#: Elements whose name, when not written, is the stem of their ``file``.
-_NAMED_BY_FILE = frozenset(
-    {"asset/mesh", "asset/texture", "asset/hfield", "asset/skin", "asset/model", "deformable/skin"}
-)
-
-#: The top-level default class: MuJoCo does not allow renaming it.
-_MAIN_CLASS = ("main", "class")
+#: Skins, which may read the bodies of their bones from a file.
+_SKINS = frozenset({"asset/skin", "deformable/skin"})
 
 #: ``rename(namespace, name)``: the new name, or the same one to keep it.
 Renamer = Callable[[str, str], str]
-
-
-def declarations(element: AnyElement, key: str | None) -> Iterator[tuple[str, str, str]]:
-    """``(attribute, namespace, name)`` for each name ``element`` declares (file stems too)."""
-    spec = SCHEMA.get(key) if key is not None else None
-    if spec is None:
-        return
-    for attribute, namespace in spec.declares.items():
-        name = get_attribute(element, attribute)
-        if isinstance(name, str) and name and (name, namespace) != _MAIN_CLASS:
-            yield attribute, namespace, name
-        elif name is None and key in _NAMED_BY_FILE:
-            file = get_attribute(element, "file")
-            if isinstance(file, str) and file:
-                stem = os.path.splitext(os.path.basename(file.replace("\\", "/")))[0]
-                yield attribute, namespace, stem
 
 
 def declared_names(node: AnyElement) -> dict[str, frozenset[str]]:
@@ -89,8 +79,9 @@ def declared_names(node: AnyElement) -> dict[str, frozenset[str]]:
 
     """
     found: dict[str, set[str]] = {}
+    base_dir = node.base_dir if isinstance(node, Mujoco) else None
     for element, key, _ in keyed_walk(node):
-        for _, namespace, name in declarations(element, key):
+        for _, namespace, name in declarations(element, key, base_dir=base_dir):
             found.setdefault(namespace, set()).add(name)
     return {namespace: frozenset(names) for namespace, names in found.items()}
 
@@ -139,14 +130,19 @@ def prefix_map(
 
 
 def _renamed_attributes(
-    element: AnyElement, key: str | None, rename: Renamer
+    element: AnyElement, key: str | None, rename: Renamer, follow: Renamer, base_dir: Path | None
 ) -> dict[str, Value | None]:
-    """The attribute changes that rename what ``element`` declares and refers to."""
+    """The attribute changes that rename what ``element`` declares and refers to.
+
+    ``rename`` renames declared names, ``follow`` references (generated names too).
+    """
     spec: ElementSpec | None = SCHEMA.get(key) if key is not None else None
     if spec is None:
         return {}
+    if key == "body/attach" and get_attribute(element, "model") is None:
+        spec = SAME_MODEL_ATTACH
     changes: dict[str, Value | None] = {}
-    for attribute, namespace, name in declarations(element, key):
+    for attribute, namespace, name in declarations(element, key, base_dir=base_dir):
         new = rename(namespace, name)
         if new != name:
             changes[attribute] = new
@@ -161,10 +157,10 @@ def _renamed_attributes(
         if target is None:
             continue
         if attribute in spec.list_references:
-            joined = " ".join(rename(target, part) for part in value.split())
+            joined = " ".join(follow(target, part) for part in value.split())
             if joined != " ".join(value.split()):
                 changes[attribute] = joined
-        elif (renamed_value := rename(target, value)) != value:
+        elif (renamed_value := follow(target, value)) != value:
             changes[attribute] = renamed_value
     return changes
 
@@ -179,15 +175,45 @@ def _selectors(element: AnyElement, spec: ElementSpec) -> dict[str, Value | None
 
 
 def _apply(node: AnyElement, rename: Renamer, attach_prefix: str | None) -> AnyElement:
+    """``node`` renamed by ``rename``; each ``<attach>`` prefix gains ``attach_prefix``."""
+    base_dir = node.base_dir if isinstance(node, Mujoco) else None
+    generators: list[GeneratedNames] = []
+
+    def generated() -> GeneratedNames:
+        if not generators:  # read only when a name is not renamed by ``rename`` itself
+            generators.append(GeneratedNames.of(node, base_dir))
+        return generators[0]
+
+    def follow(namespace: str, name: str) -> str:
+        new = rename(namespace, name)
+        if new != name:
+            return new
+        return generated().renamed(namespace, name, follow, attach_prefix)
+
     def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
         refuse_opaque(element, key, "rename names in")
-        changes = _renamed_attributes(element, key, rename)
+        if key in _SKINS and get_attribute(element, "file"):
+            _refuse_file_skin(element, generated().renames_bodies(rename, attach_prefix))
+        changes = _renamed_attributes(element, key, rename, follow, base_dir)
         if attach_prefix and key == "body/attach":
             inner = get_attribute(element, "prefix")
             changes["prefix"] = attach_prefix + (inner if isinstance(inner, str) else "")
         return with_attributes(element, changes)
 
     return map_elements(visit, node, GUESS)
+
+
+def _refuse_file_skin(skin: AnyElement, renames_bodies: bool) -> None:
+    """Raise when bodies are renamed while a skin names its bodies inside a file."""
+    if not renames_bodies:
+        return
+    name, file = get_attribute(skin, "name"), get_attribute(skin, "file")
+    called = f"skin {name!r}" if name else "a skin"
+    raise MjcfValueError(
+        f"cannot rename the bodies of a model where {called} is read from {file!r}: the file "
+        "names the bodies its bones bind to, and MuJoCo would not find them; write the skin "
+        "inline first with serializers.skins.inline_skin_files(model)"
+    )
 
 
 def renamed(
@@ -247,7 +273,18 @@ def prefixed(
             (by default they are left alone: they may point into a parent model).
 
     With all namespaces, an ``<attach>`` element's ``prefix`` also gets ``prefix``
-    in front, so the names it brings in are prefixed too.
+    in front, so the names it brings in are prefixed too. Names MuJoCo makes
+    (replicate copies, flexcomp bodies, attached names) follow what makes them,
+    and so do references to them: ``rope_3`` becomes ``p_rope_3`` when the
+    flexcomp ``rope`` becomes ``p_rope``. An ``<attach>`` without ``model``
+    copies a body of this model: its copies are then named ``prefix`` + the
+    attach's prefix + ``prefix`` + the original name.
+
+    Raises:
+        MjcfValueError: Bodies would be renamed while a skin reads their names
+            from a ``.skn`` file (inline it with ``serializers.skins.inline_skin_files``).
+        MjcfAssetError: An asset ``<model>`` without ``name`` has a file that
+            cannot be read (its name is its file root's ``model`` attribute).
 
     Example:
         >>> from mjcf_model import Body, Geom
