@@ -33,14 +33,18 @@ import numpy.typing as npt
 from mjcf_model.base import AnyElement, with_attributes
 from mjcf_model.defaults import DefaultClasses
 from mjcf_model.errors import MjcfValueError
+from mjcf_model.scaling_plugins import with_sdf_settings
 from mjcf_model.scaling_rules import ScaleContext
 from mjcf_model.scaling_table import RULES
 from mjcf_model.traversal import GUESS, map_elements, refuse_opaque
 
 __all__ = ["MassPolicy", "scaled"]
 
-#: ``"keep"``: explicit masses stay and inertias scale with length squared;
-#: ``"volume"``: masses scale with volume and inertias with volume times length squared.
+#: ``"keep"``: every body keeps its mass (written masses stay; geoms weighed by
+#: density get the density that keeps their mass) and inertias scale with length
+#: squared; ``"volume"``: written masses scale with the volume, masses MuJoCo
+#: computes from density follow the geometry (volume, or area for shell inertia),
+#: and inertias scale with mass times length squared.
 MassPolicy = Literal["keep", "volume"]
 
 
@@ -68,7 +72,11 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     spatial tendon lengths and widths, fixed tendon lengths when all their
     joints slide, contact margins and gaps, torsional and rolling friction
     (they are lengths in MuJoCo), position actuators' ``ctrlrange`` on slide
-    joints, crank lengths, and the same attributes in default classes.
+    joints, crank lengths, and the same attributes in default classes. A
+    ``flexcomp``'s points scale once, through ``scale`` for the ``direct``,
+    ``mesh`` and ``gmsh`` types and through ``spacing`` for the generated ones;
+    a mesh made by an SDF plugin scales through the plugin's length settings
+    (:mod:`mjcf_model.scaling_plugins`).
 
     Args:
         node: A model (``Mujoco``) or any element of one. Default classes and
@@ -84,8 +92,9 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
         mass: The mass policy (see :data:`MassPolicy`).
 
     Raises:
-        MjcfValueError: for a factor that is not positive, a kept ``<include>``, or
-            an ``<attach>`` (the attached model is another file: scale it first).
+        MjcfValueError: for a factor that is not positive, a kept ``<include>``, an
+            ``<attach>`` (the attached model is another file: scale it first), or a
+            mesh or geom made by a plugin other than MuJoCo's torus and bowl SDFs.
 
     Example:
         >>> from mjcf_model import Inertial
@@ -110,6 +119,7 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
                 "cannot scale an <attach>: the attached model is a separate file; "
                 "scale that model and attach the result"
             )
-        return with_attributes(element, RULES[key](element, ancestors, context))
+        changed = with_attributes(element, RULES[key](element, ancestors, context))
+        return with_sdf_settings(changed, key, ancestors, context)
 
     return map_elements(visit, node, GUESS)

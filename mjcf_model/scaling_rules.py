@@ -11,8 +11,9 @@ per schema key from these pieces.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Sequence
-from typing import Any
+from typing import Any, TypeVar
 
 import attrs
 import numpy as np
@@ -20,7 +21,7 @@ import numpy as np
 from mjcf_model.base import AnyElement, get_attribute
 from mjcf_model.defaults import DefaultClasses
 from mjcf_model.traversal import keyed_walk
-from mjcf_model.values import Value
+from mjcf_model.values import Value, format_value
 
 __all__ = [
     "NO_LENGTHS",
@@ -28,6 +29,7 @@ __all__ = [
     "JointInfo",
     "Rule",
     "ScaleContext",
+    "builtin_default",
     "combine",
     "inertias",
     "joint_layout",
@@ -42,6 +44,8 @@ __all__ = [
 ]
 
 Changes = dict[str, Value | None]
+
+_T = TypeVar("_T")
 
 
 @attrs.frozen(kw_only=True)
@@ -88,6 +92,13 @@ class ScaleContext:
         found: JointInfo | None = self._memo["by_name"].get(name)
         return found
 
+    def cached(self, name: str, compute: Callable[[], _T]) -> _T:
+        """``compute()``, worked out once per scaling and kept under ``name``."""
+        if name not in self._memo:
+            self._memo[name] = compute()
+        found: _T = self._memo[name]
+        return found
+
     @property
     def mean(self) -> float:
         """The factor for a length without a direction."""
@@ -105,6 +116,13 @@ class ScaleContext:
     def volume(self) -> float:
         """The factor for a volume."""
         return self.factors[0] * self.factors[1] * self.factors[2]
+
+    @property
+    def area(self) -> float:
+        """The factor for an area (exact when uniform; per axis the volume's to the 2/3)."""
+        if self.factors[0] == self.factors[1] == self.factors[2]:
+            return self.factors[0] ** 2
+        return float(self.volume ** (2 / 3))
 
 
 #: ``rule(element, ancestors, context)``: the attribute changes that scale ``element``.
@@ -132,14 +150,46 @@ def numbers(value: Value | None) -> tuple[float, ...] | None:
 
 
 def times(value: Value, factors: Any) -> Value:
-    """``value`` multiplied by ``factors`` (cycled), in the value's own shape."""
+    """``value`` multiplied by ``factors`` (cycled), in the value's own shape.
+
+    Text (an attribute a typed field keeps as text, a plugin setting) stays text.
+
+    Example:
+        >>> times((1.0, 2.0), 2), times(0.5, [2, 3]), times("0.25 1", 2)
+        ((2.0, 4.0), 1.0, '0.5 2')
+
+    """
     found = numbers(value)
     assert found is not None
     cycle = np.resize(np.asarray(factors, dtype=float), len(found))
     result = tuple(float(n * f) for n, f in zip(found, cycle, strict=True))
+    if isinstance(value, str):
+        return format_value(result)
     if isinstance(value, (int, float)) and len(result) == 1:
         return result[0]
     return result
+
+
+@functools.cache
+def builtin_default(tag: str, attribute: str) -> tuple[float, ...]:
+    """MuJoCo's built-in default of an attribute, read from an empty ``MjSpec``.
+
+    Values MuJoCo keeps in single precision are given by their shortest text
+    (``0.02``, not ``0.019999999552965164``).
+
+    Example:
+        >>> builtin_default("site", "size"), builtin_default("geom", "density")
+        ((0.005, 0.005, 0.005), (1000.0,))
+
+    """
+    import mujoco
+
+    value = getattr(getattr(mujoco.MjSpec().default, tag), attribute)
+    values = []
+    for number in np.atleast_1d(np.asarray(value, dtype=float)):
+        single = np.float32(number)
+        values.append(float(str(single)) if float(single) == number else float(number))
+    return tuple(values)
 
 
 def _in_default(ancestors: Sequence[AnyElement]) -> bool:

@@ -15,12 +15,16 @@ from types import MappingProxyType
 import numpy as np
 
 from mjcf_model.base import AnyElement, get_attribute
+from mjcf_model.errors import MjcfValueError
 from mjcf_model.namespaces import SCHEMA
+from mjcf_model.scaling_mass import geom_density
+from mjcf_model.scaling_plugins import makes_sdf, sdf_config, sdf_mesh_scale
 from mjcf_model.scaling_rules import (
     NO_LENGTHS,
     Changes,
     Rule,
     ScaleContext,
+    builtin_default,
     combine,
     inertias,
     lengths,
@@ -31,6 +35,7 @@ from mjcf_model.scaling_rules import (
     times,
     with_builtin,
 )
+from mjcf_model.values import format_value
 
 __all__ = ["RULES", "UNSCALED_BY_DECISION"]
 
@@ -42,23 +47,6 @@ UNSCALED_BY_DECISION: Mapping[str, str] = MappingProxyType(
         "custom/numeric": "size is a count of values, not a length",
     }
 )
-
-
-@functools.cache
-def _builtin(tag: str, attribute: str) -> tuple[float, ...]:
-    """MuJoCo's built-in default of an attribute, read from an empty ``MjSpec``.
-
-    Values MuJoCo keeps in single precision are given by their shortest text
-    (``0.02``, not ``0.019999999552965164``).
-    """
-    import mujoco
-
-    value = getattr(getattr(mujoco.MjSpec().default, tag), attribute)
-    values = []
-    for number in np.atleast_1d(np.asarray(value, dtype=float)):
-        single = np.float32(number)
-        values.append(float(str(single)) if float(single) == number else float(number))
-    return tuple(values)
 
 
 def _mean(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext) -> float:
@@ -73,7 +61,7 @@ def _per_axis(
 
 def _builtin_length(attribute: str, tag: str) -> Rule:
     """A length MuJoCo gives a non-zero default (camera ``ipd``, light ``bulbradius``)."""
-    return with_builtin(attribute, tag, functools.partial(_builtin, tag, attribute), _mean)
+    return with_builtin(attribute, tag, functools.partial(builtin_default, tag, attribute), _mean)
 
 
 def _size_factors(
@@ -103,7 +91,7 @@ def _geom_size(
 
 
 _site_size = with_builtin(
-    "size", "site", functools.partial(_builtin, "site", "size"), _size_factors
+    "size", "site", functools.partial(builtin_default, "site", "size"), _size_factors
 )
 
 
@@ -178,7 +166,7 @@ def _spatial_tendon(
 ) -> Changes:
     changes = combine(*_TENDON_LENGTHS)(element, ancestors, context)
     width = numbers(context.classes.resolve(element, ancestors, "width", "tendon"))
-    changes["width"] = (width or _builtin("tendon", "width"))[0] * context.mean
+    changes["width"] = (width or builtin_default("tendon", "width"))[0] * context.mean
     return changes
 
 
@@ -277,10 +265,72 @@ _LIGHT = combine(
 )
 _CONTACT = combine(lengths("margin", "gap"), parts("friction", (1.0, 1.0), 2))
 _ACTUATOR = combine(lengths("cranklength"))
-_MESH = with_builtin("scale", "mesh", functools.partial(_builtin, "mesh", "scale"), _per_axis)
+_MESH_SCALE = with_builtin(
+    "scale", "mesh", functools.partial(builtin_default, "mesh", "scale"), _per_axis
+)
+
+
+def _mesh(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext) -> Changes:
+    """A mesh made by an SDF plugin scales through the plugin's settings, not ``scale``."""
+    rule = sdf_mesh_scale if makes_sdf(element) else _MESH_SCALE
+    return rule(element, ancestors, context)
+
+
+#: The flexcomp types whose points MuJoCo multiplies by ``scale`` (the others ignore it).
+_POINT_TYPES = frozenset({"direct", "mesh", "gmsh"})
+#: MuJoCo's default flexcomp ``spacing`` and ``inertiabox`` (``user_flexcomp.cc``).
+_FLEXCOMP_SPACING, _FLEXCOMP_INERTIABOX = (0.02, 0.02, 0.02), (0.005,)
+_FLEX_RADIUS = with_builtin(
+    "radius", "flex", functools.partial(builtin_default, "flex", "radius"), _mean
+)
+_FLEXCOMP_COMMON = combine(points("pos"), _FLEX_RADIUS, masses("mass"))
+_FLEXCOMP_SCALE = with_builtin(
+    "scale", "flexcomp", functools.partial(builtin_default, "mesh", "scale"), _per_axis
+)
+
+
+def _flexcomp(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> Changes:
+    """Each generated point once: through ``scale`` or through ``spacing``, never both.
+
+    MuJoCo multiplies the points of the ``direct``, ``mesh`` and ``gmsh`` types
+    (``point``, the file's vertices, and ``origin``) by ``scale``, and builds the
+    other types from ``spacing`` alone. A ``disc``'s points grow with the square
+    of its spacing, so that spacing takes the square root of the factors; it must
+    still exceed twice the radius plus the margin, which grow linearly.
+    """
+    changes = _FLEXCOMP_COMMON(element, ancestors, context)
+    box = numbers(get_attribute(element, "inertiabox")) or _FLEXCOMP_INERTIABOX
+    changes["inertiabox"] = format_value(box[0] * context.mean)  # a text field
+    kind = get_attribute(element, "type") or "grid"
+    if kind in _POINT_TYPES:
+        return {**changes, **_FLEXCOMP_SCALE(element, ancestors, context)}
+    spacing = numbers(get_attribute(element, "spacing")) or _FLEXCOMP_SPACING
+    factors = np.sqrt(context.factors) if kind == "disc" else np.asarray(context.factors)
+    changes["spacing"] = times(tuple(spacing), factors)
+    radius = (numbers(changes.get("radius")) or (0.0,))[0]
+    margin = sum(
+        (numbers(get_attribute(c, "margin")) or (0.0,))[0]
+        for c in element.elements
+        if c.tag == "contact"
+    )
+    if (
+        kind == "disc"
+        and min(numbers(changes["spacing"]) or ()) < 2 * radius + margin * context.mean
+    ):
+        raise MjcfValueError(
+            f"cannot scale the disc flexcomp {get_attribute(element, 'name')!r} by "
+            f"{context.factors}: its spacing grows with the square root of the factor but "
+            "must exceed twice its radius plus its margin, which grow with the factor; "
+            "use a smaller factor or a larger spacing"
+        )
+    return changes
+
 
 _EXPLICIT: dict[str, Rule] = {
     "option": combine(lengths("o_margin")),
+    "compiler": combine(masses("boundmass", "settotalmass"), inertias("boundinertia")),
     "statistic": combine(
         points("center"), lengths("extent", "meansize"), masses("meanmass"), inertias("meaninertia")
     ),
@@ -291,28 +341,26 @@ _EXPLICIT: dict[str, Rule] = {
     "default/camera": _CAMERA,
     "default/light": _LIGHT,
     "default/pair": _CONTACT,
-    "asset/mesh": _MESH,
+    "asset/mesh": _mesh,
+    "asset/mesh/plugin/config": sdf_config,
+    "body/geom/plugin/config": sdf_config,
+    "extension/plugin/instance/config": sdf_config,
     "asset/hfield": _hfield,
     "asset/skin": combine(points("vertex"), lengths("inflate")),
     "asset/skin/bone": combine(points("bindpos")),
     "body": combine(points("pos")),
     "body/inertial": combine(points("pos"), masses("mass"), inertias("diaginertia", "fullinertia")),
     "body/joint": combine(points("pos"), _joint),
-    "body/geom": _GEOM,
+    "body/geom": combine(_GEOM, geom_density),
     "body/site": _SITE,
     "body/camera": _CAMERA,
     "body/light": _LIGHT,
-    "body/flexcomp": combine(
-        points("pos", "spacing", "point", "origin"),
-        lengths("radius", "inertiabox"),
-        masses("mass"),
-        with_builtin("scale", "flexcomp", functools.partial(_builtin, "mesh", "scale"), _per_axis),
-    ),
+    "body/flexcomp": _flexcomp,
     "body/flexcomp/elasticity": combine(lengths("thickness")),
     "body/flexcomp/contact": combine(lengths("margin", "gap")),
     "body/frame": combine(points("pos")),
     "body/replicate": combine(points("offset")),
-    "deformable/flex": combine(points("vertex", "nodecoord"), lengths("radius")),
+    "deformable/flex": combine(points("vertex", "nodecoord"), _FLEX_RADIUS),
     "deformable/flex/contact": combine(lengths("margin", "gap")),
     "deformable/flex/elasticity": combine(lengths("thickness")),
     "deformable/skin": combine(points("vertex"), lengths("inflate")),
