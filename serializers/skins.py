@@ -36,8 +36,10 @@ from numpy.typing import NDArray
 
 from mjcf_model.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.errors import MjcfSyntaxError
+from mjcf_model.node_building import build_node
 from mjcf_model.nodes.asset import Bone, Skin
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.provenance import file_references
 from mjcf_model.traversal import map_elements
 
 __all__ = ["inline_skin_files", "read_skin", "skin_bone_names"]
@@ -116,11 +118,12 @@ def skin_bone_names(path: str | os.PathLike[str]) -> tuple[str, ...]:
     return tuple(str(bone.body) for bone in read_skin(path).children if isinstance(bone, Bone))
 
 
-def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str]) -> Mujoco:
+def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str] | None = None) -> Mujoco:
     """``model`` with every skin read from a file written inline instead.
 
-    ``directory`` is the directory of the model file; skin files are looked up
-    there, under the compiler's ``meshdir`` (or ``assetdir``) as MuJoCo does.
+    Skin files are found as MuJoCo finds them (:mod:`mjcf_model.provenance`):
+    under the compiler's ``meshdir`` (or ``assetdir``), from ``directory``, the
+    folder of the model file (by default the model's own ``base_dir``).
 
     Example:
         >>> from serializers import loads
@@ -129,19 +132,21 @@ def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str]) -> Mujoc
         True
 
     """
-    base = Path(directory)
-    compiler = model.compiler
-    if compiler is not None:
-        folder = get_attribute(compiler, "meshdir") or get_attribute(compiler, "assetdir")
-        if isinstance(folder, str):
-            base = base / folder
+    located = model if directory is None else build_node(Mujoco, {"base_dir": directory}, model)
+    skins = {
+        id(r.element): r
+        for r in file_references(located)
+        if r.key in ("asset/skin", "deformable/skin")
+    }
+    if not skins:
+        return model
 
     def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
-        file = get_attribute(element, "file")
-        if key not in ("asset/skin", "deformable/skin") or not isinstance(file, str):
+        reference = skins.get(id(element))
+        if reference is None or reference.element is not element:
             return element
-        data = read_skin(base / file)
-        name = get_attribute(element, "name") or Path(file.replace("\\", "/")).stem
+        data = read_skin(reference.path)
+        name = get_attribute(element, "name") or Path(reference.text.replace("\\", "/")).stem
         inline = with_attributes(
             element,
             {
