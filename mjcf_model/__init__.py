@@ -10,6 +10,7 @@ changed copies; :mod:`serializers` reads and writes MJCF without losing anything
 """
 
 from mjcf_model import errors, nodes
+from mjcf_model.attachments import inlined_attachments
 from mjcf_model.base import (
     AttributeMap,
     Comment,
@@ -60,6 +61,7 @@ __all__ = [
     "find",
     "find_all",
     "get_attribute",
+    "inlined_attachments",
     "map_elements",
     "map_tree",
     "new_actuator",

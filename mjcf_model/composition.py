@@ -19,34 +19,41 @@ both, which are kept once.
 
 from __future__ import annotations
 
-from collections.abc import Collection, Iterable, Mapping, Sequence
+from collections.abc import Collection, Iterable, Mapping
 
 import attrs
 
+from mjcf_model.attach_points import (
+    AttachKind,
+    Where,
+    attach_point,
+    placement_frame,
+    wrapped,
+)
 from mjcf_model.base import (
     AnyElement,
     GenericElement,
     Node,
     TypedElement,
-    attribute_items,
-    get_attribute,
-    with_attributes,
 )
+from mjcf_model.composition_defaults import classed, merged_settings, sets_values
 from mjcf_model.composition_keys import merged_keyframes
-from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.namespaces import SCHEMA
+from mjcf_model.composition_main import CLASSED_SECTIONS, with_main_as_class
+from mjcf_model.conventions import in_conventions
+from mjcf_model.errors import MjcfValueError
 from mjcf_model.naming import declarations, declared_names, prefixed_declared
 from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.queries import find, find_all
+from mjcf_model.provenance import Folders, file_references, relocated
 from mjcf_model.registry import CLASS_BY_KEY
 from mjcf_model.traversal import keyed_walk, refuse_opaque, with_children
 
-__all__ = ["attach", "attach_all"]
+__all__ = ["AttachKind", "attach", "attach_all", "attach_in_frame"]
 
 #: Sections whose settings the parent keeps; a parent without one adopts the child's.
-_SETTINGS = ("compiler", "option", "size", "statistic", "visual")
+#: (Not ``<compiler>``: the child is converted into the parent's, see ``_in_parent_terms``.)
+_SETTINGS = ("option", "size", "statistic", "visual")
 #: Sections whose elements are added to the parent's section of the same tag.
 _LISTS = (
     "extension",
@@ -59,30 +66,16 @@ _LISTS = (
     "actuator",
     "sensor",
 )
-#: Sections whose elements take defaults and so need the child's class when it has one.
-_CLASSED_SECTIONS = ("asset", "contact", "equality", "tendon", "actuator")
-
-
-def _elements(node: AnyElement) -> list[AnyElement]:
-    return [c for c in node.children if isinstance(c, (TypedElement, GenericElement))]
+#: The keys of skins, which may name their bodies inside a ``.skn`` file.
+_SKIN_KEYS = ("asset/skin", "deformable/skin")
 
 
 def _sections(model: Mujoco, tag: str) -> list[AnyElement]:
-    return [c for c in _elements(model) if c.tag == tag]
+    return [c for c in model.elements if c.tag == tag]
 
 
 def _section_children(model: Mujoco, tag: str) -> list[Node]:
     return [child for section in _sections(model, tag) for child in section.children]
-
-
-def _check_compilers(mine: Sequence[Node], child: Mujoco) -> None:
-    theirs = _sections(child, "compiler")
-    if mine and theirs and mine != theirs:
-        raise MjcfValueError(
-            "the parent and the child have different <compiler> settings, so the child's "
-            "angles, paths or limits would be read differently; make them agree first "
-            f"(parent: {mine[0]!r}, child: {theirs[0]!r})"
-        )
 
 
 def _check_collisions(declared: dict[str, set[str]], theirs: Mapping[str, Collection[str]]) -> None:
@@ -101,120 +94,116 @@ def _check_collisions(declared: dict[str, set[str]], theirs: Mapping[str, Collec
         )
 
 
-def _has_settings(default: AnyElement) -> bool:
-    """Whether a top-level ``<default>`` sets anything itself (not only nested classes)."""
-    return any(e.tag != "default" for e in _elements(default))
-
-
-def _merged_settings(nodes: list[Node]) -> list[Node]:
-    """Several top-level defaults as one class: settings of one tag merged, later ones winning."""
-    merged: list[Node] = []
-    first: dict[str, int] = {}
-    for node in nodes:
-        tag = getattr(node, "tag", None)
-        if not isinstance(tag, str) or tag == "default":
-            merged.append(node)
-        elif tag in first:
-            earlier = merged[first[tag]]
-            assert isinstance(earlier, (TypedElement, GenericElement))
-            assert isinstance(node, (TypedElement, GenericElement))
-            merged[first[tag]] = with_attributes(earlier, dict(attribute_items(node)))
-        else:
-            first[tag] = len(merged)
-            merged.append(node)
-    return merged
-
-
-def _with_class(element: AnyElement, attribute: str, name: str) -> AnyElement:
-    return (
-        element
-        if get_attribute(element, attribute) is not None
-        else with_attributes(element, {attribute: name})
-    )
-
-
-#: The ``<default>`` tags that set actuator defaults: each of them reaches every actuator.
-_ACTUATOR_DEFAULTS = frozenset(
-    key.partition("/")[2]
-    for key in SCHEMA
-    if key.startswith("default/") and f"actuator/{key.partition('/')[2]}" in SCHEMA
-)
-
-
-def _reached_by(key: str, settings: frozenset[str]) -> bool:
-    """Whether default settings with the tags ``settings`` reach an element of schema ``key``."""
-    section, _, tag = key.rpartition("/")
-    if section in ("tendon", "equality"):
-        return section in settings
-    if section == "actuator":
-        return bool(settings & _ACTUATOR_DEFAULTS)
-    return tag in settings
-
-
-def _classed(nodes: Sequence[Node], main: Default, section: str) -> list[Node]:
-    """The children of the child's ``section`` naming its class ``main`` where it applies.
-
-    Only elements that a setting of ``main`` reaches name it: the others read the
-    parent's defaults either way, and an older MuJoCo rejects ``class`` on some of
-    them (``<texture>`` before 4.0). Bodies and frames in the world take it as
-    ``childclass``.
-    """
-    assert main.dclass is not None
-    settings = frozenset(e.tag for e in _elements(main) if e.tag != "default")
-    result: list[Node] = []
-    for node in nodes:
-        if isinstance(node, (TypedElement, GenericElement)):
-            key = f"{section}/{node.tag}"
-            if section == "body" and node.tag in ("body", "frame"):
-                node = _with_class(node, "childclass", main.dclass)
-            elif key in SCHEMA and "class" in SCHEMA[key].attributes and _reached_by(key, settings):
-                node = _with_class(node, "class", main.dclass)
-        result.append(node)
-    return result
-
-
-def attach(parent: Mujoco, child: Mujoco, *, at: str | None = None, prefix: str = "") -> Mujoco:
+def attach(
+    parent: Mujoco,
+    child: Mujoco,
+    *,
+    at: str | None = None,
+    prefix: str = "",
+    at_kind: AttachKind | None = None,
+    pos: Iterable[float] | None = None,
+    quat: Iterable[float] | None = None,
+    euler: Iterable[float] | None = None,
+) -> Mujoco:
     """The parent model with the child model merged into it.
 
     Args:
         parent: The model to add to.
         child: The model added; with ``prefix``, every name it declares is prefixed first.
-        at: The name of the parent body the child's world goes into (default: the world).
+        at: The name of the parent body, frame or site the child's world goes to
+            (default: the world). At a body, the child's world is added to the
+            body's children; at a frame or a site, it is placed at that frame or
+            site, in the body that holds it, as MuJoCo's ``MjSpec`` attaches there.
         prefix: Prepended to the child's names (see :func:`mjcf_model.prefixed`).
+        at_kind: ``"body"``, ``"frame"`` or ``"site"``: which kind of element
+            ``at`` names, needed only when the parent has several kinds by that name.
+        pos: Where the child's world (its root bodies, frames, geoms and sites)
+            is placed, relative to the attach point (default: at it).
+        quat: The orientation of the child's world relative to the attach point,
+            as a quaternion (w, x, y, z).
+        euler: The same as Euler angles instead of ``quat``, read with the
+            parent's ``<compiler>`` ``angle`` units and ``eulerseq``.
 
-    The parent keeps its ``<compiler>`` (the child's must be the same or absent;
-    a parent without one adopts the child's), ``<option>``, ``<size>``,
-    ``<statistic>`` and ``<visual>``. The child's top-level default settings
-    become a class ``<prefix>main`` in the parent's defaults, and the child's
-    elements that relied on them name that class. Keyframes are merged by
+    At a frame or a site the child's world is appended to the body holding it
+    (or the world), inside unnamed ``<frame>`` elements that copy the pose of
+    every frame enclosing the target within that body, then the site's pose
+    (``pos`` and orientation as the site compiles them, read through its default
+    classes; orientation attributes are kept as written, so they are read in the
+    parent's units), then ``pos``/``quat``/``euler``. MuJoCo compiles these
+    frames to the same poses ``MjSpec`` gives (``spec.attach(child, site=...)``,
+    ``site.attach_body``, ``frame.attach_body``), and the child's bodies and
+    geoms come last in that body, in ``MjSpec``'s order. Where a ``childclass``
+    of the parent reaches the attach point, the innermost frame sets
+    ``childclass="main"`` so that the child's elements do not take the parent
+    body's class (``MjSpec`` keeps them in the child's own classes).
+
+    The parent keeps its ``<compiler>`` (the child is converted into it),
+    ``<option>``, ``<size>``, ``<statistic>`` and ``<visual>``. Top-level default
+    settings stay with their model: the child's become a class ``<prefix>main``
+    (``child_main`` without prefix), the parent's a class ``parent_main``
+    (:mod:`mjcf_model.composition_main`), named by the elements they reach. Keyframes are merged by
     position: a child key is completed with the parent's initial ``qpos``
     (reference positions; a free body's own position), a parent key is
     completed by MuJoCo with the child's.
 
     Raises:
         MjcfValueError: on a name collision, different compilers, a kept
-            ``<include>``, or a keyframe that cannot be completed.
-        MjcfLookupError: when no parent body is named ``at``.
+            ``<include>``, a keyframe that cannot be completed, both ``quat`` and
+            ``euler``, a vector of the wrong length, a target inside a
+            ``<replicate>``, or a site placed by ``fromto``.
+        MjcfLookupError: when the parent has no body, frame or site named ``at``
+            (the message lists those it has), or several kinds by that name and
+            no ``at_kind``.
 
     Example:
-        >>> from mjcf_model import Body, Geom, Mujoco, Worldbody
+        >>> from mjcf_model import Body, Geom, Mujoco, Site, Worldbody
         >>> arm_body = Body(name="arm", children=[Geom(size=[1])])
         >>> arm = Mujoco(children=[Worldbody(children=[arm_body])])
         >>> table = Mujoco(children=[Worldbody(children=[Body(name="table")])])
         >>> attach(table, arm, at="table", prefix="r_").worldbody.bodies[0].bodies[0].name
         'r_arm'
 
+        A gripper at the hand's site, turned a quarter about the site's z axis:
+
+        >>> from serializers import dumps
+        >>> hand = Body(name="hand", children=[Site(name="tool", pos=[0, 0, 0.1])])
+        >>> robot = Mujoco(children=[Worldbody(children=[hand])])
+        >>> gripper = Mujoco(children=[Worldbody(children=[Body(name="palm")])])
+        >>> turn = [0.7071068, 0, 0, 0.7071068]
+        >>> scene = attach(robot, gripper, at="tool", prefix="g_", quat=turn)
+        >>> print(dumps(scene.worldbody), end="")
+        <worldbody>
+          <body name="hand">
+            <site name="tool" pos="0 0 0.1"/>
+            <frame pos="0 0 0.1">
+              <frame quat="0.7071068 0 0 0.7071068">
+                <body name="g_palm"/>
+              </frame>
+            </frame>
+          </body>
+        </worldbody>
+
     """
-    return attach_all(parent, [(child, prefix)], at=at)
+    return attach_all(
+        parent, [(child, prefix)], at=at, at_kind=at_kind, pos=pos, quat=quat, euler=euler
+    )
 
 
 def attach_all(
-    parent: Mujoco, children: Iterable[tuple[Mujoco, str]], *, at: str | None = None
+    parent: Mujoco,
+    children: Iterable[tuple[Mujoco, str]],
+    *,
+    at: str | None = None,
+    at_kind: AttachKind | None = None,
+    pos: Iterable[float] | None = None,
+    quat: Iterable[float] | None = None,
+    euler: Iterable[float] | None = None,
 ) -> Mujoco:
     """The parent with each ``(child, prefix)`` attached in turn, in one pass.
 
-    The same as calling :func:`attach` for each child, but the parent's names and
-    sections are read once, so attaching N children costs time linear in N.
+    The same as calling :func:`attach` for each child (with the same ``at``,
+    ``at_kind`` and placement), but the parent's names and sections are read
+    once, so attaching N children costs time linear in N.
 
     Example:
         >>> from serializers import loads
@@ -224,9 +213,33 @@ def attach_all(
         ['c0_cup', 'c1_cup', 'c2_cup']
 
     """
+    return _composed(parent, children, Where(at, at_kind, placement_frame(pos, quat, euler)))
+
+
+def attach_in_frame(parent: Mujoco, child: Mujoco, *, frame: str, prefix: str = "") -> Mujoco:
+    """The parent with the child's world inside its frame ``frame``, where that frame stands.
+
+    As :func:`attach`, but the child's world keeps the frame's place in document
+    order (MuJoCo's numbering) among its siblings, as MuJoCo's ``<attach>`` does.
+
+    Example:
+        >>> from serializers import loads
+        >>> parent = loads('<mujoco><worldbody><body name="a"/><frame name="here"/>'
+        ...                '<body name="z"/></worldbody></mujoco>')
+        >>> cup = loads('<mujoco><worldbody><body name="cup"/></worldbody></mujoco>')
+        >>> from mjcf_model.queries import find_all
+        >>> scene = attach_in_frame(parent, cup, frame="here", prefix="c_")
+        >>> [b.name for b in find_all(scene, "body")]
+        ['a', 'c_cup', 'z']
+
+    """
+    return _composed(parent, [(child, prefix)], Where(frame, "frame", None, inside=True))
+
+
+def _composed(parent: Mujoco, children: Iterable[tuple[Mujoco, str]], where: Where) -> Mujoco:
     for element, key, _ in keyed_walk(parent):
         refuse_opaque(element, key, "attach")
-    composer = _Composer(parent, at)
+    composer = _Composer(parent, where)
     for child, prefix in children:
         composer.add(child, prefix)
     return composer.result()
@@ -235,38 +248,33 @@ def attach_all(
 class _Composer:
     """The parent being composed: its sections, names and what is to be appended."""
 
-    def __init__(self, parent: Mujoco, at: str | None) -> None:
-        self.parent = parent
-        self.sections: list[Node] = list(parent.children)
+    def __init__(self, parent: Mujoco, where: Where) -> None:
         self.declared: dict[str, set[str]] = {
             namespace: set(names) for namespace, names in declared_names(parent).items()
         }
+        main = self._new_class("parent_main")
+        if (demoted := with_main_as_class(parent, main)) is not parent:
+            parent = demoted
+            self.declared.setdefault("class", set()).add(main)
+        self.parent = parent
+        self.sections: list[Node] = list(parent.children)
         self.assets: set[AnyElement] = {
-            e for section in _sections(parent, "asset") for e in _elements(section)
+            e for section in _sections(parent, "asset") for e in section.elements
         }
         self.pending: dict[str, list[Node]] = {}
-        self.names: dict[int, tuple[Mujoco, dict[str, frozenset[str]]]] = {}
+        self.names: dict[int, tuple[Mujoco, Mujoco, dict[str, frozenset[str]]]] = {}
         self.world: list[Node] = []
         self.keys: list[Node] | None = None
-        self.target: AnyElement | None = None
-        if at is not None:
-            self.target = find(parent, "body", name=at)
-            if self.target is None:
-                found = (get_attribute(b, "name") for b in find_all(parent, "body"))
-                names = sorted(str(name) for name in found if name)
-                raise MjcfLookupError(
-                    f"the parent has no body named {at!r}; its bodies are {names}"
-                )
+        self.where = where
+        self.point = attach_point(parent, where)
 
     def add(self, child: Mujoco, prefix: str) -> None:
-        names = self._names_of(child)
+        child, names = self._prepared(child)
         if prefix:
             child = prefixed_declared(child, prefix, names)  # type: ignore[assignment]
             names = {ns: frozenset(prefix + n for n in found) for ns, found in names.items()}
-        _check_compilers(
-            _sections(self.parent, "compiler") or self.pending.get("compiler", []), child
-        )
-        child_assets = [e for section in _sections(child, "asset") for e in _elements(section)]
+        child = self._in_parent_terms(child)
+        child_assets = [e for section in _sections(child, "asset") for e in section.elements]
         shared = {e for e in child_assets if e in self.assets}
         theirs = {ns: set(found) for ns, found in names.items()}
         for asset in shared:
@@ -286,47 +294,73 @@ class _Composer:
             nodes = _section_children(child, tag)
             if tag == "asset":
                 nodes = [n for n in nodes if n not in shared]
-            if main is not None and tag in _CLASSED_SECTIONS:
-                nodes = _classed(nodes, main, tag)
+            if main is not None and tag in CLASSED_SECTIONS:
+                nodes = classed(nodes, main, tag)
             self.pending.setdefault(tag, []).extend(nodes)
         world = _section_children(child, "worldbody")
         if main is not None:
-            world = _classed(world, main, "body")
+            world = classed(world, main, "body")
         self.world.extend(world)
 
-    def _names_of(self, child: Mujoco) -> dict[str, frozenset[str]]:
-        """The names ``child`` declares, read once per child model (includes refused)."""
+    def _in_parent_terms(self, child: Mujoco) -> Mujoco:
+        """The child with its paths and values meaning under the parent's ``<compiler>``.
+
+        File paths are rewritten to name the child's files from the parent's folder
+        (:func:`mjcf_model.provenance.relocated`); angles, limits and inertia are
+        converted (:func:`mjcf_model.conventions.in_conventions`).
+        """
+        child = relocated(child, self.parent.base_dir, Folders.of(self.parent))
+        return in_conventions(child, self.parent)
+
+    def _prepared(self, child: Mujoco) -> tuple[Mujoco, dict[str, frozenset[str]]]:
+        """The child ready to be renamed, and the names it declares; once per child model.
+
+        Includes are refused. Skins read from ``.skn`` files name their bodies inside
+        the file, so renaming would lose them: they are written inline first, from
+        the child's folder.
+        """
         cached = self.names.get(id(child))
         if cached is None or cached[0] is not child:
             for element, key, _ in keyed_walk(child):
                 refuse_opaque(element, key, "attach")
-            cached = self.names[id(child)] = (child, declared_names(child))
-        return cached[1]
+            ready = child
+            if any(r.key in _SKIN_KEYS for r in file_references(child)):
+                from serializers.skins import inline_skin_files
+
+                ready = inline_skin_files(child)
+            cached = self.names[id(child)] = (child, ready, declared_names(ready))
+        return cached[1], cached[2]
 
     def _add_defaults(self, child: Mujoco, prefix: str) -> Default | None:
         """Add the child's defaults; return the class its top-level settings became, if any."""
         defaults = _sections(child, "default")
         added: list[Node] = [n for d in defaults for n in d.children]
         main = None
-        if any(_has_settings(default) for default in defaults):
-            if not prefix:
-                raise MjcfValueError(
-                    "the child's top-level defaults set values; attach it with a prefix so "
-                    "they can become a class of their own"
-                )
-            main = Default(dclass=f"{prefix}main", children=_merged_settings(added))
+        if any(sets_values(default) for default in defaults):
+            name = f"{prefix}main" if prefix else self._new_class("child_main")
+            self.declared.setdefault("class", set()).add(name)
+            main = Default(dclass=name, children=merged_settings(added))
             added = [main]
         self.pending.setdefault("default", []).extend(added)
         return main
 
+    def _new_class(self, wanted: str) -> str:
+        """``wanted``, or ``wanted_2``, ``wanted_3``... : a class name nobody declares yet."""
+        taken = self.declared.get("class", set())
+        name, count = wanted, 1
+        while name in taken:
+            count += 1
+            name = f"{wanted}_{count}"
+        return name
+
     def _merge_keys(self, child: Mujoco) -> None:
         """Keyframes need the parent as composed so far: build it, then splice."""
         so_far = self.result()
-        self.keys = merged_keyframes(so_far, child, _same(so_far, self.target))
+        self.point = attach_point(so_far, self.where)
+        holder = None if self.point is None else self.point.holder
+        self.keys = merged_keyframes(so_far, child, holder)
         self.parent, self.sections = so_far, list(so_far.children)
         self.pending, self.world = {}, []
-        if self.target is not None:
-            self.target = _same(so_far, self.target)
 
     def result(self) -> Mujoco:
         sections = list(self.sections)
@@ -336,11 +370,13 @@ class _Composer:
                 sections.extend(nodes)
             elif nodes:
                 _merge_into(sections, tag, nodes)
-        if self.target is None:
-            if self.world:
-                _merge_into(sections, "worldbody", self.world)
-        elif self.world:
-            sections = [_inserted(c, self.target, self.world) for c in sections]
+        world = wrapped(self.point.frames, self.world) if self.point else self.world
+        holder = None if self.point is None else self.point.holder
+        if holder is None:
+            if world:
+                _merge_into(sections, "worldbody", world)
+        elif world:
+            sections = [_inserted(c, holder, world) for c in sections]
         if self.keys is not None:
             sections = [c for c in sections if getattr(c, "tag", None) != "keyframe"]
             if self.keys:
@@ -350,13 +386,6 @@ class _Composer:
 
 def _keys_of(model: Mujoco) -> bool:
     return any(section.elements for section in _sections(model, "keyframe"))
-
-
-def _same(model: Mujoco, target: AnyElement | None) -> AnyElement | None:
-    """The body in ``model`` named like ``target`` (the target after the model was rebuilt)."""
-    if target is None:
-        return None
-    return find(model, "body", name=get_attribute(target, "name"))
 
 
 def _merge_into(sections: list[Node], tag: str, nodes: list[Node]) -> None:

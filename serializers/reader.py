@@ -729,6 +729,7 @@ def loads(
     inline_includes: bool = False,
     base_dir: str | os.PathLike[str] | None = None,
     filename: str | None = None,
+    inline_attachments: bool = False,
 ) -> Mujoco:
     """Read an MJCF model from text.
 
@@ -739,6 +740,8 @@ def loads(
             :class:`~mjcf_model.Include` nodes and written back as includes.
         base_dir: Where included files are looked for; the main model's directory.
         filename: The name errors should report (default ``"<string>"``).
+        inline_attachments: Replace each ``<attach>`` by what MuJoCo attaches there
+            (see :func:`mjcf_model.attachments.inlined_attachments`).
 
     Raises:
         MjcfSyntaxError: The text is not well-formed XML or its root is not ``<mujoco>``.
@@ -754,11 +757,22 @@ def loads(
     session = _Session(
         inline_includes=inline_includes, main_dir=Path(base_dir) if base_dir is not None else None
     )
-    return _read(text, filename or _STRING, session)
+    return _attachments_inlined(_read(text, filename or _STRING, session), inline_attachments)
+
+
+def _attachments_inlined(model: Mujoco, inline: bool) -> Mujoco:
+    if not inline:
+        return model
+    from mjcf_model.attachments import inlined_attachments
+
+    return inlined_attachments(model)
 
 
 def load(
-    source: str | os.PathLike[str] | IO[bytes] | IO[str], *, inline_includes: bool = False
+    source: str | os.PathLike[str] | IO[bytes] | IO[str],
+    *,
+    inline_includes: bool = False,
+    inline_attachments: bool = False,
 ) -> Mujoco:
     """Read an MJCF model from a file path or an open file.
 
@@ -767,6 +781,8 @@ def load(
         inline_includes: Replace each ``<include>`` by the elements of the file it
             names, looked up beside the main file first and then beside the
             including file, as MuJoCo does. Include cycles raise.
+        inline_attachments: Replace each ``<attach>`` by what MuJoCo attaches there
+            (see :func:`mjcf_model.attachments.inlined_attachments`).
 
     Example:
         >>> import tempfile, pathlib
@@ -788,11 +804,17 @@ def load(
             main_dir=resolved.parent,
             include_chain=(resolved,),
         )
-        return _read(data, str(path), session)
+        return _attachments_inlined(_read(data, str(path), session), inline_attachments)
     name = getattr(source, "name", None)
     filename = name if isinstance(name, str) else _STRING
     base = Path(filename).parent if filename != _STRING else None
-    return loads(source.read(), inline_includes=inline_includes, base_dir=base, filename=filename)
+    return loads(
+        source.read(),
+        inline_includes=inline_includes,
+        base_dir=base,
+        filename=filename,
+        inline_attachments=inline_attachments,
+    )
 
 
 def from_etree(element: ET.Element, *, context: str | None = None, typed: bool = True) -> Node:

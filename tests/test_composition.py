@@ -9,7 +9,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from mjcf_model import Mujoco, find, get_attribute
+from mjcf_model import Mujoco, compiled, find, get_attribute
 from mjcf_model.compare import compile_text_beside, compiled_names
 from mjcf_model.composition import attach, attach_all
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
@@ -130,13 +130,17 @@ def test_equal_assets_are_kept_once_and_different_ones_clash() -> None:
         attach(parent, other)
 
 
-def test_different_compilers_are_refused() -> None:
-    """A child read in radians cannot silently join a parent read in degrees."""
+def test_the_parent_keeps_its_compiler_and_the_child_is_converted() -> None:
+    """The child's <compiler> is not copied: its values are converted into the parent's terms."""
     parent = loads('<mujoco><compiler angle="degree"/></mujoco>')
-    child = loads('<mujoco><compiler angle="radian"/></mujoco>')
-    with pytest.raises(MjcfValueError, match="compiler"):
-        attach(parent, child)
-    assert attach(loads(EMPTY), child).compiler == child.compiler
+    child = loads(
+        '<mujoco><compiler angle="radian"/><worldbody><body name="b" euler="0 0 1.5">'
+        '<geom size="1"/></body></worldbody></mujoco>'
+    )
+    scene = attach(parent, child)
+    assert [s for s in scene.elements if s.tag == "compiler"] == list(parent.elements)
+    assert np.allclose(compiled(scene).body_quat[1], compiled(child).body_quat[1])
+    assert attach(loads(EMPTY), child).compiler is None
 
 
 def test_keyframes_are_spliced_by_position() -> None:
@@ -181,7 +185,7 @@ def test_parent_keyframes_stay_when_the_child_has_none() -> None:
 
 
 def test_attach_all_equals_attaching_one_by_one() -> None:
-    """``attach_all`` equals repeated ``attach``, and checks compilers across its children."""
+    """``attach_all`` equals repeated ``attach``, and converts each child's compiler on its own."""
     cup = loads(
         '<mujoco><default><geom rgba="1 0 0 1"/></default><asset><material name="m"/></asset>'
         '<worldbody><body name="cup"><geom size="0.1" material="m"/></body></worldbody></mujoco>'
@@ -191,7 +195,10 @@ def test_attach_all_equals_attaching_one_by_one() -> None:
     for child, prefix in pairs:
         one_by_one = attach(one_by_one, child, prefix=prefix)
     assert attach_all(loads(EMPTY), pairs) == one_by_one
-    radians = loads('<mujoco><compiler angle="radian"/></mujoco>')
-    degrees = loads('<mujoco><compiler angle="degree"/></mujoco>')
-    with pytest.raises(MjcfValueError, match="compiler"):
-        attach_all(loads(EMPTY), [(radians, ""), (degrees, "")])
+    body = '<worldbody><body name="b" euler="0 0 1"><geom size="1"/></body></worldbody>'
+    radians = loads(f'<mujoco><compiler angle="radian"/>{body}</mujoco>')
+    degrees = loads(f'<mujoco><compiler angle="degree"/>{body}</mujoco>')
+    scene = compiled(attach_all(loads(EMPTY), [(radians, "r_"), (degrees, "d_")]))
+    assert np.allclose(
+        scene.body_quat[1:], [compiled(radians).body_quat[1], compiled(degrees).body_quat[1]]
+    )

@@ -10,8 +10,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from mjcf_model import Body, Geom, Mujoco, Site
-from mjcf_model.compare import compile_text_beside
+from mjcf_model import Body, Geom, Mujoco, Site, compiled
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.namespaces import SCHEMA
 from mjcf_model.registry import CLASS_BY_KEY
@@ -22,7 +21,7 @@ from mjcf_model.strategies import models
 from mjcf_model.traversal import map_tree
 from serializers import dumps, load, loads, to_dict
 from tests.conftest import MUJOCO_VERSION, compiling_corpus, corpus_id
-from tests.oracles import scaled_problems, trees_close
+from tests.oracles import mass_problems, scaled_problems, trees_close
 
 CORPUS = compiling_corpus()
 
@@ -74,10 +73,17 @@ def _doubled_problems(original: mujoco.MjModel, changed: mujoco.MjModel) -> list
 
 @pytest.mark.parametrize("path", CORPUS, ids=corpus_id)
 def test_corpus_model_scaled_by_two_doubles_every_length(path: Path) -> None:
-    """A corpus model scaled by 2 compiles with every named length array exactly doubled."""
+    """A corpus model scaled by 2 compiles with every named length array exactly doubled.
+
+    Every body keeps its mass (``mass="keep"``, the default), density-derived ones
+    too; its centre of mass doubles and its inertia grows by four.
+    """
     model = load(path, inline_includes=True)
-    changed = compile_text_beside(dumps(scaled(model, 2)), path)
-    assert _doubled_problems(mujoco.MjModel.from_xml_path(str(path)), changed) == []
+    changed = compiled(scaled(model, 2))
+    original = mujoco.MjModel.from_xml_path(str(path))
+    problems = _doubled_problems(original, changed)
+    problems += scaled_problems(original, changed, 2.0, ["body_ipos"])
+    assert problems + mass_problems(original, changed, 1.0, 4.0) == []
 
 
 @given(models())
