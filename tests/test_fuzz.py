@@ -25,8 +25,8 @@ a hang or a catastrophic backtrack fails the case instead of blocking CI.
 ``test_minimal_cases`` replays one small input for each kind of failure the
 fuzzers have found, on every run.
 
-The number of examples per test is half the hypothesis profile's count of
-``tests/conftest.py`` (``ci``: 200 gives 100, ``dev``: 50 gives 25; the
+The number of examples per test is the hypothesis profile's count of
+``tests/conftest.py`` (``ci``: 100, ``dev``: 50; the
 generated-model test runs half of that and the deep-nesting test a quarter),
 which keeps the whole suite under CI's 15 minutes. A long campaign sets
 ``MJCF_FUZZ_EXAMPLES`` (the same shares apply), runs the tests in parallel and
@@ -68,8 +68,8 @@ from tests.fuzzing import (
 
 
 def _examples(share: float = 1.0) -> int:
-    """``share`` of the examples a test runs: ``MJCF_FUZZ_EXAMPLES``, or half the profile's."""
-    total = int(os.environ.get("MJCF_FUZZ_EXAMPLES", "0")) or settings().max_examples // 2
+    """``share`` of the examples a test runs: ``MJCF_FUZZ_EXAMPLES``, or the profile's."""
+    total = int(os.environ.get("MJCF_FUZZ_EXAMPLES", "0")) or settings().max_examples
     return max(10, int(total * share))
 
 
