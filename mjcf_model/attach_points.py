@@ -45,7 +45,13 @@ _ATTACH_KEYS = {"body": "body", "body/frame": "frame", "body/site": "site"}
 def placement_frame(
     pos: Iterable[float] | None, quat: Iterable[float] | None, euler: Iterable[float] | None
 ) -> Frame | None:
-    """The frame placing the child's world relative to the attach point, if any is asked for."""
+    """The frame placing the child's world relative to the attach point, if any is asked for.
+
+    Example:
+        >>> placement_frame([0, 0, 1], None, None).pos, placement_frame(None, None, None)
+        ((0.0, 0.0, 1.0), None)
+
+    """
     if quat is not None and euler is not None:
         raise MjcfValueError("give the child's orientation as quat or as euler, not both")
     if pos is None and quat is None and euler is None:
@@ -104,7 +110,17 @@ def _located(parent: Mujoco, at: str, kind: AttachKind | None) -> tuple[AnyEleme
 
 
 def attach_point(parent: Mujoco, where: Where) -> AttachPoint | None:
-    """Where the children's worlds go in ``parent`` (``None``: appended to its world)."""
+    """Where the children's worlds go in ``parent`` (``None``: appended to its world).
+
+    Example:
+        >>> from serializers import loads
+        >>> arm = loads('<mujoco><worldbody><body name="hand"><frame name="f" pos="1 0 0"/>'
+        ...             '</body></worldbody></mujoco>')
+        >>> point = attach_point(arm, Where(at="f", kind=None, placement=None))
+        >>> point.holder.name, [frame.pos for frame in point.frames]
+        ('hand', [(1.0, 0.0, 0.0)])
+
+    """
     frames = [] if where.placement is None else [where.placement]
     if where.at is None:
         return AttachPoint(holder=None, frames=tuple(frames)) if frames else None
@@ -179,7 +195,14 @@ def _quat_overrides_class_orientation() -> bool:
 
 
 def wrapped(frames: Sequence[Frame], nodes: list[Node]) -> list[Node]:
-    """``nodes`` nested in ``frames``, the first frame outermost."""
+    """``nodes`` nested in ``frames``, the first frame outermost.
+
+    Example:
+        >>> from mjcf_model import Body
+        >>> wrapped([Frame(pos=[1, 0, 0])], [Body(name="b")])[0].elements
+        (Body(name='b'),)
+
+    """
     for frame in reversed(frames):
         nodes = [with_children(frame, nodes)]
     return nodes

@@ -53,7 +53,6 @@ Includes are inlined first; asset ``<model>`` elements are removed at the end.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -72,6 +71,7 @@ from mjcf_model.base import (
 from mjcf_model.compiler_settings import compiler_settings
 from mjcf_model.compiling import inlined
 from mjcf_model.composition import attach_in_frame
+from mjcf_model.composition_keys import keys_of
 from mjcf_model.conventions import in_conventions
 from mjcf_model.errors import MjcfIncludeError, MjcfLookupError, MjcfValueError
 from mjcf_model.naming import declared_names
@@ -81,7 +81,7 @@ from mjcf_model.nodes.compiler import Compiler
 from mjcf_model.nodes.keyframe import Key, Keyframe
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.traversal import Path as TreePath
-from mjcf_model.traversal import keyed_walk, walk, with_children
+from mjcf_model.traversal import keyed_walk, replaced_at, walk, with_children
 
 if TYPE_CHECKING:
     import mujoco
@@ -98,27 +98,6 @@ _KEY_ARRAYS = {
     "mquat": "key_mquat",
     "plastic": "key_plastic",
 }
-
-
-def _keys(model: Mujoco) -> list[AnyElement]:
-    return [k for s in model.elements if s.tag == "keyframe" for k in s.elements]
-
-
-def _replaced(node: AnyElement, path: TreePath, new: Sequence[Node]) -> AnyElement:
-    """``node`` with the element at ``path`` replaced by ``new`` (several nodes, or none)."""
-    chain = [node]
-    for index in path[:-1]:
-        inner = chain[-1].children[index]
-        assert isinstance(inner, (TypedElement, GenericElement))
-        chain.append(inner)
-    replacement: list[Node] = list(new)
-    for holder, index in zip(reversed(chain), reversed(path), strict=True):
-        children = list(holder.children)
-        children[index : index + 1] = replacement
-        replacement = [with_children(holder, children)]
-    result = replacement[0]
-    assert isinstance(result, (TypedElement, GenericElement))
-    return result
 
 
 class _Expansion:
@@ -163,7 +142,7 @@ class _Expansion:
             child = model
         else:
             child = self._child(model, str(name), chain)
-            self.keys_left_out |= bool(_keys(child))
+            self.keys_left_out |= bool(keys_of(child))
         part = attached_part(
             child,
             body=None if body is None else str(body),
@@ -171,7 +150,7 @@ class _Expansion:
             same_model=name is None,
         )
         marker = _unused_frame_name(model)
-        model = _replaced(model, path, [Frame(name=marker)])  # type: ignore[assignment]
+        model = replaced_at(model, path, [Frame(name=marker)])
         model = attach_in_frame(model, part, frame=marker, prefix=str(prefix or ""))
         return _without_marker(model, marker)
 
@@ -273,7 +252,7 @@ def _without_marker(model: Mujoco, marker: str) -> Mujoco:
     """``model`` with the frame ``marker`` replaced by its children."""
     for path, element in walk(model):
         if element.tag == "frame" and get_attribute(element, "name") == marker:
-            return _replaced(model, path, element.children)  # type: ignore[return-value]
+            return replaced_at(model, path, element.children)
     raise AssertionError(f"the frame {marker!r} is gone")  # pragma: no cover
 
 
@@ -299,7 +278,7 @@ def _with_attached_keys(expanded: Mujoco, original: Mujoco) -> Mujoco:
     from mjcf_model.compiling import compiled
 
     reference = compiled(original)
-    own = _keys(expanded)
+    own = keys_of(expanded)
     names = compiled_names(reference)["key"]
     written = [str(get_attribute(k, "name") or "") for k in own]
     if names[: len(own)] != written:

@@ -24,7 +24,7 @@ import attrs
 
 from mjcf_model.errors import MjcfAssetError, MjcfCompileError, MjcfIncludeError
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.provenance import FileReference, with_paths, without_folders
+from mjcf_model.provenance import FileReference, Folders, with_folders, with_paths
 from mjcf_model.traversal import keyed_walk
 
 if TYPE_CHECKING:
@@ -45,11 +45,16 @@ class Bundle:
 
 
 class _Names:
-    """Readable, unique file names: the file's own name, ``_2``, ``_3``... on a clash."""
+    """Readable, unique file names: the file's own name, ``_2``, ``_3``... on a clash.
+
+    Names that differ only in case clash too: a folder on macOS or Windows could
+    not hold both.
+    """
 
     def __init__(self) -> None:
         self.by_content: dict[bytes, str] = {}
         self.files: dict[str, bytes] = {}
+        self.taken: set[str] = set()
 
     def name(self, wanted: str, data: bytes) -> str:
         known = self.by_content.get(data)
@@ -58,9 +63,10 @@ class _Names:
         path = PurePosixPath(wanted.replace("\\", "/")).name or "file"
         stem, suffix = PurePosixPath(path).stem, PurePosixPath(path).suffix
         name, count = path, 1
-        while name in self.files:
+        while name.casefold() in self.taken:
             count += 1
             name = f"{stem}_{count}{suffix}"
+        self.taken.add(name.casefold())
         self.files[name] = data
         self.by_content.setdefault(data, name)
         return name
@@ -149,7 +155,7 @@ def _bundle(
             data = _read(reference, assets)
         return folder + names.name(reference.text, data)
 
-    return without_folders(with_paths(model, new_path))
+    return with_folders(with_paths(model, new_path), Folders())
 
 
 def _submodel_text(

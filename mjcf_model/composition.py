@@ -37,7 +37,7 @@ from mjcf_model.base import (
     TypedElement,
 )
 from mjcf_model.composition_defaults import classed, merged_settings, sets_values
-from mjcf_model.composition_keys import merged_keyframes
+from mjcf_model.composition_keys import keys_of, merged_keyframes
 from mjcf_model.composition_main import CLASSED_SECTIONS, with_main_as_class
 from mjcf_model.conventions import in_conventions
 from mjcf_model.errors import MjcfValueError
@@ -47,7 +47,7 @@ from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.provenance import Folders, file_references, relocated
 from mjcf_model.registry import CLASS_BY_KEY
-from mjcf_model.traversal import keyed_walk, refuse_opaque, with_children
+from mjcf_model.traversal import keyed_walk, refuse_opaque, replaced_at, walk, with_children
 
 __all__ = ["AttachKind", "attach", "attach_all", "attach_in_frame"]
 
@@ -141,14 +141,16 @@ def attach(
     ``<option>``, ``<size>``, ``<statistic>`` and ``<visual>``. Top-level default
     settings stay with their model: the child's become a class ``<prefix>main``
     (``child_main`` without prefix), the parent's a class ``parent_main``
-    (:mod:`mjcf_model.composition_main`), named by the elements they reach. Keyframes are merged by
-    position: a child key is completed with the parent's initial ``qpos``
+    (:mod:`mjcf_model.composition_main`), named by the elements they reach.
+    Keyframes are merged by position: a child key is completed with the parent's initial ``qpos``
     (reference positions; a free body's own position), a parent key is
     completed by MuJoCo with the child's.
 
     Raises:
-        MjcfValueError: on a name collision, different compilers, a kept
-            ``<include>``, a keyframe that cannot be completed, both ``quat`` and
+        MjcfValueError: on a name collision, a child ``<compiler>`` setting whose
+            meaning cannot be kept under the parent's (the message names it; see
+            :mod:`mjcf_model.conventions`), a kept ``<include>``, a keyframe that
+            cannot be completed, both ``quat`` and
             ``euler``, a vector of the wrong length, a target inside a
             ``<replicate>``, or a site placed by ``fromto``.
         MjcfLookupError: when the parent has no body, frame or site named ``at``
@@ -284,7 +286,7 @@ class _Composer:
         for namespace, found in theirs.items():
             self.declared.setdefault(namespace, set()).update(found)
         self.assets.update(child_assets)
-        if _keys_of(self.parent) or _keys_of(child):
+        if keys_of(self.parent) or keys_of(child):
             self._merge_keys(child)
         main = self._add_defaults(child, prefix)
         for tag in _SETTINGS:
@@ -376,16 +378,12 @@ class _Composer:
             if world:
                 _merge_into(sections, "worldbody", world)
         elif world:
-            sections = [_inserted(c, holder, world) for c in sections]
+            sections = list(_inserted(with_children(self.parent, sections), holder, world).children)
         if self.keys is not None:
             sections = [c for c in sections if getattr(c, "tag", None) != "keyframe"]
             if self.keys:
                 sections.append(Keyframe(children=self.keys))
         return attrs.evolve(self.parent, children=sections)
-
-
-def _keys_of(model: Mujoco) -> bool:
-    return any(section.elements for section in _sections(model, "keyframe"))
 
 
 def _merge_into(sections: list[Node], tag: str, nodes: list[Node]) -> None:
@@ -398,11 +396,7 @@ def _merge_into(sections: list[Node], tag: str, nodes: list[Node]) -> None:
     sections.append(CLASS_BY_KEY[tag](children=nodes))
 
 
-def _inserted(node: Node, target: AnyElement, nodes: list[Node]) -> Node:
-    """``node`` with ``nodes`` appended to the children of ``target`` (found by identity)."""
-    if node is target:
-        assert isinstance(node, (TypedElement, GenericElement))
-        return with_children(node, [*node.children, *nodes])
-    if isinstance(node, (TypedElement, GenericElement)) and node.children:
-        return with_children(node, [_inserted(c, target, nodes) for c in node.children])
-    return node
+def _inserted(model: Mujoco, target: AnyElement, nodes: list[Node]) -> Mujoco:
+    """``model`` with ``nodes`` appended to the children of ``target`` (found by identity)."""
+    path = next(path for path, element in walk(model) if element is target)
+    return replaced_at(model, path, [with_children(target, [*target.children, *nodes])])

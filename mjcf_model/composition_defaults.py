@@ -27,16 +27,31 @@ from mjcf_model.base import (
 from mjcf_model.namespaces import SCHEMA
 from mjcf_model.nodes.default import Default
 
-__all__ = ["classed", "merged_settings", "sets_values"]
+__all__ = ["ACTUATOR_DEFAULT_TAGS", "classed", "merged_settings", "sets_values"]
 
 
 def sets_values(default: AnyElement) -> bool:
-    """Whether a top-level ``<default>`` sets anything itself (not only nested classes)."""
+    """Whether a top-level ``<default>`` sets anything itself (not only nested classes).
+
+    Example:
+        >>> from mjcf_model import Geom
+        >>> nested_only = Default(children=[Default(dclass="c")])
+        >>> sets_values(nested_only), sets_values(Default(children=[Geom()]))
+        (False, True)
+
+    """
     return any(e.tag != "default" for e in default.elements)
 
 
 def merged_settings(nodes: list[Node]) -> list[Node]:
-    """Several top-level defaults as one class: settings of one tag merged, later ones winning."""
+    """Several top-level defaults as one class: settings of one tag merged, later ones winning.
+
+    Example:
+        >>> from mjcf_model import Geom
+        >>> merged_settings([Geom(rgba=[1, 0, 0, 1]), Geom(size=[1])])
+        [Geom(size=(1.0,), rgba=(1.0, 0.0, 0.0, 1.0))]
+
+    """
     merged: list[Node] = []
     first: dict[str, int] = {}
     for node in nodes:
@@ -63,7 +78,7 @@ def _with_class(element: AnyElement, attribute: str, name: str) -> AnyElement:
 
 
 #: The ``<default>`` tags that set actuator defaults: each of them reaches every actuator.
-_ACTUATOR_DEFAULTS = frozenset(
+ACTUATOR_DEFAULT_TAGS = frozenset(
     key.partition("/")[2]
     for key in SCHEMA
     if key.startswith("default/") and f"actuator/{key.partition('/')[2]}" in SCHEMA
@@ -76,7 +91,7 @@ def _reached_by(key: str, settings: frozenset[str]) -> bool:
     if section in ("tendon", "equality"):
         return section in settings
     if section == "actuator":
-        return bool(settings & _ACTUATOR_DEFAULTS)
+        return bool(settings & ACTUATOR_DEFAULT_TAGS)
     return tag in settings
 
 
@@ -87,6 +102,13 @@ def classed(nodes: Sequence[Node], main: Default, section: str) -> list[Node]:
     parent's defaults either way, and an older MuJoCo rejects ``class`` on some of
     them (``<texture>`` before 4.0). Bodies and frames in the world take it as
     ``childclass``.
+
+    Example:
+        >>> from mjcf_model import Geom, Motor
+        >>> main = Default(dclass="c_main", children=[Geom(rgba=[1, 0, 0, 1])])
+        >>> [node.dclass for node in classed([Geom(), Motor()], main, "body")]
+        ['c_main', None]
+
     """
     assert main.dclass is not None
     settings = frozenset(e.tag for e in main.elements if e.tag != "default")

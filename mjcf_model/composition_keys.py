@@ -36,7 +36,7 @@ from mjcf_model.nodes.root import Mujoco
 from mjcf_model.scaling_rules import joint_type, numbers
 from mjcf_model.traversal import keyed_walk
 
-__all__ = ["merged_keyframes"]
+__all__ = ["keys_of", "merged_keyframes"]
 
 _QPOS_SIZE = {"free": 7, "ball": 4, "slide": 1, "hinge": 1}
 _QVEL_SIZE = {"free": 6, "ball": 3, "slide": 1, "hinge": 1}
@@ -91,7 +91,8 @@ def _qpos0(
     return (*pos, *quat)
 
 
-def _keys(model: Mujoco) -> list[AnyElement]:
+def keys_of(model: Mujoco) -> list[AnyElement]:
+    """Every ``<key>`` of the model's ``<keyframe>`` sections, in order."""
     return [
         key
         for section in model.children
@@ -127,7 +128,7 @@ def _completed(given: tuple[float, ...] | None, full: list[float]) -> list[float
 
 def merged_keyframes(parent: Mujoco, child: Mujoco, target: AnyElement | None) -> list[Node] | None:
     """The keys of the composed model, or ``None`` when the child has none and nothing moves."""
-    parent_keys, child_keys = _keys(parent), _keys(child)
+    parent_keys, child_keys = keys_of(parent), keys_of(child)
     parent_joints = _joints(parent, target) if parent_keys or child_keys else []
     before = [j for j in parent_joints if j.before]
     after = [j for j in parent_joints if not j.before]

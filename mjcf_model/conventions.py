@@ -78,6 +78,7 @@ from mjcf_model.compiler_settings import (
     Settings,
     compiler_settings,
 )
+from mjcf_model.composition_defaults import ACTUATOR_DEFAULT_TAGS
 from mjcf_model.conventions_inertia import inertia_kept
 from mjcf_model.defaults import DefaultClasses
 from mjcf_model.errors import MjcfValueError
@@ -113,10 +114,6 @@ _LIMIT_FLAGS = {
     "forcelimited": "forcerange",
     "actlimited": "actrange",
 }
-#: The default tags that set actuator values: a class has one actuator default they share.
-_ACTUATOR_DEFAULTS = frozenset(
-    key[8:] for key in SCHEMA if key.startswith("default/") and f"actuator/{key[8:]}" in SCHEMA
-)
 Changes = dict[str, Value | None]
 #: Compiled body arrays by ``MjModel`` field name.
 Arrays = dict[str, npt.NDArray[np.float64]]
@@ -163,7 +160,7 @@ class _Rewriter:
                 value
                 for (owner, tag), setting in self.classes.settings.items()
                 if owner == cls
-                and tag in _ACTUATOR_DEFAULTS
+                and tag in ACTUATOR_DEFAULT_TAGS
                 and (value := get_attribute(setting, name)) is not None
             ]
             if found:

@@ -132,6 +132,17 @@ def inertia_kept(child: Mujoco, converted: Mujoco, mine: Settings, theirs: Setti
 
     Compiled with every body unfused and unaligned (the alignment a free joint asks
     for is made again from the same inertia), so that only inertia settings count.
+
+    Example:
+        >>> from serializers import loads
+        >>> child = loads('<mujoco><worldbody><body><freejoint/><geom size="0.1" mass="2"/>'
+        ...               '</body></worldbody></mujoco>')
+        >>> settings = {"inertiafromgeom": "auto", "boundmass": "0", "boundinertia": "0",
+        ...             "balanceinertia": "false", "inertiagrouprange": "0 5", "settotalmass": "-1"}
+        >>> kept = inertia_kept(child, child, settings, {**settings, "settotalmass": "-1"})
+        >>> kept.worldbody.bodies[0].elements[0].mass
+        2.0
+
     """
     taken = declared_names(child).get("body", frozenset())
     settings = ", ".join(

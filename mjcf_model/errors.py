@@ -120,7 +120,11 @@ class MjcfIncludeError(MjcfError, OSError):
 
 
 class MjcfAssetError(MjcfError, OSError):
-    """A file the model names (mesh, texture, height field, skin, sub-model) cannot be read."""
+    """A file the model names cannot be read, or an exported file cannot be written.
+
+    The files a model names are meshes, textures, height fields, skins and
+    asset ``<model>`` files.
+    """
 
     def __str__(self) -> str:
         return self._render()

@@ -51,6 +51,7 @@ from mjcf_model.base import AnyElement, get_attribute
 from mjcf_model.errors import MjcfAssetError, MjcfError
 from mjcf_model.namespaces import SCHEMA
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.provenance import Folders
 from mjcf_model.traversal import keyed_walk
 
 __all__ = [
@@ -112,8 +113,7 @@ def model_file_path(file: str, base_dir: Path | None) -> Path:
         PosixPath('/robots/parts/arm.xml')
 
     """
-    root = base_dir if base_dir is not None else Path(os.getcwd())
-    return Path(os.path.normpath(root / file))
+    return Folders().resolve(file, "model", base_dir)
 
 
 def model_file_name(path: Path) -> str:

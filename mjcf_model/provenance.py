@@ -38,11 +38,12 @@ from typing import Literal
 
 import attrs
 
-from mjcf_model.base import AnyElement, get_attribute, with_attributes
+from mjcf_model.base import AnyElement, GenericElement, TypedElement, get_attribute, with_attributes
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.node_building import build_node
+from mjcf_model.nodes.compiler import Compiler
 from mjcf_model.nodes.root import Mujoco, to_base_dir
-from mjcf_model.traversal import keyed_walk, map_elements
+from mjcf_model.traversal import keyed_walk, map_elements, with_children
 
 __all__ = [
     "FILE_ATTRIBUTES",
@@ -52,8 +53,8 @@ __all__ = [
     "file_references",
     "relocated",
     "with_included_paths",
+    "with_folders",
     "with_paths",
-    "without_folders",
 ]
 
 #: Which compiler folder a file path resolves under (``model``: the model's own folder).
@@ -98,20 +99,30 @@ class Folders:
 
     @classmethod
     def of(cls, model: Mujoco) -> Folders:
-        """The settings of all of ``model``'s ``<compiler>`` sections, later ones winning."""
-        settings: dict[str, object] = {}
+        """The settings of ``model``'s top-level ``<compiler>`` sections, in order.
+
+        ``assetdir`` sets both folders, and a ``meshdir`` or ``texturedir`` in the
+        same or a later section overrides it, as MuJoCo reads them.
+
+        Example:
+            >>> from serializers import loads
+            >>> Folders.of(loads('<mujoco><compiler meshdir="m"/><compiler assetdir="a"/>'
+            ...                  '</mujoco>'))
+            Folders(mesh='a', texture='a', strip=False)
+
+        """
+        mesh = texture = ""
+        strip = False
         for section in model.elements:
-            if section.tag == "compiler":
-                for name in ("meshdir", "texturedir", "assetdir", "strippath"):
-                    value = get_attribute(section, name)
-                    if value is not None:
-                        settings[name] = value
-        asset = str(settings.get("assetdir", ""))
-        return cls(
-            mesh=str(settings.get("meshdir", asset)),
-            texture=str(settings.get("texturedir", asset)),
-            strip=_true(settings.get("strippath", "false")),
-        )
+            if section.tag != "compiler":
+                continue
+            asset = get_attribute(section, "assetdir")
+            if asset is not None:
+                mesh = texture = str(asset)
+            mesh = str(get_attribute(section, "meshdir") or mesh)
+            texture = str(get_attribute(section, "texturedir") or texture)
+            strip = _true(get_attribute(section, "strippath") or strip)
+        return cls(mesh=mesh, texture=texture, strip=strip)
 
     def folder(self, kind: Kind) -> str:
         """The folder setting that paths of ``kind`` resolve under."""
@@ -122,6 +133,17 @@ class Folders:
         folder = self.folder(kind)
         root = base_dir if base_dir is not None else Path(os.getcwd())
         return Path(os.path.normpath(root / folder)) if folder else root
+
+    def resolve(self, text: str, kind: Kind, base_dir: Path | None) -> Path:
+        """Where MuJoCo looks for the file a path of ``kind`` names, read from ``base_dir``.
+
+        Example:
+            >>> from pathlib import Path
+            >>> Folders(mesh="meshes").resolve("arm.stl", "mesh", Path("/robots"))
+            PosixPath('/robots/meshes/arm.stl')
+
+        """
+        return Path(os.path.normpath(self.location(kind, base_dir) / _effective(text, self, kind)))
 
 
 @attrs.frozen
@@ -167,15 +189,14 @@ def _references(
         value = get_attribute(element, attribute)
         if not isinstance(value, str) or not value:
             continue
-        text = _effective(value, folders, kind)
         yield FileReference(
             element=element,
             key=str(key),
             attribute=attribute,
             text=value,
             kind=kind,
-            path=Path(os.path.normpath(folders.location(kind, base_dir) / text)),
-            lookup=_lookup(text, folders, kind),
+            path=folders.resolve(value, kind, base_dir),
+            lookup=_lookup(_effective(value, folders, kind), folders, kind),
         )
 
 
@@ -194,7 +215,9 @@ def file_references(model: Mujoco) -> Iterator[FileReference]:
         yield from _references(element, key, folders, model.base_dir)
 
 
-def with_paths(model: Mujoco, new_path: Callable[[FileReference], str]) -> Mujoco:
+def with_paths(
+    model: Mujoco, new_path: Callable[[FileReference], str], folders: Folders | None = None
+) -> Mujoco:
     """``model`` with each file path replaced by ``new_path(reference)``; the rest is shared.
 
     Example:
@@ -204,7 +227,7 @@ def with_paths(model: Mujoco, new_path: Callable[[FileReference], str]) -> Mujoc
         'A.STL'
 
     """
-    folders = Folders.of(model)
+    folders = folders if folders is not None else Folders.of(model)
 
     def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
         changes = {}
@@ -221,6 +244,8 @@ def relocated(
     model: Mujoco,
     base_dir: str | os.PathLike[str] | None,
     folders: Folders | None = None,
+    *,
+    source: Folders | None = None,
 ) -> Mujoco:
     """``model`` with its relative file paths rewritten to resolve from ``base_dir``.
 
@@ -231,12 +256,14 @@ def relocated(
     resolve from wherever it is used: they are taken as relative to the new
     place too, so only a change of compiler folder rewrites them. When the new
     ``base_dir`` is ``None`` (a model built in code), paths that resolved from
-    a known folder become absolute.
+    a known folder become absolute. The result's ``<compiler>`` names ``folders``.
 
     Args:
         model: The model whose paths are rewritten.
         base_dir: The folder the result's paths should resolve from.
         folders: The compiler folders they should resolve under.
+        source: The compiler folders they resolve under now (by default read
+            from the model's top-level ``<compiler>`` sections).
 
     Raises:
         MjcfValueError: ``folders`` strips paths (``strippath``), and a file is
@@ -250,7 +277,7 @@ def relocated(
 
     """
     target_base = to_base_dir(base_dir)
-    source = Folders.of(model)
+    source = source if source is not None else Folders.of(model)
     target = folders if folders is not None else source
     source_base = model.base_dir if model.base_dir is not None else target_base
 
@@ -271,7 +298,9 @@ def relocated(
             )
         return written.replace(os.sep, "/")
 
-    moved = with_paths(model, new_path)
+    moved = with_paths(model, new_path, source)
+    if folders is not None and target != source:
+        moved = with_folders(moved, target)
     return build_node(Mujoco, {"base_dir": target_base}, moved)
 
 
@@ -322,18 +351,35 @@ def with_included_paths(model: Mujoco, origins: Mapping[int, tuple[AnyElement, P
     return with_paths(model, new_path)
 
 
-def without_folders(model: Mujoco) -> Mujoco:
-    r"""``model`` with the compiler's folder settings removed (every path then names its file).
+def with_folders(model: Mujoco, folders: Folders) -> Mujoco:
+    r"""``model`` whose ``<compiler>`` sections name ``folders`` and no other folder setting.
+
+    ``Folders()`` removes them all: every path then names its file directly.
 
     Example:
         >>> from serializers import dumps, loads
-        >>> dumps(without_folders(loads('<mujoco><compiler meshdir="m" angle="radian"/></mujoco>')))
+        >>> model = loads('<mujoco><compiler meshdir="m" angle="radian"/></mujoco>')
+        >>> dumps(with_folders(model, Folders()))
         '<mujoco>\n  <compiler angle="radian"/>\n</mujoco>\n'
+        >>> dumps(with_folders(model, Folders(texture="t")))
+        '<mujoco>\n  <compiler angle="radian" texturedir="t"/>\n</mujoco>\n'
 
     """
-    unset = dict.fromkeys(("meshdir", "texturedir", "assetdir", "strippath"))
-
-    def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
-        return with_attributes(element, unset) if key == "compiler" else element
-
-    return map_elements(visit, model)
+    written = {
+        "meshdir": folders.mesh or None,
+        "texturedir": folders.texture or None,
+        "assetdir": None,
+        "strippath": "true" if folders.strip else None,
+    }
+    sections = [c for c in model.elements if c.tag == "compiler"]
+    if not sections and not any(written.values()):
+        return model
+    children = list(model.children)
+    for index, child in enumerate(children):
+        if isinstance(child, (TypedElement, GenericElement)) and child.tag == "compiler":
+            last = child is sections[-1]
+            changes = written if last else dict.fromkeys(written)
+            children[index] = with_attributes(child, changes)
+    if not sections:
+        children.insert(0, with_attributes(Compiler(), written))
+    return with_children(model, children)

@@ -24,7 +24,13 @@ __all__ = [
 
 
 def quat_product(a: Sequence[float], b: Sequence[float]) -> tuple[float, float, float, float]:
-    """The quaternion product ``a * b`` (``w, x, y, z``): turn by ``b``, then by ``a``."""
+    """The quaternion product ``a * b`` (``w, x, y, z``): turn by ``b``, then by ``a``.
+
+    Example:
+        >>> quat_product((0, 1, 0, 0), (0, 1, 0, 0))
+        (-1, 0, 0, 0)
+
+    """
     return (
         a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3],
         a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
@@ -34,7 +40,14 @@ def quat_product(a: Sequence[float], b: Sequence[float]) -> tuple[float, float, 
 
 
 def euler_quat(angles: Sequence[float], sequence: str) -> tuple[float, ...]:
-    """MuJoCo's quaternion for Euler angles in radians: lower case axes turn with the frame."""
+    """MuJoCo's quaternion for Euler angles in radians: lower case axes turn with the frame.
+
+    Example:
+        >>> import math
+        >>> [round(c, 6) + 0 for c in euler_quat([0, 0, math.pi], "xyz")]
+        [0.0, 0.0, 0.0, 1.0]
+
+    """
     quat: tuple[float, ...] = (1.0, 0.0, 0.0, 0.0)
     for angle, axis in zip(angles, sequence, strict=True):
         turn = [math.cos(angle / 2), 0.0, 0.0, 0.0]
@@ -45,7 +58,13 @@ def euler_quat(angles: Sequence[float], sequence: str) -> tuple[float, ...]:
 
 
 def quat_distance(a: Sequence[float], b: Sequence[float]) -> float:
-    """The largest difference between two quaternions' components (signs matter)."""
+    """The largest difference between two quaternions' components (signs matter).
+
+    Example:
+        >>> quat_distance((1, 0, 0, 0), (0.5, 0, 0, 0))
+        0.5
+
+    """
     return max(abs(x - y) for x, y in zip(a, b, strict=True))
 
 
@@ -53,6 +72,14 @@ def euler_angles(quat: Sequence[float], sequence: str) -> tuple[float, ...] | No
     """Euler angles (radians) in ``sequence`` giving ``quat`` itself (not ``-quat``).
 
     ``None`` when two rotations that follow each other turn about one axis.
+
+    Example:
+        >>> import math
+        >>> [round(a, 9) + 0 for a in euler_angles(euler_quat([0.3, 0, 0], "xyz"), "zyx")]
+        [0.0, 0.0, 0.3]
+        >>> euler_angles((1, 0, 0, 0), "xxz") is None
+        True
+
     """
     order: list[tuple[int, int]] = []  # (axis, angle index) in the order the rotations multiply
     for index, axis in enumerate(sequence):
@@ -90,17 +117,35 @@ def euler_angles(quat: Sequence[float], sequence: str) -> tuple[float, ...] | No
 
 
 def orientation_radians(degrees: float) -> float:
-    """Degrees in radians, computed as MuJoCo converts ``euler`` and ``axisangle``."""
+    """Degrees in radians, computed as MuJoCo converts ``euler`` and ``axisangle``.
+
+    Example:
+        >>> orientation_radians(180.0)
+        3.141592653589793
+
+    """
     return degrees / 180 * math.pi
 
 
 def joint_radians(degrees: float) -> float:
-    """Degrees in radians, computed as MuJoCo converts joint ranges and references."""
+    """Degrees in radians, computed as MuJoCo converts joint ranges and references.
+
+    Example:
+        >>> joint_radians(90.0)
+        1.5707963267948966
+
+    """
     return degrees * (math.pi / 180)
 
 
 def in_unit(radians: float, degree: bool, reading: Callable[[float], float]) -> float:
-    """The number MuJoCo reads as ``radians`` in the unit (exactly, where a double does it)."""
+    """The number MuJoCo reads as ``radians`` in the unit (exactly, where a double does it).
+
+    Example:
+        >>> in_unit(1.5707963267948966, True, joint_radians), in_unit(0.5, False, joint_radians)
+        (90.0, 0.5)
+
+    """
     if not degree:
         return radians
     guess = radians * 180 / math.pi

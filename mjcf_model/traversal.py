@@ -344,3 +344,34 @@ def keyed_walk(
             for child in reversed(element.children)
             if isinstance(child, (TypedElement, GenericElement))
         )
+
+
+def replaced_at(node: _A, path: Path, new: Sequence[Node]) -> _A:
+    """``node`` with the element at ``path`` (as :func:`walk` gives it) replaced by ``new``.
+
+    ``new`` may hold several nodes, or none (the element is removed). Only the
+    elements on the path are rebuilt; everything else is shared.
+
+    Example:
+        >>> from serializers import loads
+        >>> from mjcf_model import Site
+        >>> model = loads('<mujoco><worldbody><geom size="1"/></worldbody></mujoco>')
+        >>> replaced_at(model, (0, 0), [Site(), Site()]).worldbody.elements
+        (Site(), Site())
+
+    """
+    chain: list[AnyElement] = [node]
+    for index in path[:-1]:
+        inner = chain[-1].children[index]
+        assert isinstance(inner, (TypedElement, GenericElement))
+        chain.append(inner)
+    replacement: list[Node] = list(new)
+    for holder, index in zip(reversed(chain), reversed(path), strict=True):
+        children = list(holder.children)
+        children[index : index + 1] = replacement
+        replacement = [with_children(holder, children)]
+    if not path:
+        replacement = list(new)
+    result = replacement[0]
+    assert isinstance(result, type(node))
+    return result

@@ -18,7 +18,7 @@ from collections.abc import Mapping
 from pathlib import Path
 
 from mjcf_model.compiling import bundled
-from mjcf_model.errors import MjcfValueError
+from mjcf_model.errors import MjcfAssetError, MjcfValueError
 from mjcf_model.nodes.root import Mujoco
 from serializers.writer import dumps
 
@@ -61,7 +61,8 @@ def export(
 
     Raises:
         MjcfValueError: ``directory`` exists and is not an empty folder.
-        MjcfAssetError: A file the model names cannot be read.
+        MjcfAssetError: A file the model names cannot be read, or the folder
+            cannot be written.
 
     Example:
         >>> import pathlib, tempfile
@@ -83,20 +84,37 @@ def export(
             "choose a new folder"
         )
     bundle = bundled(model, assets=assets, folder=f"{ASSET_FOLDER}/")
+    xml_name = _xml_name(model)
+    try:
+        _write_folder(target, xml_name, dumps(bundle.model).encode(), bundle.files)
+    except OSError as error:
+        raise MjcfAssetError(
+            f"cannot write {str(target)!r}: {error.strerror or error}; nothing was written"
+        ) from None
+    return target / xml_name
+
+
+def _write_folder(target: Path, xml_name: str, xml: bytes, files: Mapping[str, bytes]) -> None:
+    """Write the folder beside ``target``, flush it to disk, then rename it into place."""
     target.parent.mkdir(parents=True, exist_ok=True)
     staging = target.parent / f".{target.name}.{secrets.token_hex(6)}.tmp"
     staging.mkdir()  # not mkdtemp: the folder gets the usual permissions, not 0700
     try:
-        xml = staging / _xml_name(model)
-        xml.write_text(dumps(bundle.model), encoding="utf-8")
-        if bundle.files:
+        _write_file(staging / xml_name, xml)
+        if files:
             (staging / ASSET_FOLDER).mkdir()
-        for name, data in bundle.files.items():
-            (staging / ASSET_FOLDER / name).write_bytes(data)
+        for name, data in files.items():
+            _write_file(staging / ASSET_FOLDER / name, data)
         if target.exists():
             target.rmdir()
         os.replace(staging, target)
     except BaseException:
         shutil.rmtree(staging, ignore_errors=True)
         raise
-    return target / xml.name
+
+
+def _write_file(path: Path, data: bytes) -> None:
+    with open(path, "wb") as stream:
+        stream.write(data)
+        stream.flush()
+        os.fsync(stream.fileno())

@@ -798,11 +798,11 @@ def load(
             data = path.read_bytes()
         except OSError as error:
             raise MjcfIncludeError(f"cannot read {str(path)!r}: {error.strerror}") from None
-        resolved = path.resolve()
         session = _Session(
             inline_includes=inline_includes,
-            main_dir=resolved.parent,
-            include_chain=(resolved,),
+            # the folder MuJoCo resolves from: the link's own, when the path is a link
+            main_dir=Path(os.path.abspath(path)).parent,
+            include_chain=(path.resolve(),),
         )
         return _attachments_inlined(_read(data, str(path), session), inline_attachments)
     name = getattr(source, "name", None)

@@ -35,7 +35,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from mjcf_model.base import AnyElement, get_attribute, with_attributes
-from mjcf_model.errors import MjcfSyntaxError
+from mjcf_model.errors import MjcfAssetError, MjcfSyntaxError
 from mjcf_model.node_building import build_node
 from mjcf_model.nodes.asset import Bone, Skin
 from mjcf_model.nodes.root import Mujoco
@@ -145,7 +145,12 @@ def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str] | None = 
         reference = skins.get(id(element))
         if reference is None or reference.element is not element:
             return element
-        data = read_skin(reference.path)
+        try:
+            data = read_skin(reference.path)
+        except OSError as error:
+            raise MjcfAssetError(
+                f"cannot read skin file {str(reference.path)!r}: {error.strerror or error}"
+            ) from None
         name = get_attribute(element, "name") or Path(reference.text.replace("\\", "/")).stem
         inline = with_attributes(
             element,

@@ -26,7 +26,7 @@ from mjcf_model.base import AnyElement, Comment, GenericElement, Node, attribute
 from mjcf_model.compiling import inlined
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.provenance import file_references, relocated
+from mjcf_model.provenance import Folders, file_references, relocated
 from mjcf_model.traversal import keyed_walk
 from mjcf_model.values import format_value
 
@@ -157,9 +157,7 @@ def dump(
         return
     path = Path(target)
     if isinstance(node, Mujoco) and node.base_dir is not None:
-        moved = relocated(node, path.parent)
-        _refuse_lost_files(node, moved)
-        node = moved
+        node = _relocated(node, path.parent)
     text = dumps(node, indent=indent)
     handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
@@ -177,22 +175,33 @@ def dump(
         raise
 
 
-def _refuse_lost_files(model: Mujoco, moved: Mujoco) -> None:
-    """Raise when a kept ``<include>`` names files that ``moved`` would no longer find.
+def _relocated(model: Mujoco, folder: Path) -> Mujoco:
+    """``model`` with its paths rewritten to resolve from ``folder``.
 
-    An included file is not rewritten: a path in it that MuJoCo found under the
-    main model's folder is looked for under the new folder once the model moves.
+    A kept ``<include>`` is not rewritten, and its file may set the compiler's
+    folders: they are read from the whole model. A path in an included file that
+    MuJoCo found under the main model's folder is looked for under the new folder
+    once the model moves: that raises.
     """
-    if moved is model or not any(key == "include" for _, key, _ in keyed_walk(model)):
-        return
-    before = [r.path for r in file_references(inlined(model))]
-    for reference, path in zip(file_references(inlined(moved)), before, strict=True):
+    if not any(key == "include" for _, key, _ in keyed_walk(model)):
+        return relocated(model, folder)
+    whole = inlined(model)
+    moved = relocated(model, folder, source=Folders.of(whole))
+    before = [r.path for r in file_references(whole)]
+    after = list(file_references(inlined(moved)))
+    for reference, path in zip(after, before, strict=False):
         if reference.path != path:
             raise MjcfValueError(
                 f"an included file names {reference.text!r}, found under the model's folder "
                 f"({str(path)!r}); written elsewhere the model would look for "
                 f"{str(reference.path)!r}: load it with inline_includes=True, or export it"
             )
+    if len(after) != len(before):
+        raise MjcfValueError(
+            "written elsewhere, the model's included files would name other files: load it "
+            "with inline_includes=True, or export it"
+        )
+    return moved
 
 
 def to_etree(node: Node) -> ET.Element:

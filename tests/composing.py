@@ -122,14 +122,20 @@ def _count_problems(alone: list[Any], scene: Any) -> list[str]:
     return problems
 
 
-def compose_problems(paths: list[Path], workdir: Path) -> Outcome:
-    """Attach the models at ``paths`` into an empty world (prefixes ``a_``, ``b_``...) and check."""
+def compose_problems(paths: list[Path], workdir: Path, *, parent: Path | None = None) -> Outcome:
+    """Attach the models at ``paths`` (prefixes ``a_``, ``b_``...) and check the scene.
+
+    They are attached into an empty world, or into the model at ``parent``,
+    loaded from its file: its own objects must then keep their values too.
+    """
     prefixes = [f"{chr(ord('a') + i)}_" for i in range(len(paths))]
     alone = [mujoco.MjModel.from_xml_path(str(path)) for path in paths]
+    if parent is not None:
+        prefixes, alone = ["", *prefixes], [mujoco.MjModel.from_xml_path(str(parent)), *alone]
     passed: list[str] = []
     try:
-        scene = Mujoco()
-        for path, prefix in zip(paths, prefixes, strict=True):
+        scene = Mujoco() if parent is None else load(parent, inline_includes=True)
+        for path, prefix in zip(paths, prefixes[-len(paths) :], strict=True):
             scene = attach(scene, load(path, inline_includes=True), prefix=prefix)
     except Exception as error:  # the check reports every failure, whatever its kind
         return Outcome(tuple(passed), (f"{type(error).__name__}: {error}",))

@@ -51,3 +51,30 @@ def test_two_models_from_different_folders_compose(pair: tuple[Path, Path], tmp_
     """The scene compiles with every object's values, dumps elsewhere and exports, identically."""
     outcome = compose_problems(list(pair), tmp_path)
     assert outcome.passed == STAGES, outcome.problems
+
+
+#: Fixture robots that can be a loaded parent: not the gripper, whose inertiafromgeom="true"
+#: ignores the explicit inertials that keep another model's masses (see the next test).
+PARENTS = [path for path in FIXTURE_MODELS if path.parent.name != "gripper_degree"]
+
+
+@pytest.mark.parametrize(
+    ("parent", "child"),
+    [(p, c) for p in PARENTS for c in FIXTURE_MODELS if p != c],
+    ids=lambda path: path.parent.name,
+)
+def test_a_model_attached_into_a_loaded_parent_keeps_both(
+    parent: Path, child: Path, tmp_path: Path
+) -> None:
+    """Into a parent loaded with its own folder and compiler, both keep every value."""
+    outcome = compose_problems([child], tmp_path, parent=parent)
+    assert outcome.passed == STAGES, outcome.problems
+
+
+def test_a_parent_that_ignores_inertials_refuses_naming_the_setting(tmp_path: Path) -> None:
+    """Under inertiafromgeom="true" the arm's explicit inertial cannot hold: refused by name."""
+    gripper, arm = FIXTURE_MODELS[1], FIXTURE_MODELS[0]
+    outcome = compose_problems([arm], tmp_path, parent=gripper)
+    assert outcome.passed == ()
+    assert "MjcfValueError" in outcome.problems[0]
+    assert "inertiafromgeom" in outcome.problems[0]

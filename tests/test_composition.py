@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from mjcf_model import Mujoco, compiled, find, get_attribute
-from mjcf_model.compare import compile_text_beside, compiled_names
+from mjcf_model.compare import compiled_names
 from mjcf_model.composition import attach, attach_all
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from serializers import dumps, load, loads
@@ -30,8 +30,8 @@ def test_two_prefixed_copies_attached_into_a_world_compile(path: Path) -> None:
     """Two differently prefixed copies of a corpus model attached into one world compile."""
     model = _corpus_model(path)
     scene = attach(attach(loads(EMPTY), model, prefix="a_"), model, prefix="b_")
-    one = compile_text_beside(dumps(model), path)
-    both = compile_text_beside(dumps(scene), path)
+    one = compiled(model)
+    both = compiled(scene)
     assert (both.nbody, both.ngeom, both.njnt, both.nu, both.nsensor, both.nq) == (
         2 * one.nbody - 1,
         2 * one.ngeom,

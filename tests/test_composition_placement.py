@@ -16,7 +16,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from mjcf_model import Mujoco, find_all, get_attribute, with_attributes
+from mjcf_model import Mujoco, find, find_all, get_attribute, with_attributes
 from mjcf_model.compare import compiled_names
 from mjcf_model.composition import AttachKind, attach, attach_all
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
@@ -305,3 +305,14 @@ def test_robosuite_gripper_placed_at_a_site_matches_attach_body() -> None:
     # attach_body moves the body tree only: the gripper's actuators stay behind.
     without_actuators = [c for c in COUNTS if c != "nu"]
     assert _mismatches(ours, parent_spec.compile(), without_actuators) == []
+
+
+def test_attaching_deep_in_a_tree_needs_no_recursion() -> None:
+    """A body 1,200 levels deep takes a child: the tree is rebuilt without recursion."""
+    depth = 1200
+    text = "".join(f'<body name="b{i}">' for i in range(depth)) + "</body>" * depth
+    parent = loads(f"<mujoco><worldbody>{text}</worldbody></mujoco>")
+    child = loads('<mujoco><worldbody><body name="c"><geom size="1"/></body></worldbody></mujoco>')
+    scene = attach(parent, child, at=f"b{depth - 1}", prefix="x_")
+    deepest = find(scene, "body", name=f"b{depth - 1}")
+    assert deepest is not None and [b.name for b in deepest.bodies] == ["x_c"]

@@ -10,8 +10,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from mjcf_model import Body, Geom, Mujoco
-from mjcf_model.compare import compile_text_beside
+from mjcf_model import Body, Geom, Mujoco, compiled
 from mjcf_model.composition import attach
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.naming import declared_names, prefix_map, prefixed, renamed
@@ -31,9 +30,9 @@ def test_prefixed_corpus_model_compiles_with_every_name_prefixed(path: Path) -> 
 
     Binary skin files name their bodies inside the file, so they are written inline first.
     """
-    model = inline_skin_files(load(path, inline_includes=True), path.parent)
-    original = compile_text_beside(dumps(model), path)
-    changed = compile_text_beside(dumps(prefixed(model, "pre_")), path)
+    model = inline_skin_files(load(path, inline_includes=True))
+    original = compiled(model)
+    changed = compiled(prefixed(model, "pre_"))
     assert prefix_problems(original, changed, "pre_") == []
 
 

@@ -274,3 +274,60 @@ def test_corpus_model_dumped_elsewhere_and_exported_compiles_identically(
     shutil.move(tmp_path / "exported", tmp_path / "moved")
     moved = tmp_path / "moved" / exported.name
     assert _same(mujoco.MjModel.from_xml_path(str(moved)), expected) == []
+
+
+def test_a_linked_model_resolves_from_the_links_folder(tmp_path: Path) -> None:
+    """A model read through a symbolic link finds its files beside the link, as MuJoCo does."""
+    real = _tree(tmp_path / "real", {"robot.xml": ROBOT.replace('meshdir="assets" ', "")})
+    linked = _tree(tmp_path / "linked", {"link.obj": _mesh(7)})
+    (linked / "robot.xml").symlink_to(real / "robot.xml")
+    expected = mujoco.MjModel.from_xml_path(str(linked / "robot.xml"))
+    model = load(linked / "robot.xml")
+    assert model.base_dir == linked.resolve()
+    assert _same(compiled(model), expected) == []
+
+
+def test_a_later_assetdir_overrides_an_earlier_meshdir(tmp_path: Path) -> None:
+    """Compiler sections are read in order: assetdir sets both folders, as MuJoCo reads it."""
+    text = ROBOT.replace(
+        '<compiler meshdir="assets" texturedir="textures" angle="radian"/>',
+        '<compiler meshdir="assets"/><compiler assetdir="shared"/>',
+    )
+    folder = _tree(tmp_path / "m", {"robot.xml": text, "shared/link.obj": _mesh(8)})
+    expected = mujoco.MjModel.from_xml_path(str(folder / "robot.xml"))
+    assert _same(compiled(load(folder / "robot.xml")), expected) == []
+
+
+def test_a_compiler_inside_a_kept_include_is_honoured_when_dumping_elsewhere(
+    tmp_path: Path,
+) -> None:
+    """The mesh folder an included file sets still holds after the model moves."""
+    folder = _tree(
+        tmp_path / "model",
+        {
+            "main.xml": '<mujoco><include file="settings.xml"/><asset><mesh name="m" '
+            'file="m.obj"/></asset><worldbody><geom type="mesh" mesh="m"/></worldbody></mujoco>',
+            "settings.xml": '<mujoco><compiler meshdir="meshes"/></mujoco>',
+            "meshes/m.obj": _mesh(6),
+        },
+    )
+    expected = mujoco.MjModel.from_xml_path(str(folder / "main.xml"))
+    target = tmp_path / "elsewhere" / "main.xml"
+    target.parent.mkdir()
+    dump(load(folder / "main.xml"), target)
+    assert _same(mujoco.MjModel.from_xml_path(str(target)), expected) == []
+
+
+def test_export_tells_apart_names_that_differ_only_in_case(tmp_path: Path) -> None:
+    """``Link.obj`` and ``link.obj`` are one file on macOS or Windows: the second is renamed."""
+    a = _tree(tmp_path / "a", {"Link.obj": _mesh(5)})
+    b = _tree(tmp_path / "b", {"link.obj": _mesh(6)})
+    text = (
+        f'<mujoco><asset><mesh name="a" file="{a}/Link.obj"/><mesh name="b" file="{b}/link.obj"/>'
+        '</asset><worldbody><geom type="mesh" mesh="a"/><geom type="mesh" mesh="b"/>'
+        "</worldbody></mujoco>"
+    )
+    path = export(loads(text), tmp_path / "out")
+    assert sorted(p.name for p in (path.parent / "assets").iterdir()) == ["Link.obj", "link_2.obj"]
+    expected = mujoco.MjModel.from_xml_string(text)
+    assert _same(mujoco.MjModel.from_xml_path(str(path)), expected) == []
