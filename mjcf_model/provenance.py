@@ -38,7 +38,15 @@ from typing import Literal
 
 import attrs
 
-from mjcf_model.base import AnyElement, GenericElement, TypedElement, get_attribute, with_attributes
+from mjcf_model.base import (
+    AnyElement,
+    GenericElement,
+    Node,
+    TypedElement,
+    attribute_items,
+    get_attribute,
+    with_attributes,
+)
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.node_building import build_node
 from mjcf_model.nodes.compiler import Compiler
@@ -363,6 +371,8 @@ def with_folders(model: Mujoco, folders: Folders) -> Mujoco:
         '<mujoco>\n  <compiler angle="radian"/>\n</mujoco>\n'
         >>> dumps(with_folders(model, Folders(texture="t")))
         '<mujoco>\n  <compiler angle="radian" texturedir="t"/>\n</mujoco>\n'
+        >>> dumps(with_folders(loads('<mujoco><compiler meshdir="m"/></mujoco>'), Folders()))
+        '<mujoco/>\n'
 
     """
     written = {
@@ -374,12 +384,14 @@ def with_folders(model: Mujoco, folders: Folders) -> Mujoco:
     sections = [c for c in model.elements if c.tag == "compiler"]
     if not sections and not any(written.values()):
         return model
-    children = list(model.children)
-    for index, child in enumerate(children):
+    children: list[Node] = []
+    for child in model.children:
         if isinstance(child, (TypedElement, GenericElement)) and child.tag == "compiler":
-            last = child is sections[-1]
-            changes = written if last else dict.fromkeys(written)
-            children[index] = with_attributes(child, changes)
-    if not sections:
+            changes = written if child is sections[-1] else dict.fromkeys(written)
+            child = with_attributes(child, changes)
+            if not attribute_items(child) and not child.children:
+                continue  # nothing left to say: an empty <compiler/> is dropped
+        children.append(child)
+    if not sections and any(written.values()):
         children.insert(0, with_attributes(Compiler(), written))
     return with_children(model, children)

@@ -133,7 +133,8 @@ def dump(
 ) -> None:
     r"""Write a node to a file path or an open text file.
 
-    Writing a loaded model to a path in another folder relocates it: relative
+    Writing a loaded model to a path in another folder (or to an open file that
+    names its path) relocates it: relative
     file paths (meshes, textures, includes...) are rewritten to name the same
     files from the new folder (:func:`mjcf_model.provenance.relocated`). Written
     back to its own folder, the text is unchanged. A model built in code has no
@@ -153,12 +154,13 @@ def dump(
 
     """
     if not isinstance(target, (str, os.PathLike)):
+        name = getattr(target, "name", None)  # an open file names its path, as load reads it
+        if isinstance(name, str) and not name.startswith("<"):
+            node = _relocated_for(node, Path(name).parent)
         target.write(dumps(node, indent=indent))
         return
     path = Path(target)
-    if isinstance(node, Mujoco) and node.base_dir is not None:
-        node = _relocated(node, path.parent)
-    text = dumps(node, indent=indent)
+    text = dumps(_relocated_for(node, path.parent), indent=indent)
     handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
         with os.fdopen(handle, "w", encoding="utf-8") as stream:
@@ -173,6 +175,13 @@ def dump(
         with contextlib.suppress(OSError):
             os.unlink(temporary)
         raise
+
+
+def _relocated_for(node: Node, folder: Path) -> Node:
+    """A loaded model with its paths rewritten to resolve from ``folder``; other nodes as given."""
+    if isinstance(node, Mujoco) and node.base_dir is not None:
+        return _relocated(node, folder)
+    return node
 
 
 def _relocated(model: Mujoco, folder: Path) -> Mujoco:

@@ -331,3 +331,13 @@ def test_export_tells_apart_names_that_differ_only_in_case(tmp_path: Path) -> No
     assert sorted(p.name for p in (path.parent / "assets").iterdir()) == ["Link.obj", "link_2.obj"]
     expected = mujoco.MjModel.from_xml_string(text)
     assert _same(mujoco.MjModel.from_xml_path(str(path)), expected) == []
+
+
+def test_dump_to_an_open_file_relocates_to_its_folder(robot: Path, tmp_path: Path) -> None:
+    """An open file names its path, as load reads it: the model is relocated there too."""
+    target = tmp_path / "scenes" / "scene.xml"
+    target.parent.mkdir()
+    with open(target, "w", encoding="utf-8") as stream:
+        dump(load(robot), stream)
+    expected = mujoco.MjModel.from_xml_path(str(robot))
+    assert _same(mujoco.MjModel.from_xml_path(str(target)), expected) == []
