@@ -45,7 +45,7 @@ from mjcf_model.naming import declarations, declared_names, prefixed_declared
 from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.provenance import Folders, file_references, relocated
+from mjcf_model.provenance import Folders, relocated
 from mjcf_model.registry import CLASS_BY_KEY
 from mjcf_model.traversal import keyed_walk, refuse_opaque, replaced_at, walk, with_children
 
@@ -66,8 +66,6 @@ _LISTS = (
     "actuator",
     "sensor",
 )
-#: The keys of skins, which may name their bodies inside a ``.skn`` file.
-_SKIN_KEYS = ("asset/skin", "deformable/skin")
 
 
 def _sections(model: Mujoco, tag: str) -> list[AnyElement]:
@@ -275,7 +273,6 @@ class _Composer:
         if prefix:
             child = prefixed_declared(child, prefix, names)  # type: ignore[assignment]
             names = {ns: frozenset(prefix + n for n in found) for ns, found in names.items()}
-        child = self._in_parent_terms(child)
         child_assets = [e for section in _sections(child, "asset") for e in section.elements]
         shared = {e for e in child_assets if e in self.assets}
         theirs = {ns: set(found) for ns, found in names.items()}
@@ -319,17 +316,16 @@ class _Composer:
 
         Includes are refused. Skins read from ``.skn`` files name their bodies inside
         the file, so renaming would lose them: they are written inline first, from
-        the child's folder.
+        the child's folder. Then the child is put in the parent's terms (the same
+        for every copy of it, so attaching one model N times converts it once).
         """
         cached = self.names.get(id(child))
         if cached is None or cached[0] is not child:
             for element, key, _ in keyed_walk(child):
                 refuse_opaque(element, key, "attach")
-            ready = child
-            if any(r.key in _SKIN_KEYS for r in file_references(child)):
-                from serializers.skins import inline_skin_files
+            from serializers.skins import with_file_skins_inline
 
-                ready = inline_skin_files(child)
+            ready = self._in_parent_terms(with_file_skins_inline(child))  # type: ignore[arg-type]
             cached = self.names[id(child)] = (child, ready, declared_names(ready))
         return cached[1], cached[2]
 

@@ -212,7 +212,7 @@ def _refuse_file_skin(skin: AnyElement, renames_bodies: bool) -> None:
     raise MjcfValueError(
         f"cannot rename the bodies of a model where {called} is read from {file!r}: the file "
         "names the bodies its bones bind to, and MuJoCo would not find them; write the skin "
-        "inline first with serializers.skins.inline_skin_files(model)"
+        "inline first with serializers.skins.inline_skin_files(model, model_folder)"
     )
 
 
@@ -282,7 +282,9 @@ def prefixed(
 
     Raises:
         MjcfValueError: Bodies would be renamed while a skin reads their names
-            from a ``.skn`` file (inline it with ``serializers.skins.inline_skin_files``).
+            from a ``.skn`` file and the model does not know its folder (a loaded
+            model has its skin files written inline first; otherwise call
+            ``serializers.skins.inline_skin_files(model, folder)``).
         MjcfAssetError: An asset ``<model>`` without ``name`` has a file that
             cannot be read (its name is its file root's ``model`` attribute).
 
@@ -299,6 +301,10 @@ def prefixed(
     chosen = _checked_namespaces(namespaces)
     if not prefix:
         return node
+    if "body" in chosen:
+        from serializers.skins import with_file_skins_inline
+
+        node = with_file_skins_inline(node)
     excluded = _excluder(exclude)
     if undeclared:
 

@@ -42,7 +42,7 @@ from mjcf_model.nodes.root import Mujoco
 from mjcf_model.provenance import file_references
 from mjcf_model.traversal import map_elements
 
-__all__ = ["inline_skin_files", "read_skin", "skin_bone_names"]
+__all__ = ["inline_skin_files", "read_skin", "skin_bone_names", "with_file_skins_inline"]
 
 _NAME_BYTES = 40
 
@@ -133,11 +133,7 @@ def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str] | None = 
 
     """
     located = model if directory is None else build_node(Mujoco, {"base_dir": directory}, model)
-    skins = {
-        id(r.element): r
-        for r in file_references(located)
-        if r.key in ("asset/skin", "deformable/skin")
-    }
+    skins = {id(r.element): r for r in file_references(located) if r.key in SKIN_KEYS}
     if not skins:
         return model
 
@@ -165,3 +161,28 @@ def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str] | None = 
         return attrs.evolve(inline, children=[*inline.children, *data.children])
 
     return map_elements(visit, model)
+
+
+#: The schema keys of skins, which may name their bodies inside a ``.skn`` file.
+SKIN_KEYS = ("asset/skin", "deformable/skin")
+
+
+def with_file_skins_inline(node: AnyElement) -> AnyElement:
+    """``node`` with its ``.skn`` skins written inline, when it is a model that knows its folder.
+
+    Renaming bodies would lose the bodies a skin file names; a loaded model can
+    read its skin files first (:func:`inline_skin_files`). Any other node, and a
+    model without skin files, is returned as it is.
+
+    Example:
+        >>> from serializers import loads
+        >>> model = loads("<mujoco/>", base_dir=".")
+        >>> with_file_skins_inline(model) is model
+        True
+
+    """
+    if not isinstance(node, Mujoco) or node.base_dir is None:
+        return node
+    if not any(reference.key in SKIN_KEYS for reference in file_references(node)):
+        return node
+    return inline_skin_files(node)

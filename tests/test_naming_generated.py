@@ -350,7 +350,7 @@ SKINNED = """<mujoco><asset><skin name="sheet" file="sheet.skn"/></asset><worldb
 
 
 def test_file_skin_refuses_renaming_its_bodies(tmp_path: Path) -> None:
-    """Prefixing bodies bound by a .skn skin raises and says to inline the skin first."""
+    """Without its folder a .skn skin cannot be read: prefixing its bodies says to inline it."""
     skin_file(tmp_path / "sheet.skn", ("a", "b", "c"))
     path = written(tmp_path, SKINNED)
     model = load(path)
@@ -358,7 +358,7 @@ def test_file_skin_refuses_renaming_its_bodies(tmp_path: Path) -> None:
     with pytest.raises(
         MjcfValueError, match=r"skin 'sheet' is read from 'sheet\.skn'.*inline_skin_files"
     ):
-        prefixed(model, "p_")
+        prefixed(loads(SKINNED), "p_")
     with pytest.raises(MjcfValueError, match="inline_skin_files"):
         renamed(model, {"body": {"a": "z"}})
     naive = dumps(model).replace('name="a"', 'name="p_a"')
@@ -383,3 +383,12 @@ def test_inlined_file_skin_prefixes(tmp_path: Path) -> None:
     path = written(tmp_path, SKINNED)
     model = inline_skin_files(load(path), tmp_path)
     assert prefixed_problems(model, path) == []
+
+
+def test_a_loaded_model_has_its_file_skin_inlined_before_prefixing(tmp_path: Path) -> None:
+    """A loaded model knows where its .skn file is: prefixing inlines it, then renames."""
+    skin_file(tmp_path / "sheet.skn", ("a", "b", "c"))
+    path = written(tmp_path, SKINNED)
+    inlined = inline_skin_files(load(path))
+    assert prefixed(load(path), "p_") == prefixed(inlined, "p_")
+    assert prefixed_problems(inlined, path) == []
