@@ -65,9 +65,6 @@ import functools
 from collections.abc import Callable, Sequence
 from typing import Any
 
-import numpy as np
-import numpy.typing as npt
-
 from mjcf_model.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.compiler_settings import (
     CONVERTED_SETTINGS,
@@ -79,7 +76,7 @@ from mjcf_model.compiler_settings import (
     compiler_settings,
 )
 from mjcf_model.composition_defaults import ACTUATOR_DEFAULT_TAGS
-from mjcf_model.conventions_inertia import inertia_kept
+from mjcf_model.conventions_inertia import Changes, inertia_kept
 from mjcf_model.defaults import DefaultClasses
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.namespaces import SCHEMA
@@ -114,9 +111,6 @@ _LIMIT_FLAGS = {
     "forcelimited": "forcerange",
     "actlimited": "actrange",
 }
-Changes = dict[str, Value | None]
-#: Compiled body arrays by ``MjModel`` field name.
-Arrays = dict[str, npt.NDArray[np.float64]]
 
 
 def _differing(mine: Settings, theirs: Settings) -> set[str]:

@@ -25,10 +25,10 @@ from mjcf_model.compiler_settings import (
 from mjcf_model.compiling import compiled
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.naming import declared_names
+from mjcf_model.naming_generated import copy_suffix
 from mjcf_model.nodes.body import Inertial
 from mjcf_model.nodes.compiler import Compiler
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.scaling_rules import numbers
 from mjcf_model.traversal import map_elements, with_children
 from mjcf_model.values import Value
 
@@ -81,11 +81,7 @@ def _named_bodies(model: Mujoco, taken: frozenset[str]) -> tuple[Mujoco, list[st
             while own in taken:
                 own += "_"
             element = with_attributes(element, {"name": own})
-        suffix = ""
-        for replicate in reversed(ancestors):
-            if replicate.tag == "replicate":
-                count = numbers(get_attribute(replicate, "count")) or (1.0,)
-                suffix += str(get_attribute(replicate, "sep") or "") + "0" * len(str(int(count[0])))
+        suffix = "".join(copy_suffix(a, 0) for a in reversed(ancestors) if a.tag == "replicate")
         names.append(str(own) + suffix)
         return element
 

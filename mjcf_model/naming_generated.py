@@ -40,7 +40,6 @@ True
 
 from __future__ import annotations
 
-import os
 from collections.abc import Callable, Iterator
 from functools import lru_cache
 from pathlib import Path
@@ -51,7 +50,7 @@ from mjcf_model.base import AnyElement, get_attribute
 from mjcf_model.errors import MjcfAssetError, MjcfError
 from mjcf_model.namespaces import SCHEMA
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.provenance import Folders
+from mjcf_model.provenance import Folders, file_stem
 from mjcf_model.traversal import keyed_walk
 
 __all__ = [
@@ -61,6 +60,7 @@ __all__ = [
     "Source",
     "declarations",
     "model_file_name",
+    "copy_suffix",
     "model_file_path",
 ]
 
@@ -167,8 +167,7 @@ def declarations(
         elif name is None and key in _NAMED_BY_FILE:
             file = get_attribute(element, "file")
             if isinstance(file, str) and file:
-                stem = os.path.splitext(os.path.basename(file.replace("\\", "/")))[0]
-                yield attribute, namespace, stem
+                yield attribute, namespace, file_stem(file)
         elif name is None and key == "asset/model":
             file = get_attribute(element, "file")
             if isinstance(file, str) and file:
@@ -195,6 +194,22 @@ def _root_model_name(path: str, _mtime: int, _size: int) -> str:
         raise _unreadable(Path(path), error) from None
     name = get_attribute(root, "model")
     return DEFAULT_MODEL_NAME if name is None else str(name)
+
+
+def copy_suffix(replicate: AnyElement, index: int) -> str:
+    """The suffix MuJoCo gives copy ``index`` of a ``<replicate>``.
+
+    It is ``sep``, then the index zero-padded to the width of ``count``.
+
+    Example:
+        >>> from mjcf_model.base import GenericElement
+        >>> replicate = GenericElement(tag="replicate", attributes={"count": "12", "sep": "_"})
+        >>> copy_suffix(replicate, 3)
+        '_03'
+
+    """
+    count = _count(replicate) or 1
+    return str(get_attribute(replicate, "sep") or "") + str(index).zfill(len(str(count)))
 
 
 def _count(element: AnyElement) -> int | None:

@@ -59,6 +59,7 @@ __all__ = [
     "FileReference",
     "Folders",
     "file_references",
+    "file_stem",
     "relocated",
     "with_included_paths",
     "with_folders",
@@ -310,6 +311,17 @@ def relocated(
     if folders is not None and target != source:
         moved = with_folders(moved, target)
     return build_node(Mujoco, {"base_dir": target_base}, moved)
+
+
+def file_stem(text: str) -> str:
+    r"""The name MuJoCo gives an asset named by its file: the file name without extension.
+
+    Example:
+        >>> file_stem("meshes\\arm.link.stl")
+        'arm.link'
+
+    """
+    return PurePosixPath(text.replace("\\", "/")).stem
 
 
 #: The tags of elements that may name a file (see :data:`FILE_ATTRIBUTES`).

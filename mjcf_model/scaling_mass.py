@@ -18,9 +18,9 @@ moves with its geoms.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from pathlib import PurePosixPath
 
 from mjcf_model.base import AnyElement, get_attribute
+from mjcf_model.provenance import file_stem
 from mjcf_model.scaling_rules import Changes, ScaleContext, builtin_default, numbers
 from mjcf_model.traversal import keyed_walk
 
@@ -36,7 +36,7 @@ def _mesh_name(mesh: AnyElement) -> str | None:
     if isinstance(name, str):
         return name
     file = get_attribute(mesh, "file")
-    return PurePosixPath(file.replace("\\", "/")).stem if isinstance(file, str) else None
+    return file_stem(file) if isinstance(file, str) else None
 
 
 def _shell_meshes(context: ScaleContext) -> frozenset[str]:

@@ -39,7 +39,7 @@ from mjcf_model.errors import MjcfAssetError, MjcfSyntaxError
 from mjcf_model.node_building import build_node
 from mjcf_model.nodes.asset import Bone, Skin
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.provenance import file_references
+from mjcf_model.provenance import file_references, file_stem
 from mjcf_model.traversal import map_elements
 
 __all__ = ["inline_skin_files", "read_skin", "skin_bone_names", "with_file_skins_inline"]
@@ -147,7 +147,7 @@ def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str] | None = 
             raise MjcfAssetError(
                 f"cannot read skin file {str(reference.path)!r}: {error.strerror or error}"
             ) from None
-        name = get_attribute(element, "name") or Path(reference.text.replace("\\", "/")).stem
+        name = get_attribute(element, "name") or file_stem(reference.text)
         inline = with_attributes(
             element,
             {
