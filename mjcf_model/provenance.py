@@ -289,6 +289,8 @@ def relocated(
     source = source if source is not None else Folders.of(model)
     target = folders if folders is not None else source
     source_base = model.base_dir if model.base_dir is not None else target_base
+    if source_base == target_base and source == target:  # nothing can move: no walk
+        return build_node(Mujoco, {"base_dir": target_base}, model)
 
     def new_path(reference: FileReference) -> str:
         text = _effective(reference.text, source, reference.kind)

@@ -183,6 +183,13 @@ def with_file_skins_inline(node: AnyElement) -> AnyElement:
     """
     if not isinstance(node, Mujoco) or node.base_dir is None:
         return node
-    if not any(reference.key in SKIN_KEYS for reference in file_references(node)):
+    skins = (  # skins stand only in the top-level sections: no need to walk the bodies
+        element
+        for section in node.elements
+        if section.tag in ("asset", "deformable")
+        for element in section.elements
+        if element.tag == "skin"
+    )
+    if not any(get_attribute(skin, "file") for skin in skins):
         return node
     return inline_skin_files(node)
