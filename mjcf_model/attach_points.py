@@ -29,7 +29,7 @@ from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.body import Frame
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.traversal import Ancestors, keyed_walk, with_children
-from mjcf_model.values import Value
+from mjcf_model.values import Value, to_vec3, to_vec4
 
 __all__ = ["AttachKind", "AttachPoint", "Where", "attach_point", "placement_frame", "wrapped"]
 
@@ -56,7 +56,7 @@ def placement_frame(
         raise MjcfValueError("give the child's orientation as quat or as euler, not both")
     if pos is None and quat is None and euler is None:
         return None
-    return Frame(pos=pos, quat=quat, euler=euler)
+    return Frame(pos=to_vec3(pos), quat=to_vec4(quat), euler=to_vec3(euler))
 
 
 @attrs.frozen

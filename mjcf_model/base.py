@@ -16,13 +16,14 @@ equality: two elements that differ only in attribute order are equal).
 
 from __future__ import annotations
 
-import operator
 from collections.abc import Iterable, Iterator, Mapping
-from typing import Any, ClassVar, TypeVar
+from typing import TYPE_CHECKING, Any, ClassVar, TypeVar
 
 import attrs
 
+from mjcf_model.declaring import NodeInfo, node, xml_name
 from mjcf_model.errors import MjcfValueError
+from mjcf_model.layout import Layout
 from mjcf_model.node_building import build_node
 from mjcf_model.values import Value, check_name, check_text, format_value
 
@@ -162,9 +163,24 @@ def to_children(value: Iterable[Node] | None) -> tuple[Node, ...]:
     return items
 
 
-@attrs.frozen(kw_only=True)
+@node
 class Node:
     """Anything that can stand in an element's ``children``: an element or a comment."""
+
+    #: What the library knows about the class (built by :func:`~mjcf_model.declaring.node`).
+    __node_info__: ClassVar[NodeInfo]
+    if TYPE_CHECKING:  # lets ``attrs.fields`` and ``attrs.has`` type-check on node classes
+        __attrs_attrs__: ClassVar[tuple[attrs.Attribute[Any], ...]]
+
+    def __eq__(self, other: object) -> bool:
+        """Equal when of the same class with equal fields (``==`` of attrs, any depth)."""
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return other is self or Subtree((self,)) == Subtree((other,))
+
+    def __hash__(self) -> int:
+        """Hash of the class and every field ``==`` compares, children included."""
+        return hash(Subtree((self,)))
 
     def __copy__(self) -> Node:
         return self  # immutable: a copy could only be the same value
@@ -183,7 +199,7 @@ def _check_comment(_instance: Any, _attribute: Any, value: str) -> None:
     check_text(value, "comment")
 
 
-@attrs.frozen(kw_only=True)
+@node
 class Comment(Node):
     """An XML comment, kept where it stood.
 
@@ -194,7 +210,7 @@ class Comment(Node):
     """
 
     #: The text between ``<!--`` and ``-->``, spaces included.
-    text: str = attrs.field(validator=_check_comment)
+    text: str = attrs.field(validator=_check_comment, kw_only=True)
 
 
 def _optional_text(_instance: Any, _attribute: Any, value: str | None) -> None:
@@ -204,23 +220,9 @@ def _optional_text(_instance: Any, _attribute: Any, value: str | None) -> None:
         check_text(value, "element text")
 
 
-_SHALLOW: dict[type, Any] = {}
-
-
 def _shallow(node: Node) -> tuple[Any, ...]:
     """The values ``==`` compares on ``node`` itself, its children left out."""
-    cls = type(node)
-    getter = _SHALLOW.get(cls)
-    if getter is None:
-        names = [f.name for f in attrs.fields(cls) if f.eq and f.name != "children"]
-        if names:
-            get = operator.attrgetter(*names)
-            getter = (lambda n: (get(n),)) if len(names) == 1 else get
-        else:
-            getter = lambda n: ()  # noqa: E731
-        _SHALLOW[cls] = getter
-    values: tuple[Any, ...] = getter(node)
-    return values
+    return type(node).__node_info__.shallow(node)
 
 
 class Subtree:
@@ -263,14 +265,14 @@ class Subtree:
         while stack:
             forest = stack.pop()
             parts.append(len(forest))
-            for node in forest:
-                parts.append(hash((type(node), _shallow(node))))
-                if isinstance(node, Element):
-                    stack.append(node.children)
+            for item in forest:
+                parts.append(hash((type(item), _shallow(item))))
+                if isinstance(item, Element):
+                    stack.append(item.children)
         return hash(tuple(parts))
 
 
-@attrs.frozen(kw_only=True)
+@node
 class Element(Node):
     """Base of every element node, typed or generic."""
 
@@ -278,6 +280,9 @@ class Element(Node):
     children: tuple[Node, ...] = attrs.field(default=(), converter=to_children, eq=Subtree)
     #: Character data inside the element, unless it is only white space.
     text: str | None = attrs.field(default=None, validator=_optional_text)
+    #: How the element was written in its file (ignored by ``==``, ``hash`` and the dict
+    #: form); ``None`` for an element built in code.
+    layout: Layout | None = attrs.field(default=None, eq=False, repr=False)
 
     def _of_type(self, cls: type[_T]) -> tuple[_T, ...]:
         return tuple(c for c in self.children if isinstance(c, cls))
@@ -294,7 +299,7 @@ class Element(Node):
         return tuple(c for c in self.children if isinstance(c, (TypedElement, GenericElement)))
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TypedElement(Element):
     """Base of the typed element classes (``Geom``, ``Body``, ...).
 
@@ -306,7 +311,7 @@ class TypedElement(Element):
     #: The XML tag of this element type.
     tag: ClassVar[str]
     #: Attributes this class does not model, in source order, as text.
-    extra: AttributeMap = attrs.field(factory=AttributeMap, converter=to_attribute_map)
+    extra: AttributeMap = attrs.field(default=_EMPTY, converter=to_attribute_map)
     #: XML attribute names in the order they stood in the source (ignored by ``==``).
     attribute_order: tuple[str, ...] = attrs.field(default=(), eq=False, repr=False)
 
@@ -341,7 +346,7 @@ def _check_tag(_instance: Any, _attribute: Any, value: str) -> None:
     check_name(value, "tag")
 
 
-@attrs.frozen(kw_only=True)
+@node
 class GenericElement(Element):
     """An element without a typed class: future MJCF, plugins' configuration, ``visual``...
 
@@ -353,9 +358,9 @@ class GenericElement(Element):
     """
 
     #: The XML tag.
-    tag: str = attrs.field(validator=_check_tag)
+    tag: str = attrs.field(validator=_check_tag, kw_only=True)
     #: All attributes, as text, in source order.
-    attributes: AttributeMap = attrs.field(factory=AttributeMap, converter=to_attribute_map)
+    attributes: AttributeMap = attrs.field(default=_EMPTY, converter=to_attribute_map)
 
     def __repr__(self) -> str:
         return _tree_repr(self)
@@ -401,16 +406,6 @@ def _tree_repr(node: TypedElement | GenericElement) -> str:
 AnyElement = TypedElement | GenericElement
 _E = TypeVar("_E", bound=TypedElement | GenericElement)
 
-_BASE_FIELDS = frozenset({"children", "text", "extra", "attribute_order", "base_dir"})
-
-
-def xml_name(field: attrs.Attribute[Any]) -> str:
-    """The MJCF attribute name of a node field (``dclass`` is ``class``)."""
-    return str(field.metadata.get("xml", field.name))
-
-
-_FIELD_TABLES: dict[type[TypedElement], dict[str, str]] = {}
-
 
 def field_table(cls: type[TypedElement]) -> dict[str, str]:
     """Map each MJCF attribute name a typed class models to its field name.
@@ -421,34 +416,7 @@ def field_table(cls: type[TypedElement]) -> dict[str, str]:
         'dclass'
 
     """
-    table = _FIELD_TABLES.get(cls)
-    if table is None:
-        table = {xml_name(f): f.name for f in attrs.fields(cls) if f.name not in _BASE_FIELDS}
-        if "name" in table:  # the name first: it is what people look for
-            table = {"name": "name", **table}
-        _FIELD_TABLES[cls] = table
-    return table
-
-
-_GETTERS: dict[type[TypedElement], tuple[tuple[str, ...], Any]] = {}
-
-
-def _getter(cls: type[TypedElement]) -> tuple[tuple[str, ...], Any]:
-    """The MJCF names of a class's fields, and one getter reading all their values at once."""
-    found = _GETTERS.get(cls)
-    if found is None:
-        table = field_table(cls)
-        fields = tuple(table.values())
-        getter: Any
-        if len(fields) > 1:
-            getter = operator.attrgetter(*fields)
-        elif fields:
-            single = operator.attrgetter(fields[0])
-            getter = lambda element: (single(element),)  # noqa: E731
-        else:
-            getter = lambda element: ()  # noqa: E731
-        found = _GETTERS[cls] = (tuple(table), getter)
-    return found
+    return cls.__node_info__.table
 
 
 def attribute_items(element: AnyElement) -> list[tuple[str, Value]]:
@@ -465,9 +433,11 @@ def attribute_items(element: AnyElement) -> list[tuple[str, Value]]:
     """
     if isinstance(element, GenericElement):
         return list(element.attributes.items())
-    names, getter = _getter(type(element))
+    info = type(element).__node_info__
     values: dict[str, Value] = {
-        xml: value for xml, value in zip(names, getter(element), strict=True) if value is not None
+        xml: value
+        for xml, value in zip(info.names, info.getter(element), strict=True)
+        if value is not None
     }
     if element.extra:
         values.update(element.extra)

@@ -1,9 +1,14 @@
-"""Building typed nodes fast: one slot assignment per field, converting only given values.
+"""Building nodes fast: store the given fields, convert only what was given.
 
-attrs' generated ``__init__`` calls every field's converter; a typed class has
-dozens of fields and an element writes a few, so the readers and the transforms
-build nodes here instead. The result is the same object ``cls(**values)`` (or
-``attrs.evolve(base, **values)``) would give.
+attrs' generated ``__init__`` converts and stores every field; a typed class
+has dozens and an element writes a few. :func:`build_node` stores only the
+given fields in the instance's ``__dict__`` (absent ones read their default
+from the class, see :func:`~mjcf_model.declaring.node`), running each given
+field's converter and validator. It is an owned contract, checked by
+``tests/test_builders.py`` for every class of the registry: the result equals
+``cls(**values)``, or ``attrs.evolve(base, **values)`` when a base is given.
+:func:`~mjcf_model.declaring.node` refuses, when a class is declared, what the
+builder could not honour (``__attrs_post_init__``, slots, non-init fields).
 """
 
 from __future__ import annotations
@@ -11,92 +16,97 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any, TypeVar
 
-import attrs
-
 if TYPE_CHECKING:
-    from mjcf_model.base import TypedElement
+    from mjcf_model.base import Node
 
-__all__ = ["build_node"]
+__all__ = ["build_node", "fill_node"]
 
-_TE = TypeVar("_TE", bound="TypedElement")
-
-
-class _Plan:
-    """How to build instances of one typed class without attrs' generated ``__init__``.
-
-    Node values that were already converted (a transform copying fields) need no
-    conversion again, and fields left at their default need no converter call:
-    building a node then costs one assignment per field.
-    """
-
-    __slots__ = ("converters", "defaults", "slots", "validators")
-
-    def __init__(self, cls: type[TypedElement]) -> None:
-        #: Per field: the slot's setter and the field's default (converted).
-        self.defaults: list[tuple[Any, Any]] = []
-        #: Per field name: the slot descriptor (its ``__get__``/``__set__`` are the fastest way in).
-        self.slots: dict[str, Any] = {}
-        self.converters: dict[str, Any] = {}
-        self.validators: dict[str, Any] = {}
-        for field in attrs.fields(cls):
-            default = field.default
-            factory = getattr(default, "factory", None)
-            if callable(factory) and hasattr(default, "takes_self"):  # an attrs Factory
-                default = factory()
-            elif field.converter is not None and default is not None:
-                default = field.converter(default)
-            slot = next(c.__dict__[field.name] for c in cls.__mro__ if field.name in c.__dict__)
-            self.slots[field.name] = slot
-            self.defaults.append((slot.__set__, default))
-            if field.converter is not None:
-                self.converters[field.name] = field.converter
-            if field.validator is not None:
-                self.validators[field.name] = (field.validator, field)
+_N = TypeVar("_N", bound="Node")
+_set_dict = object.__setattr__
 
 
-_PLANS: dict[type[TypedElement], _Plan] = {}
-
-
-def _plan(cls: type[TypedElement]) -> _Plan:
-    plan = _PLANS.get(cls)
-    if plan is None:
-        plan = _PLANS[cls] = _Plan(cls)
-    return plan
-
-
-def build_node(cls: type[_TE], values: Mapping[str, Any], base: _TE | None = None) -> _TE:
+def build_node(
+    cls: type[_N],
+    values: Mapping[str, Any],
+    base: _N | None = None,
+    *,
+    memo: dict[tuple[Any, str], Any] | None = None,
+) -> _N:
     """A ``cls`` node with field ``values`` converted and validated, the rest from ``base``.
 
-    The same result as ``cls(**values)`` (or ``attrs.evolve(base, **values)``) for
-    values of the fields' types, without running every field's converter: the
-    readers and transforms build nodes this way. ``children`` must be a sequence
-    of nodes already (it is not checked again).
+    The same result as ``cls(**values)`` (or ``attrs.evolve(base, **values)``),
+    storing only the fields that differ from their default. ``children`` must be
+    a sequence of nodes already (it is not checked again). A reader passes one
+    ``memo`` dict per document: text met twice (``pos="0 0 0"``) is converted
+    once, and the nodes share the value.
 
     Example:
         >>> from mjcf_model import Geom
         >>> g = build_node(Geom, {"size": "0.1 0.2"})
         >>> g == Geom(size=[0.1, 0.2]), build_node(Geom, {"name": "g"}, g).size
         (True, (0.1, 0.2))
+        >>> build_node(Geom, {"colour": "red"})
+        Traceback (most recent call last):
+        ...
+        TypeError: Geom has no field 'colour'
 
     """
-    plan = _plan(cls)
     node = object.__new__(cls)
-    if base is None:
-        for setter, default in plan.defaults:
-            setter(node, default)
-    else:
-        for slot in plan.slots.values():
-            slot.__set__(node, slot.__get__(base))
-    converters, validators, slots = plan.converters, plan.validators, plan.slots
+    fill_node(node, values, base, checked_children=False, memo=memo)
+    return node
+
+
+def fill_node(
+    node: Node,
+    values: Mapping[str, Any],
+    base: Node | None,
+    *,
+    checked_children: bool,
+    memo: dict[tuple[Any, str], Any] | None = None,
+) -> None:
+    """Give the new ``node`` its fields: ``values`` converted and validated, the rest from ``base``.
+
+    The one place nodes are filled: :func:`build_node` and the constructor of
+    every node class (see :func:`~mjcf_model.declaring.node`) both call it.
+    ``checked_children`` runs the ``children`` converter (the constructor does;
+    the readers and transforms pass tuples of nodes they built); ``memo`` keeps
+    the converted value of each text (see :func:`build_node`).
+
+    Example:
+        >>> from mjcf_model import Site
+        >>> site = object.__new__(Site)
+        >>> fill_node(site, {"name": "tip"}, None, checked_children=True)
+        >>> site.name, vars(site)
+        ('tip', {'name': 'tip'})
+
+    """
+    cls = type(node)
+    info = cls.__node_info__
+    data: dict[str, Any] = {} if base is None else base.__dict__.copy()
+    converters, validators, defaults = info.converters, info.validators, info.defaults
     for name, value in values.items():
-        if name == "children":
+        if name == "children" and not checked_children:
             value = value if isinstance(value, tuple) else tuple(value)
         else:
             converter = converters.get(name)
-            if converter is not None:
+            if converter is None:
+                if name not in info.field_names:
+                    raise TypeError(f"{cls.__name__} has no field {name!r}")
+            elif memo is not None and type(value) is str:
+                key = (converter, value)
+                converted = memo.get(key, memo)
+                if converted is memo:
+                    converted = memo[key] = converter(value)
+                value = converted
+            else:
                 value = converter(value)
         checks = validators.get(name)
         if checks is not None:
             checks[0](node, checks[1], value)
-        slots[name].__set__(node, value)
-    return node
+        if value is None and defaults.get(name, ...) is None:
+            data.pop(name, None)
+        else:
+            data[name] = value
+    if base is None and info.required and not info.required <= data.keys():
+        raise TypeError(f"{cls.__name__} needs {', '.join(sorted(info.required - data.keys()))}")
+    _set_dict(node, "__dict__", data)

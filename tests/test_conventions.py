@@ -25,6 +25,7 @@ from mjcf_model.conventions import (
     compiler_settings,
     in_conventions,
 )
+from mjcf_model.declaring import BASE_FIELDS
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.namespaces import SCHEMA
 from mjcf_model.nodes.compiler import Compiler
@@ -344,8 +345,7 @@ def test_the_settings_lists_cover_every_compiler_setting() -> None:
     """Each compiler attribute and child element is converted, a path, or model-wide."""
     listed = set(CONVERTED_SETTINGS) | PATH_SETTINGS | MODEL_WIDE_SETTINGS
     children = {key.split("/")[1] for key in SCHEMA if key.startswith("compiler/")}
-    fields = {f.name for f in attrs.fields(Compiler) if f.name not in ("children", "text")}
-    fields -= {"extra", "attribute_order"}
+    fields = {f.name for f in attrs.fields(Compiler)} - BASE_FIELDS
     assert listed == fields | children
     assert listed == set(SCHEMA["compiler"].attributes) | children
     installed = printed_schema()

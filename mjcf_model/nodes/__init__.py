@@ -42,26 +42,9 @@ from mjcf_model.nodes.body import (
     TreeViews,
     Worldbody,
 )
-from mjcf_model.nodes.compiler import (
-    Compiler,
-    LengthRange,
-    Option,
-    OptionFlag,
-    Size,
-    Statistic,
-)
-from mjcf_model.nodes.contact import (
-    Contact,
-    Exclude,
-    Pair,
-)
-from mjcf_model.nodes.custom import (
-    Custom,
-    Numeric,
-    Text,
-    Tuple,
-    TupleElement,
-)
+from mjcf_model.nodes.compiler import Compiler, LengthRange, Option, OptionFlag, Size, Statistic
+from mjcf_model.nodes.contact import Contact, Exclude, Pair
+from mjcf_model.nodes.custom import Custom, Numeric, Text, Tuple, TupleElement
 from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.deformable import (
     Deformable,
@@ -85,17 +68,8 @@ from mjcf_model.nodes.equality import (
     EqualityTendon,
     Weld,
 )
-from mjcf_model.nodes.geom import (
-    Camera,
-    Geom,
-    Light,
-    Oriented,
-    Site,
-)
-from mjcf_model.nodes.keyframe import (
-    Key,
-    Keyframe,
-)
+from mjcf_model.nodes.geom import Camera, Geom, Light, Oriented, Site
+from mjcf_model.nodes.keyframe import Key, Keyframe
 from mjcf_model.nodes.plugin import (
     Extension,
     ExtensionPlugin,
@@ -104,10 +78,7 @@ from mjcf_model.nodes.plugin import (
     PluginInstance,
     PluginUse,
 )
-from mjcf_model.nodes.root import (
-    Include,
-    Mujoco,
-)
+from mjcf_model.nodes.root import Include, Mujoco
 from mjcf_model.nodes.sensor import (
     Accelerometer,
     ActuatorFrc,

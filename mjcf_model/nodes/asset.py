@@ -8,23 +8,21 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.values import (
-    Floats,
-    Ints,
-    float_key,
-    to_bool,
-    to_float,
-    to_floats,
-    to_int,
-    to_ints,
-    to_str,
-    to_vec2,
-    to_vec3,
-    to_vec4,
+from mjcf_model.declaring import (
+    boolean,
+    integer,
+    integers,
+    node,
+    number,
+    numbers,
+    reference,
+    text,
+    vec2,
+    vec3,
+    vec4,
 )
+from mjcf_model.values import Floats, Ints
 
 __all__ = [
     "Asset",
@@ -39,11 +37,12 @@ __all__ = [
 ]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Asset(TypedElement):
     """Section of assets: meshes, textures, materials, height fields, skins, models."""
 
     tag: ClassVar[str] = "asset"
+    schema_keys: ClassVar[tuple[str, ...]] = ("asset",)
 
     @property
     def meshes(self) -> tuple[Mesh, ...]:
@@ -76,219 +75,227 @@ class Asset(TypedElement):
         return self._of_type(Model)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Mesh(TypedElement):
     """A mesh asset, from a file, inline vertices or a built-in shape."""
 
     tag: ClassVar[str] = "mesh"
+    schema_keys: ClassVar[tuple[str, ...]] = ("asset/mesh", "default/mesh")
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+    dclass: str | None = reference("class", xml="class")
     #: Procedurally generated content.
-    builtin: str | None = attrs.field(default=None, converter=to_str)
+    builtin: str | None = text()
     #: MIME type of the file.
-    content_type: str | None = attrs.field(default=None, converter=to_str)
+    content_type: str | None = text()
     #: Face vertex indices.
-    face: Ints | None = attrs.field(default=None, converter=to_ints)
+    face: Ints | None = integers()
     #: File name, relative to the model (or asset) directory.
-    file: str | None = attrs.field(default=None, converter=to_str)
+    file: str | None = text()
     #: How inertia is computed from the mesh.
-    inertia: str | None = attrs.field(default=None, converter=to_str)
+    inertia: str | None = text()
     #: Name of the material asset used for rendering.
-    material: str | None = attrs.field(default=None, converter=to_str)
+    material: str | None = reference("material")
     #: Maximum number of convex-hull vertices.
-    maxhullvert: int | None = attrs.field(default=None, converter=to_int)
+    maxhullvert: int | None = integer()
     #: Vertex normals.
-    normal: Floats | None = attrs.field(default=None, converter=to_floats)
+    normal: Floats | None = numbers()
     #: Parameters of a built-in mesh.
-    params: str | None = attrs.field(default=None, converter=to_str)
+    params: str | None = text()
     #: Reference position the mesh vertices are expressed relative to.
-    refpos: Floats | None = attrs.field(default=None, converter=to_vec3)
+    refpos: Floats | None = vec3()
     #: Reference orientation of the mesh vertices.
-    refquat: Floats | None = attrs.field(default=None, converter=to_vec4)
+    refquat: Floats | None = vec4()
     #: Scale factor(s).
-    scale: Floats | None = attrs.field(default=None, converter=to_vec3)
+    scale: Floats | None = vec3()
     #: Whether to smooth normals.
-    smoothnormal: str | None = attrs.field(default=None, converter=to_str)
+    smoothnormal: str | None = text()
     #: Texture coordinates.
-    texcoord: Floats | None = attrs.field(default=None, converter=to_floats)
+    texcoord: Floats | None = numbers()
     #: Vertex coordinates.
-    vertex: Floats | None = attrs.field(default=None, converter=to_floats)
+    vertex: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Hfield(TypedElement):
     """A height-field asset."""
 
     tag: ClassVar[str] = "hfield"
+    schema_keys: ClassVar[tuple[str, ...]] = ("asset/hfield",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Size parameters; their number and meaning depend on ``type``.
-    size: Floats | None = attrs.field(default=None, converter=to_vec4)
+    size: Floats | None = vec4()
     #: MIME type of the file.
-    content_type: str | None = attrs.field(default=None, converter=to_str)
+    content_type: str | None = text()
     #: Elevation data.
-    elevation: str | None = attrs.field(default=None, converter=to_str)
+    elevation: str | None = text()
     #: File name, relative to the model (or asset) directory.
-    file: str | None = attrs.field(default=None, converter=to_str)
+    file: str | None = text()
     #: Number of columns of elevation data.
-    ncol: int | None = attrs.field(default=None, converter=to_int)
+    ncol: int | None = integer()
     #: Number of rows of elevation data.
-    nrow: int | None = attrs.field(default=None, converter=to_int)
+    nrow: int | None = integer()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Skin(TypedElement):
     """A skinned mesh deformed by bones."""
 
     tag: ClassVar[str] = "skin"
+    schema_keys: ClassVar[tuple[str, ...]] = ("asset/skin", "deformable/skin")
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Face vertex indices.
-    face: Ints | None = attrs.field(default=None, converter=to_ints)
+    face: Ints | None = integers()
     #: File name, relative to the model (or asset) directory.
-    file: str | None = attrs.field(default=None, converter=to_str)
+    file: str | None = text()
     #: Integer group, used for visualization filters and by convention.
-    group: int | None = attrs.field(default=None, converter=to_int)
+    group: int | None = integer()
     #: Distance by which skin vertices are pushed out along their normals.
-    inflate: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    inflate: float | None = number()
     #: Name of the material asset used for rendering.
-    material: str | None = attrs.field(default=None, converter=to_str)
+    material: str | None = reference("material")
     #: Colour and transparency (r, g, b, a).
-    rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
+    rgba: Floats | None = vec4()
     #: Texture coordinates.
-    texcoord: Floats | None = attrs.field(default=None, converter=to_floats)
+    texcoord: Floats | None = numbers()
     #: Vertex coordinates.
-    vertex: Floats | None = attrs.field(default=None, converter=to_floats)
+    vertex: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Bone(TypedElement):
     """A bone of a skin: a body and the vertices it moves."""
 
     tag: ClassVar[str] = "bone"
+    schema_keys: ClassVar[tuple[str, ...]] = ("asset/skin/bone", "deformable/skin/bone")
     #: Bind position of the bone.
-    bindpos: Floats | None = attrs.field(default=None, converter=to_floats)
+    bindpos: Floats | None = numbers()
     #: Bind orientation of the bone.
-    bindquat: Floats | None = attrs.field(default=None, converter=to_vec4)
+    bindquat: Floats | None = vec4()
     #: Name of the body.
-    body: str | None = attrs.field(default=None, converter=to_str)
+    body: str | None = reference("body")
     #: Indices of the skin vertices this bone moves.
-    vertid: Ints | None = attrs.field(default=None, converter=to_ints)
+    vertid: Ints | None = integers()
     #: Weights of the skin vertices this bone moves.
-    vertweight: Floats | None = attrs.field(default=None, converter=to_floats)
+    vertweight: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Texture(TypedElement):
     """A texture asset, from files or built in."""
 
     tag: ClassVar[str] = "texture"
+    schema_keys: ClassVar[tuple[str, ...]] = ("asset/texture", "default/texture")
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+    dclass: str | None = reference("class", xml="class")
     #: Element type keyword.
-    type: str | None = attrs.field(default=None, converter=to_str)
+    type: str | None = text()
     #: Procedurally generated content.
-    builtin: str | None = attrs.field(default=None, converter=to_str)
+    builtin: str | None = text()
     #: Colour space of the image.
-    colorspace: str | None = attrs.field(default=None, converter=to_str)
+    colorspace: str | None = text()
     #: MIME type of the file.
-    content_type: str | None = attrs.field(default=None, converter=to_str)
+    content_type: str | None = text()
     #: Whether the image is embedded in compiled output.
-    embed: str | None = attrs.field(default=None, converter=to_str)
+    embed: str | None = text()
     #: File name, relative to the model (or asset) directory.
-    file: str | None = attrs.field(default=None, converter=to_str)
+    file: str | None = text()
     #: File of the back face of a cube texture.
-    fileback: str | None = attrs.field(default=None, converter=to_str)
+    fileback: str | None = text()
     #: File of the down face of a cube texture.
-    filedown: str | None = attrs.field(default=None, converter=to_str)
+    filedown: str | None = text()
     #: File of the front face of a cube texture.
-    filefront: str | None = attrs.field(default=None, converter=to_str)
+    filefront: str | None = text()
     #: File of the left face of a cube texture.
-    fileleft: str | None = attrs.field(default=None, converter=to_str)
+    fileleft: str | None = text()
     #: File of the right face of a cube texture.
-    fileright: str | None = attrs.field(default=None, converter=to_str)
+    fileright: str | None = text()
     #: File of the up face of a cube texture.
-    fileup: str | None = attrs.field(default=None, converter=to_str)
+    fileup: str | None = text()
     #: Layout of the faces in the grid.
-    gridlayout: str | None = attrs.field(default=None, converter=to_str)
+    gridlayout: str | None = text()
     #: Grid size of a cube or skybox texture in one file.
-    gridsize: Ints | None = attrs.field(default=None, converter=to_ints)
+    gridsize: Ints | None = integers()
     #: Height.
-    height: int | None = attrs.field(default=None, converter=to_int)
+    height: int | None = integer()
     #: Whether to flip the image horizontally.
-    hflip: bool | None = attrs.field(default=None, converter=to_bool)
+    hflip: bool | None = boolean()
     #: Marking of a built-in texture.
-    mark: str | None = attrs.field(default=None, converter=to_str)
+    mark: str | None = text()
     #: Colour of the marking.
-    markrgb: Floats | None = attrs.field(default=None, converter=to_vec3)
+    markrgb: Floats | None = vec3()
     #: Number of colour channels.
-    nchannel: int | None = attrs.field(default=None, converter=to_int)
+    nchannel: int | None = integer()
     #: Probability of random dots in a built-in texture.
-    random: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    random: float | None = number()
     #: First colour of a built-in texture.
-    rgb1: Floats | None = attrs.field(default=None, converter=to_vec3)
+    rgb1: Floats | None = vec3()
     #: Second colour of a built-in texture.
-    rgb2: Floats | None = attrs.field(default=None, converter=to_vec3)
+    rgb2: Floats | None = vec3()
     #: Whether to flip the image vertically.
-    vflip: bool | None = attrs.field(default=None, converter=to_bool)
+    vflip: bool | None = boolean()
     #: Width.
-    width: int | None = attrs.field(default=None, converter=to_int)
+    width: int | None = integer()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Material(TypedElement):
     """A material asset."""
 
     tag: ClassVar[str] = "material"
+    schema_keys: ClassVar[tuple[str, ...]] = ("asset/material", "default/material")
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+    dclass: str | None = reference("class", xml="class")
     #: Emission, as a multiple of the colour.
-    emission: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    emission: float | None = number()
     #: Metallic value for physically based rendering.
-    metallic: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    metallic: float | None = number()
     #: Reflectance.
-    reflectance: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    reflectance: float | None = number()
     #: Colour and transparency (r, g, b, a).
-    rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
+    rgba: Floats | None = vec4()
     #: Roughness value for physically based rendering.
-    roughness: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    roughness: float | None = number()
     #: Shininess.
-    shininess: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    shininess: float | None = number()
     #: Specular colour or intensity.
-    specular: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    specular: float | None = number()
     #: How many times the texture repeats.
-    texrepeat: Floats | None = attrs.field(default=None, converter=to_vec2)
+    texrepeat: Floats | None = vec2()
     #: Name of the texture asset.
-    texture: str | None = attrs.field(default=None, converter=to_str)
+    texture: str | None = reference("texture")
     #: Whether texture repetition is in world units.
-    texuniform: bool | None = attrs.field(default=None, converter=to_bool)
+    texuniform: bool | None = boolean()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class MaterialLayer(TypedElement):
     """A texture layer of a material."""
 
     tag: ClassVar[str] = "layer"
+    schema_keys: ClassVar[tuple[str, ...]] = ("asset/material/layer", "default/material/layer")
     #: Role of the texture layer.
-    role: str | None = attrs.field(default=None, converter=to_str)
+    role: str | None = text()
     #: Name of the texture asset.
-    texture: str | None = attrs.field(default=None, converter=to_str)
+    texture: str | None = reference("texture")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Model(TypedElement):
     """A model asset (another MJCF file) for ``<attach>``."""
 
     tag: ClassVar[str] = "model"
+    schema_keys: ClassVar[tuple[str, ...]] = ("asset/model",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: MIME type of the file.
-    content_type: str | None = attrs.field(default=None, converter=to_str)
+    content_type: str | None = text()
     #: File name, relative to the model (or asset) directory.
-    file: str | None = attrs.field(default=None, converter=to_str)
+    file: str | None = text()

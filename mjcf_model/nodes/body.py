@@ -10,26 +10,25 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import Node, TypedElement
+from mjcf_model.declaring import (
+    boolean,
+    integer,
+    keyword,
+    node,
+    number,
+    numbers,
+    reference,
+    text,
+    vec1to2,
+    vec1to5,
+    vec2,
+    vec3,
+    vec6,
+)
 from mjcf_model.keywords import JOINT_TYPES, LIMITED
 from mjcf_model.nodes.geom import Camera, Geom, Light, Oriented, Site
-from mjcf_model.values import (
-    Floats,
-    float_key,
-    one_of,
-    to_bool,
-    to_float,
-    to_floats,
-    to_int,
-    to_str,
-    to_vec1to2,
-    to_vec1to5,
-    to_vec2,
-    to_vec3,
-    to_vec6,
-)
+from mjcf_model.values import Floats
 
 __all__ = [
     "Attach",
@@ -90,134 +89,138 @@ class TreeViews:
         return tuple(c for c in self.children if isinstance(c, Frame))
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Inertial(Oriented):
     """Mass and inertia of a body."""
 
     tag: ClassVar[str] = "inertial"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/inertial",)
     #: Diagonal of the inertia matrix in the inertial frame.
-    diaginertia: Floats | None = attrs.field(default=None, converter=to_vec3)
+    diaginertia: Floats | None = vec3()
     #: Full inertia matrix (ixx iyy izz ixy ixz iyz).
-    fullinertia: Floats | None = attrs.field(default=None, converter=to_vec6)
+    fullinertia: Floats | None = vec6()
     #: Mass.
-    mass: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    mass: float | None = number()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Joint(TypedElement):
     """A joint: a degree of freedom between a body and its parent."""
 
     tag: ClassVar[str] = "joint"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/joint", "default/joint")
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+    dclass: str | None = reference("class", xml="class")
     #: Element type keyword.
-    type: str | None = attrs.field(default=None, converter=to_str, validator=one_of(JOINT_TYPES))
+    type: str | None = keyword(JOINT_TYPES)
     #: Position (x, y, z) in the parent frame, in length units.
-    pos: Floats | None = attrs.field(default=None, converter=to_vec3)
+    pos: Floats | None = vec3()
     #: Whether the total actuator force is clamped: ``true``, ``false`` or ``auto``.
-    actuatorfrclimited: str | None = attrs.field(
-        default=None, converter=to_str, validator=one_of(LIMITED)
-    )
+    actuatorfrclimited: str | None = keyword(LIMITED)
     #: Range of the total actuator force.
-    actuatorfrcrange: Floats | None = attrs.field(default=None, converter=to_vec2)
+    actuatorfrcrange: Floats | None = vec2()
     #: Whether gravity compensation counts as actuator force.
-    actuatorgravcomp: bool | None = attrs.field(default=None, converter=to_bool)
+    actuatorgravcomp: bool | None = boolean()
     #: Armature inertia added to the degree of freedom.
-    armature: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    armature: float | None = number()
     #: Rotation or translation axis.
-    axis: Floats | None = attrs.field(default=None, converter=to_vec3)
+    axis: Floats | None = vec3()
     #: Damping (coefficients of a polynomial in MuJoCo 4).
-    damping: Floats | None = attrs.field(default=None, converter=to_floats)
+    damping: Floats | None = numbers()
     #: Dry friction loss.
-    frictionloss: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    frictionloss: float | None = number()
     #: Integer group, used for visualization filters and by convention.
-    group: int | None = attrs.field(default=None, converter=to_int)
+    group: int | None = integer()
     #: Whether limits apply: ``true``, ``false`` or ``auto``.
-    limited: str | None = attrs.field(default=None, converter=to_str, validator=one_of(LIMITED))
+    limited: str | None = keyword(LIMITED)
     #: Distance at which contacts (or limits) become active.
-    margin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    margin: float | None = number()
     #: Lower and upper limits.
-    range: Floats | None = attrs.field(default=None, converter=to_vec2)
+    range: Floats | None = vec2()
     #: Reference position or angle of the joint.
-    ref: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    ref: float | None = number()
     #: Solver impedance parameters of the friction constraint.
-    solimpfriction: Floats | None = attrs.field(default=None, converter=to_vec1to5)
+    solimpfriction: Floats | None = vec1to5()
     #: Solver impedance parameters of the limit constraint.
-    solimplimit: Floats | None = attrs.field(default=None, converter=to_vec1to5)
+    solimplimit: Floats | None = vec1to5()
     #: Solver reference parameters of the friction constraint.
-    solreffriction: Floats | None = attrs.field(default=None, converter=to_vec1to2)
+    solreffriction: Floats | None = vec1to2()
     #: Solver reference parameters of the limit constraint.
-    solreflimit: Floats | None = attrs.field(default=None, converter=to_vec1to2)
+    solreflimit: Floats | None = vec1to2()
     #: Spring-damper given as time constant and damping ratio.
-    springdamper: Floats | None = attrs.field(default=None, converter=to_vec2)
+    springdamper: Floats | None = vec2()
     #: Joint position at which the spring force is zero.
-    springref: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    springref: float | None = number()
     #: Yield threshold of the spring.
-    springyield: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    springyield: float | None = number()
     #: Spring stiffness (coefficients of a polynomial in MuJoCo 4).
-    stiffness: Floats | None = attrs.field(default=None, converter=to_floats)
+    stiffness: Floats | None = numbers()
     #: Custom user data (numbers).
-    user: Floats | None = attrs.field(default=None, converter=to_floats)
+    user: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FreeJoint(TypedElement):
     """A free joint: six degrees of freedom."""
 
     tag: ClassVar[str] = "freejoint"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/freejoint",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Whether the free joint's body frame is aligned with its inertia frame.
-    align: str | None = attrs.field(default=None, converter=to_str)
+    align: str | None = text()
     #: Integer group, used for visualization filters and by convention.
-    group: int | None = attrs.field(default=None, converter=to_int)
+    group: int | None = integer()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Attach(TypedElement):
     """Attaches a body of a model asset here."""
 
     tag: ClassVar[str] = "attach"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/attach",)
     #: Name of the body.
-    body: str | None = attrs.field(default=None, converter=to_str)
+    body: str | None = text()
     #: Name of the frame to attach.
-    frame: str | None = attrs.field(default=None, converter=to_str)
+    frame: str | None = text()
     #: Name of the model asset.
-    model: str | None = attrs.field(default=None, converter=to_str)
+    model: str | None = reference("model")
     #: Prefix added to the names of the attached elements.
-    prefix: str | None = attrs.field(default=None, converter=to_str)
+    prefix: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Worldbody(TypedElement, TreeViews):
     """The world body: root of the kinematic tree."""
 
     tag: ClassVar[str] = "worldbody"
+    schema_keys: ClassVar[tuple[str, ...]] = ("worldbody",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Body(Oriented, TreeViews):
     """A rigid body."""
 
     tag: ClassVar[str] = "body"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class for all descendants that do not set their own ``class``.
-    childclass: str | None = attrs.field(default=None, converter=to_str)
+    childclass: str | None = reference("class")
     #: Whether this static body may be fused into its parent.
-    fuse: str | None = attrs.field(default=None, converter=to_str)
+    fuse: str | None = text()
     #: Gravity compensation factor.
-    gravcomp: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    gravcomp: float | None = number()
     #: Whether this is a mocap body.
-    mocap: bool | None = attrs.field(default=None, converter=to_bool)
+    mocap: bool | None = boolean()
     #: Simplification hint for the body.
-    simple: str | None = attrs.field(default=None, converter=to_str)
+    simple: str | None = text()
     #: Sleep policy of the body's tree.
-    sleep: str | None = attrs.field(default=None, converter=to_str)
+    sleep: str | None = text()
     #: Custom user data (numbers).
-    user: Floats | None = attrs.field(default=None, converter=to_floats)
+    user: Floats | None = numbers()
 
     @property
     def inertial(self) -> Inertial | None:
@@ -225,27 +228,29 @@ class Body(Oriented, TreeViews):
         return self._first(Inertial)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Frame(Oriented, TreeViews):
     """A coordinate frame that places its children; not a body."""
 
     tag: ClassVar[str] = "frame"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/frame",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class for all descendants that do not set their own ``class``.
-    childclass: str | None = attrs.field(default=None, converter=to_str)
+    childclass: str | None = reference("class")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Replicate(TypedElement, TreeViews):
     """Repeats its children with an offset and rotation."""
 
     tag: ClassVar[str] = "replicate"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/replicate",)
     #: Orientation as Euler angles in the compiler's ``eulerseq``.
-    euler: Floats | None = attrs.field(default=None, converter=to_vec3)
+    euler: Floats | None = vec3()
     #: Number of repetitions or grid points.
-    count: int | None = attrs.field(default=None, converter=to_int)
+    count: int | None = integer()
     #: Translation between consecutive copies.
-    offset: Floats | None = attrs.field(default=None, converter=to_vec3)
+    offset: Floats | None = vec3()
     #: Separator between a name and the copy index.
-    sep: str | None = attrs.field(default=None, converter=to_str)
+    sep: str | None = text()

@@ -8,279 +8,282 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.values import (
-    Floats,
-    Ints,
-    float_key,
-    to_float,
-    to_floats,
-    to_int,
-    to_ints,
-    to_str,
-    to_vec1to2,
-    to_vec1to5,
-    to_vec3,
+from mjcf_model.declaring import (
+    integer,
+    integers,
+    node,
+    number,
+    numbers,
+    text,
+    vec1to2,
+    vec1to5,
+    vec3,
 )
+from mjcf_model.values import Floats, Ints
 
 __all__ = ["Compiler", "LengthRange", "Option", "OptionFlag", "Size", "Statistic"]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Compiler(TypedElement):
     """Compiler settings: angle units, asset directories, inertia handling."""
 
     tag: ClassVar[str] = "compiler"
+    schema_keys: ClassVar[tuple[str, ...]] = ("compiler",)
     #: Compiler setting ``alignfree``; see the MuJoCo XML reference.
-    alignfree: str | None = attrs.field(default=None, converter=to_str)
+    alignfree: str | None = text()
     #: Compiler setting ``angle``; see the MuJoCo XML reference.
-    angle: str | None = attrs.field(default=None, converter=to_str)
+    angle: str | None = text()
     #: Compiler setting ``assetdir``; see the MuJoCo XML reference.
-    assetdir: str | None = attrs.field(default=None, converter=to_str)
+    assetdir: str | None = text()
     #: Compiler setting ``autolimits``; see the MuJoCo XML reference.
-    autolimits: str | None = attrs.field(default=None, converter=to_str)
+    autolimits: str | None = text()
     #: Compiler setting ``balanceinertia``; see the MuJoCo XML reference.
-    balanceinertia: str | None = attrs.field(default=None, converter=to_str)
+    balanceinertia: str | None = text()
     #: Compiler setting ``boundinertia``; see the MuJoCo XML reference.
-    boundinertia: str | None = attrs.field(default=None, converter=to_str)
+    boundinertia: str | None = text()
     #: Compiler setting ``boundmass``; see the MuJoCo XML reference.
-    boundmass: str | None = attrs.field(default=None, converter=to_str)
+    boundmass: str | None = text()
     #: Compiler setting ``conflict``; see the MuJoCo XML reference.
-    conflict: str | None = attrs.field(default=None, converter=to_str)
+    conflict: str | None = text()
     #: Compiler setting ``coordinate``; see the MuJoCo XML reference.
-    coordinate: str | None = attrs.field(default=None, converter=to_str)
+    coordinate: str | None = text()
     #: Compiler setting ``discardvisual``; see the MuJoCo XML reference.
-    discardvisual: str | None = attrs.field(default=None, converter=to_str)
+    discardvisual: str | None = text()
     #: Compiler setting ``eulerseq``; see the MuJoCo XML reference.
-    eulerseq: str | None = attrs.field(default=None, converter=to_str)
+    eulerseq: str | None = text()
     #: Compiler setting ``fitaabb``; see the MuJoCo XML reference.
-    fitaabb: str | None = attrs.field(default=None, converter=to_str)
+    fitaabb: str | None = text()
     #: Compiler setting ``fusestatic``; see the MuJoCo XML reference.
-    fusestatic: str | None = attrs.field(default=None, converter=to_str)
+    fusestatic: str | None = text()
     #: Compiler setting ``inertiafromgeom``; see the MuJoCo XML reference.
-    inertiafromgeom: str | None = attrs.field(default=None, converter=to_str)
+    inertiafromgeom: str | None = text()
     #: Compiler setting ``inertiagrouprange``; see the MuJoCo XML reference.
-    inertiagrouprange: str | None = attrs.field(default=None, converter=to_str)
+    inertiagrouprange: str | None = text()
     #: Compiler setting ``meshdir``; see the MuJoCo XML reference.
-    meshdir: str | None = attrs.field(default=None, converter=to_str)
+    meshdir: str | None = text()
     #: Compiler setting ``passthrough``; see the MuJoCo XML reference.
-    passthrough: str | None = attrs.field(default=None, converter=to_str)
+    passthrough: str | None = text()
     #: Compiler setting ``savecanonical``; see the MuJoCo XML reference.
-    savecanonical: str | None = attrs.field(default=None, converter=to_str)
+    savecanonical: str | None = text()
     #: Compiler setting ``savecompiled``; see the MuJoCo XML reference.
-    savecompiled: str | None = attrs.field(default=None, converter=to_str)
+    savecompiled: str | None = text()
     #: Compiler setting ``saveinertial``; see the MuJoCo XML reference.
-    saveinertial: str | None = attrs.field(default=None, converter=to_str)
+    saveinertial: str | None = text()
     #: Compiler setting ``settotalmass``; see the MuJoCo XML reference.
-    settotalmass: str | None = attrs.field(default=None, converter=to_str)
+    settotalmass: str | None = text()
     #: Compiler setting ``strippath``; see the MuJoCo XML reference.
-    strippath: str | None = attrs.field(default=None, converter=to_str)
+    strippath: str | None = text()
     #: Compiler setting ``texturedir``; see the MuJoCo XML reference.
-    texturedir: str | None = attrs.field(default=None, converter=to_str)
+    texturedir: str | None = text()
     #: Compiler setting ``usethread``; see the MuJoCo XML reference.
-    usethread: str | None = attrs.field(default=None, converter=to_str)
+    usethread: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class LengthRange(TypedElement):
     """How actuator length ranges are computed."""
 
     tag: ClassVar[str] = "lengthrange"
+    schema_keys: ClassVar[tuple[str, ...]] = ("compiler/lengthrange",)
     #: Compiler setting ``accel``; see the MuJoCo XML reference.
-    accel: str | None = attrs.field(default=None, converter=to_str)
+    accel: str | None = text()
     #: Sampling interval (and phase).
-    interval: str | None = attrs.field(default=None, converter=to_str)
+    interval: str | None = text()
     #: Compiler setting ``inttotal``; see the MuJoCo XML reference.
-    inttotal: str | None = attrs.field(default=None, converter=to_str)
+    inttotal: str | None = text()
     #: Compiler setting ``maxforce``; see the MuJoCo XML reference.
-    maxforce: str | None = attrs.field(default=None, converter=to_str)
+    maxforce: str | None = text()
     #: How the element tracks its target (``fixed``, ``track``, ``trackcom``, ...).
-    mode: str | None = attrs.field(default=None, converter=to_str)
+    mode: str | None = text()
     #: Time constant(s).
-    timeconst: str | None = attrs.field(default=None, converter=to_str)
+    timeconst: str | None = text()
     #: Compiler setting ``timestep``; see the MuJoCo XML reference.
-    timestep: str | None = attrs.field(default=None, converter=to_str)
+    timestep: str | None = text()
     #: Compiler setting ``tolrange``; see the MuJoCo XML reference.
-    tolrange: str | None = attrs.field(default=None, converter=to_str)
+    tolrange: str | None = text()
     #: Compiler setting ``useexisting``; see the MuJoCo XML reference.
-    useexisting: str | None = attrs.field(default=None, converter=to_str)
+    useexisting: str | None = text()
     #: Compiler setting ``uselimit``; see the MuJoCo XML reference.
-    uselimit: str | None = attrs.field(default=None, converter=to_str)
+    uselimit: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Option(TypedElement):
     """Simulation options: timestep, gravity, solver, integrator."""
 
     tag: ClassVar[str] = "option"
+    schema_keys: ClassVar[tuple[str, ...]] = ("option",)
     #: Simulation option ``actuatorgroupdisable``; see the MuJoCo XML reference.
-    actuatorgroupdisable: Ints | None = attrs.field(default=None, converter=to_ints)
+    actuatorgroupdisable: Ints | None = integers()
     #: Simulation option ``ccd_iterations``; see the MuJoCo XML reference.
-    ccd_iterations: int | None = attrs.field(default=None, converter=to_int)
+    ccd_iterations: int | None = integer()
     #: Simulation option ``ccd_tolerance``; see the MuJoCo XML reference.
-    ccd_tolerance: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    ccd_tolerance: float | None = number()
     #: Simulation option ``cone``; see the MuJoCo XML reference.
-    cone: str | None = attrs.field(default=None, converter=to_str)
+    cone: str | None = text()
     #: Density used to compute mass from volume.
-    density: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    density: float | None = number()
     #: Simulation option ``gravity``; see the MuJoCo XML reference.
-    gravity: Floats | None = attrs.field(default=None, converter=to_vec3)
+    gravity: Floats | None = vec3()
     #: Simulation option ``impratio``; see the MuJoCo XML reference.
-    impratio: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    impratio: float | None = number()
     #: Simulation option ``integrator``; see the MuJoCo XML reference.
-    integrator: str | None = attrs.field(default=None, converter=to_str)
+    integrator: str | None = text()
     #: Simulation option ``iterations``; see the MuJoCo XML reference.
-    iterations: int | None = attrs.field(default=None, converter=to_int)
+    iterations: int | None = integer()
     #: Simulation option ``jacobian``; see the MuJoCo XML reference.
-    jacobian: str | None = attrs.field(default=None, converter=to_str)
+    jacobian: str | None = text()
     #: Simulation option ``ls_iterations``; see the MuJoCo XML reference.
-    ls_iterations: int | None = attrs.field(default=None, converter=to_int)
+    ls_iterations: int | None = integer()
     #: Simulation option ``ls_tolerance``; see the MuJoCo XML reference.
-    ls_tolerance: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    ls_tolerance: float | None = number()
     #: Simulation option ``magnetic``; see the MuJoCo XML reference.
-    magnetic: Floats | None = attrs.field(default=None, converter=to_vec3)
+    magnetic: Floats | None = vec3()
     #: Simulation option ``noslip_iterations``; see the MuJoCo XML reference.
-    noslip_iterations: int | None = attrs.field(default=None, converter=to_int)
+    noslip_iterations: int | None = integer()
     #: Simulation option ``noslip_tolerance``; see the MuJoCo XML reference.
-    noslip_tolerance: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    noslip_tolerance: float | None = number()
     #: Simulation option ``o_friction``; see the MuJoCo XML reference.
-    o_friction: Floats | None = attrs.field(default=None, converter=to_floats)
+    o_friction: Floats | None = numbers()
     #: Simulation option ``o_margin``; see the MuJoCo XML reference.
-    o_margin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    o_margin: float | None = number()
     #: Simulation option ``o_solimp``; see the MuJoCo XML reference.
-    o_solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
+    o_solimp: Floats | None = vec1to5()
     #: Simulation option ``o_solref``; see the MuJoCo XML reference.
-    o_solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
+    o_solref: Floats | None = vec1to2()
     #: Simulation option ``sdf_initpoints``; see the MuJoCo XML reference.
-    sdf_initpoints: int | None = attrs.field(default=None, converter=to_int)
+    sdf_initpoints: int | None = integer()
     #: Simulation option ``sdf_iterations``; see the MuJoCo XML reference.
-    sdf_iterations: int | None = attrs.field(default=None, converter=to_int)
+    sdf_iterations: int | None = integer()
     #: Simulation option ``sleep_tolerance``; see the MuJoCo XML reference.
-    sleep_tolerance: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    sleep_tolerance: float | None = number()
     #: Simulation option ``solver``; see the MuJoCo XML reference.
-    solver: str | None = attrs.field(default=None, converter=to_str)
+    solver: str | None = text()
     #: Simulation option ``timestep``; see the MuJoCo XML reference.
-    timestep: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    timestep: float | None = number()
     #: Simulation option ``tolerance``; see the MuJoCo XML reference.
-    tolerance: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    tolerance: float | None = number()
     #: Simulation option ``viscosity``; see the MuJoCo XML reference.
-    viscosity: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    viscosity: float | None = number()
     #: Simulation option ``wind``; see the MuJoCo XML reference.
-    wind: Floats | None = attrs.field(default=None, converter=to_vec3)
+    wind: Floats | None = vec3()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class OptionFlag(TypedElement):
     """Enable or disable parts of the simulation pipeline."""
 
     tag: ClassVar[str] = "flag"
+    schema_keys: ClassVar[tuple[str, ...]] = ("option/flag",)
     #: Enable or disable ``actuation`` (``enable``/``disable``).
-    actuation: str | None = attrs.field(default=None, converter=to_str)
+    actuation: str | None = text()
     #: Enable or disable ``autoreset`` (``enable``/``disable``).
-    autoreset: str | None = attrs.field(default=None, converter=to_str)
+    autoreset: str | None = text()
     #: Enable or disable ``clampctrl`` (``enable``/``disable``).
-    clampctrl: str | None = attrs.field(default=None, converter=to_str)
+    clampctrl: str | None = text()
     #: Enable or disable ``constraint`` (``enable``/``disable``).
-    constraint: str | None = attrs.field(default=None, converter=to_str)
+    constraint: str | None = text()
     #: Enable or disable ``contact`` (``enable``/``disable``).
-    contact: str | None = attrs.field(default=None, converter=to_str)
+    contact: str | None = text()
     #: Enable or disable ``damper`` (``enable``/``disable``).
-    damper: str | None = attrs.field(default=None, converter=to_str)
+    damper: str | None = text()
     #: Enable or disable ``diagexact`` (``enable``/``disable``).
-    diagexact: str | None = attrs.field(default=None, converter=to_str)
+    diagexact: str | None = text()
     #: Enable or disable ``energy`` (``enable``/``disable``).
-    energy: str | None = attrs.field(default=None, converter=to_str)
+    energy: str | None = text()
     #: Whether edge equality constraints are generated.
-    equality: str | None = attrs.field(default=None, converter=to_str)
+    equality: str | None = text()
     #: Enable or disable ``eulerdamp`` (``enable``/``disable``).
-    eulerdamp: str | None = attrs.field(default=None, converter=to_str)
+    eulerdamp: str | None = text()
     #: Enable or disable ``filterparent`` (``enable``/``disable``).
-    filterparent: str | None = attrs.field(default=None, converter=to_str)
+    filterparent: str | None = text()
     #: Dry friction loss.
-    frictionloss: str | None = attrs.field(default=None, converter=to_str)
+    frictionloss: str | None = text()
     #: Enable or disable ``fwdinv`` (``enable``/``disable``).
-    fwdinv: str | None = attrs.field(default=None, converter=to_str)
+    fwdinv: str | None = text()
     #: Enable or disable ``gravity`` (``enable``/``disable``).
-    gravity: str | None = attrs.field(default=None, converter=to_str)
+    gravity: str | None = text()
     #: Enable or disable ``invdiscrete`` (``enable``/``disable``).
-    invdiscrete: str | None = attrs.field(default=None, converter=to_str)
+    invdiscrete: str | None = text()
     #: Enable or disable ``ipc`` (``enable``/``disable``).
-    ipc: str | None = attrs.field(default=None, converter=to_str)
+    ipc: str | None = text()
     #: Enable or disable ``island`` (``enable``/``disable``).
-    island: str | None = attrs.field(default=None, converter=to_str)
+    island: str | None = text()
     #: Enable or disable ``limit`` (``enable``/``disable``).
-    limit: str | None = attrs.field(default=None, converter=to_str)
+    limit: str | None = text()
     #: Enable or disable ``midphase`` (``enable``/``disable``).
-    midphase: str | None = attrs.field(default=None, converter=to_str)
+    midphase: str | None = text()
     #: Enable or disable ``multiccd`` (``enable``/``disable``).
-    multiccd: str | None = attrs.field(default=None, converter=to_str)
+    multiccd: str | None = text()
     #: Enable or disable ``nativeccd`` (``enable``/``disable``).
-    nativeccd: str | None = attrs.field(default=None, converter=to_str)
+    nativeccd: str | None = text()
     #: Enable or disable ``override`` (``enable``/``disable``).
-    override: str | None = attrs.field(default=None, converter=to_str)
+    override: str | None = text()
     #: Enable or disable ``refsafe`` (``enable``/``disable``).
-    refsafe: str | None = attrs.field(default=None, converter=to_str)
+    refsafe: str | None = text()
     #: Enable or disable ``sensor`` (``enable``/``disable``).
-    sensor: str | None = attrs.field(default=None, converter=to_str)
+    sensor: str | None = text()
     #: Sleep policy of the body's tree.
-    sleep: str | None = attrs.field(default=None, converter=to_str)
+    sleep: str | None = text()
     #: Enable or disable ``speculative`` (``enable``/``disable``).
-    speculative: str | None = attrs.field(default=None, converter=to_str)
+    speculative: str | None = text()
     #: Enable or disable ``spring`` (``enable``/``disable``).
-    spring: str | None = attrs.field(default=None, converter=to_str)
+    spring: str | None = text()
     #: Enable or disable ``warmstart`` (``enable``/``disable``).
-    warmstart: str | None = attrs.field(default=None, converter=to_str)
+    warmstart: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Size(TypedElement):
     """Memory and array size hints."""
 
     tag: ClassVar[str] = "size"
+    schema_keys: ClassVar[tuple[str, ...]] = ("size",)
     #: Size setting ``memory``; see the MuJoCo XML reference.
-    memory: str | None = attrs.field(default=None, converter=to_str)
+    memory: str | None = text()
     #: Size setting ``nconmax``; see the MuJoCo XML reference.
-    nconmax: str | None = attrs.field(default=None, converter=to_str)
+    nconmax: str | None = text()
     #: Size setting ``njmax``; see the MuJoCo XML reference.
-    njmax: str | None = attrs.field(default=None, converter=to_str)
+    njmax: str | None = text()
     #: Size setting ``nkey``; see the MuJoCo XML reference.
-    nkey: str | None = attrs.field(default=None, converter=to_str)
+    nkey: str | None = text()
     #: Size setting ``nstack``; see the MuJoCo XML reference.
-    nstack: str | None = attrs.field(default=None, converter=to_str)
+    nstack: str | None = text()
     #: Size setting ``nuser_actuator``; see the MuJoCo XML reference.
-    nuser_actuator: str | None = attrs.field(default=None, converter=to_str)
+    nuser_actuator: str | None = text()
     #: Size setting ``nuser_body``; see the MuJoCo XML reference.
-    nuser_body: str | None = attrs.field(default=None, converter=to_str)
+    nuser_body: str | None = text()
     #: Size setting ``nuser_cam``; see the MuJoCo XML reference.
-    nuser_cam: str | None = attrs.field(default=None, converter=to_str)
+    nuser_cam: str | None = text()
     #: Size setting ``nuser_geom``; see the MuJoCo XML reference.
-    nuser_geom: str | None = attrs.field(default=None, converter=to_str)
+    nuser_geom: str | None = text()
     #: Size setting ``nuser_jnt``; see the MuJoCo XML reference.
-    nuser_jnt: str | None = attrs.field(default=None, converter=to_str)
+    nuser_jnt: str | None = text()
     #: Size setting ``nuser_sensor``; see the MuJoCo XML reference.
-    nuser_sensor: str | None = attrs.field(default=None, converter=to_str)
+    nuser_sensor: str | None = text()
     #: Size setting ``nuser_site``; see the MuJoCo XML reference.
-    nuser_site: str | None = attrs.field(default=None, converter=to_str)
+    nuser_site: str | None = text()
     #: Size setting ``nuser_tendon``; see the MuJoCo XML reference.
-    nuser_tendon: str | None = attrs.field(default=None, converter=to_str)
+    nuser_tendon: str | None = text()
     #: Size setting ``nuserdata``; see the MuJoCo XML reference.
-    nuserdata: str | None = attrs.field(default=None, converter=to_str)
+    nuserdata: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Statistic(TypedElement):
     """Model statistics that override the computed ones."""
 
     tag: ClassVar[str] = "statistic"
+    schema_keys: ClassVar[tuple[str, ...]] = ("statistic",)
     #: Model statistic ``center``; see the MuJoCo XML reference.
-    center: Floats | None = attrs.field(default=None, converter=to_vec3)
+    center: Floats | None = vec3()
     #: Model statistic ``extent``; see the MuJoCo XML reference.
-    extent: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    extent: float | None = number()
     #: Model statistic ``meaninertia``; see the MuJoCo XML reference.
-    meaninertia: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    meaninertia: float | None = number()
     #: Model statistic ``meanmass``; see the MuJoCo XML reference.
-    meanmass: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    meanmass: float | None = number()
     #: Model statistic ``meansize``; see the MuJoCo XML reference.
-    meansize: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    meansize: float | None = number()

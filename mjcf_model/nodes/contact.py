@@ -8,69 +8,62 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.values import (
-    Floats,
-    float_key,
-    to_float,
-    to_floats,
-    to_int,
-    to_str,
-    to_vec1to2,
-    to_vec1to5,
-)
+from mjcf_model.declaring import integer, node, number, numbers, reference, text, vec1to2, vec1to5
+from mjcf_model.values import Floats
 
 __all__ = ["Contact", "Exclude", "Pair"]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Contact(TypedElement):
     """Section of explicit contact pairs and exclusions."""
 
     tag: ClassVar[str] = "contact"
+    schema_keys: ClassVar[tuple[str, ...]] = ("contact",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Pair(TypedElement):
     """An explicit contact pair of two geoms."""
 
     tag: ClassVar[str] = "pair"
+    schema_keys: ClassVar[tuple[str, ...]] = ("contact/pair", "default/pair")
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+    dclass: str | None = reference("class", xml="class")
     #: Adhesion force parameter.
-    adhesion: str | None = attrs.field(default=None, converter=to_str)
+    adhesion: str | None = text()
     #: Dimensionality of the contact space (1, 3, 4 or 6).
-    condim: int | None = attrs.field(default=None, converter=to_int)
+    condim: int | None = integer()
     #: Sliding, torsional and rolling friction coefficients.
-    friction: Floats | None = attrs.field(default=None, converter=to_floats)
+    friction: Floats | None = numbers()
     #: Part of the margin within which contacts are not generated.
-    gap: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    gap: float | None = number()
     #: Name of the first geom.
-    geom1: str | None = attrs.field(default=None, converter=to_str)
+    geom1: str | None = reference("geom")
     #: Name of the second geom.
-    geom2: str | None = attrs.field(default=None, converter=to_str)
+    geom2: str | None = reference("geom")
     #: Distance at which contacts (or limits) become active.
-    margin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    margin: float | None = number()
     #: Constraint solver impedance parameters.
-    solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
+    solimp: Floats | None = vec1to5()
     #: Constraint solver reference parameters (timeconst, dampratio).
-    solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
+    solref: Floats | None = vec1to2()
     #: Solver reference parameters of the friction constraint.
-    solreffriction: Floats | None = attrs.field(default=None, converter=to_vec1to2)
+    solreffriction: Floats | None = vec1to2()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Exclude(TypedElement):
     """Excludes contacts between two bodies."""
 
     tag: ClassVar[str] = "exclude"
+    schema_keys: ClassVar[tuple[str, ...]] = ("contact/exclude",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Name of the first body.
-    body1: str | None = attrs.field(default=None, converter=to_str)
+    body1: str | None = reference("body")
     #: Name of the second body.
-    body2: str | None = attrs.field(default=None, converter=to_str)
+    body2: str | None = reference("body")

@@ -8,62 +8,66 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.values import Floats, to_floats, to_int, to_str
+from mjcf_model.declaring import integer, node, numbers, reference, text
+from mjcf_model.values import Floats
 
 __all__ = ["Custom", "Numeric", "Text", "Tuple", "TupleElement"]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Custom(TypedElement):
     """Section of custom numeric, text and tuple data."""
 
     tag: ClassVar[str] = "custom"
+    schema_keys: ClassVar[tuple[str, ...]] = ("custom",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Numeric(TypedElement):
     """A named array of numbers."""
 
     tag: ClassVar[str] = "numeric"
+    schema_keys: ClassVar[tuple[str, ...]] = ("custom/numeric",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Size parameters; their number and meaning depend on ``type``.
-    size: int | None = attrs.field(default=None, converter=to_int)
+    size: int | None = integer()
     #: Data values.
-    data: Floats | None = attrs.field(default=None, converter=to_floats)
+    data: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Text(TypedElement):
     """A named string."""
 
     tag: ClassVar[str] = "text"
+    schema_keys: ClassVar[tuple[str, ...]] = ("custom/text",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Data values.
-    data: str | None = attrs.field(default=None, converter=to_str)
+    data: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Tuple(TypedElement):
     """A named list of object references."""
 
     tag: ClassVar[str] = "tuple"
+    schema_keys: ClassVar[tuple[str, ...]] = ("custom/tuple",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TupleElement(TypedElement):
     """One object reference of a tuple."""
 
     tag: ClassVar[str] = "element"
+    schema_keys: ClassVar[tuple[str, ...]] = ("custom/tuple/element",)
     #: Name of the referenced object.
-    objname: str | None = attrs.field(default=None, converter=to_str)
+    objname: str | None = reference("@objtype")
     #: Type of the referenced object.
-    objtype: str | None = attrs.field(default=None, converter=to_str)
+    objtype: str | None = text()
     #: Real-valued parameter of the tuple element.
-    prm: Floats | None = attrs.field(default=None, converter=to_floats)
+    prm: Floats | None = numbers()

@@ -14,23 +14,20 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.values import (
-    to_str,
-)
+from mjcf_model.declaring import node, text
 
 __all__ = ["Default"]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Default(TypedElement):
     """A default class: attribute values its members take unless they set their own."""
 
     tag: ClassVar[str] = "default"
+    schema_keys: ClassVar[tuple[str, ...]] = ("default",)
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+    dclass: str | None = text(xml="class")
 
     @property
     def defaults(self) -> tuple[Default, ...]:

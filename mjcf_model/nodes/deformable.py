@@ -8,25 +8,23 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.nodes.geom import Oriented
-from mjcf_model.values import (
-    Floats,
-    Ints,
-    float_key,
-    to_float,
-    to_floats,
-    to_int,
-    to_ints,
-    to_str,
-    to_vec1to2,
-    to_vec1to3,
-    to_vec1to5,
-    to_vec3,
-    to_vec4,
+from mjcf_model.declaring import (
+    integer,
+    integers,
+    node,
+    number,
+    numbers,
+    reference,
+    text,
+    vec1to2,
+    vec1to3,
+    vec1to5,
+    vec3,
+    vec4,
 )
+from mjcf_model.nodes.geom import Oriented
+from mjcf_model.values import Floats, Ints
 
 __all__ = [
     "Deformable",
@@ -40,199 +38,210 @@ __all__ = [
 ]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Flexcomp(Oriented):
     """A flex generated from a grid, mesh or points."""
 
     tag: ClassVar[str] = "flexcomp"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/flexcomp",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Element type keyword.
-    type: str | None = attrs.field(default=None, converter=to_str)
+    type: str | None = text()
     #: Number of cells.
-    cellcount: str | None = attrs.field(default=None, converter=to_str)
+    cellcount: str | None = text()
     #: Number of repetitions or grid points.
-    count: Ints | None = attrs.field(default=None, converter=to_ints)
+    count: Ints | None = integers()
     #: Dimension.
-    dim: int | None = attrs.field(default=None, converter=to_int)
+    dim: int | None = integer()
     #: Degree-of-freedom parametrization.
-    dof: str | None = attrs.field(default=None, converter=to_str)
+    dof: str | None = text()
     #: Element vertex indices.
-    element: Ints | None = attrs.field(default=None, converter=to_ints)
+    element: Ints | None = integers()
     #: File name, relative to the model (or asset) directory.
-    file: str | None = attrs.field(default=None, converter=to_str)
+    file: str | None = text()
     #: Whether the flex skin is rendered flat.
-    flatskin: str | None = attrs.field(default=None, converter=to_str)
+    flatskin: str | None = text()
     #: Integer group, used for visualization filters and by convention.
-    group: int | None = attrs.field(default=None, converter=to_int)
+    group: int | None = integer()
     #: Size of the inertia box of each point body.
-    inertiabox: str | None = attrs.field(default=None, converter=to_str)
+    inertiabox: str | None = text()
     #: Mass.
-    mass: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    mass: float | None = number()
     #: Name of the material asset used for rendering.
-    material: str | None = attrs.field(default=None, converter=to_str)
+    material: str | None = reference("material")
     #: Name of the mesh asset.
-    mesh: str | None = attrs.field(default=None, converter=to_str)
+    mesh: str | None = reference("mesh")
     #: Origin of the flexcomp.
-    origin: str | None = attrs.field(default=None, converter=to_str)
+    origin: str | None = text()
     #: Point coordinates.
-    point: Floats | None = attrs.field(default=None, converter=to_floats)
+    point: Floats | None = numbers()
     #: Radius of the flex elements.
-    radius: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    radius: float | None = number()
     #: Colour and transparency (r, g, b, a).
-    rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
+    rgba: Floats | None = vec4()
     #: Whether all points are in one rigid body.
-    rigid: str | None = attrs.field(default=None, converter=to_str)
+    rigid: str | None = text()
     #: Scale factor(s).
-    scale: Floats | None = attrs.field(default=None, converter=to_vec3)
+    scale: Floats | None = vec3()
     #: Spacing between grid points.
-    spacing: Floats | None = attrs.field(default=None, converter=to_floats)
+    spacing: Floats | None = numbers()
     #: Texture coordinates.
-    texcoord: Floats | None = attrs.field(default=None, converter=to_floats)
+    texcoord: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FlexcompEdge(TypedElement):
     """Edge properties of a flexcomp."""
 
     tag: ClassVar[str] = "edge"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/flexcomp/edge",)
     #: Damping (coefficients of a polynomial in MuJoCo 4).
-    damping: Floats | None = attrs.field(default=None, converter=to_floats)
+    damping: Floats | None = numbers()
     #: Whether edge equality constraints are generated.
-    equality: str | None = attrs.field(default=None, converter=to_str)
+    equality: str | None = text()
     #: Constraint solver impedance parameters.
-    solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
+    solimp: Floats | None = vec1to5()
     #: Constraint solver reference parameters (timeconst, dampratio).
-    solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
+    solref: Floats | None = vec1to2()
     #: Spring stiffness (coefficients of a polynomial in MuJoCo 4).
-    stiffness: Floats | None = attrs.field(default=None, converter=to_floats)
+    stiffness: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FlexElasticity(TypedElement):
     """Elasticity of a flex."""
 
     tag: ClassVar[str] = "elasticity"
+    schema_keys: ClassVar[tuple[str, ...]] = (
+        "body/flexcomp/elasticity",
+        "deformable/flex/elasticity",
+    )
     #: Damping (coefficients of a polynomial in MuJoCo 4).
-    damping: Floats | None = attrs.field(default=None, converter=to_floats)
+    damping: Floats | None = numbers()
     #: Elastic 2D mode.
-    elastic2d: str | None = attrs.field(default=None, converter=to_str)
+    elastic2d: str | None = text()
     #: Poisson ratio.
-    poisson: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    poisson: float | None = number()
     #: Cross-section shape.
-    section: str | None = attrs.field(default=None, converter=to_str)
+    section: str | None = text()
     #: Cross-section size.
-    sectionsize: str | None = attrs.field(default=None, converter=to_str)
+    sectionsize: str | None = text()
     #: Shear parameter.
-    shear: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    shear: float | None = number()
     #: Shell thickness.
-    thickness: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    thickness: float | None = number()
     #: Yield parameter.
-    yield_: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "yield"})
+    yield_: str | None = text(xml="yield")
     #: Young modulus.
-    young: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    young: float | None = number()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FlexContact(TypedElement):
     """Contact properties of a flex."""
 
     tag: ClassVar[str] = "contact"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/flexcomp/contact", "deformable/flex/contact")
     #: Number of active collision layers.
-    activelayers: str | None = attrs.field(default=None, converter=to_str)
+    activelayers: str | None = text()
     #: Contact affinity bitmask.
-    conaffinity: int | None = attrs.field(default=None, converter=to_int)
+    conaffinity: int | None = integer()
     #: Dimensionality of the contact space (1, 3, 4 or 6).
-    condim: int | None = attrs.field(default=None, converter=to_int)
+    condim: int | None = integer()
     #: Contact type bitmask.
-    contype: int | None = attrs.field(default=None, converter=to_int)
+    contype: int | None = integer()
     #: Sliding, torsional and rolling friction coefficients.
-    friction: Floats | None = attrs.field(default=None, converter=to_vec1to3)
+    friction: Floats | None = vec1to3()
     #: Part of the margin within which contacts are not generated.
-    gap: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    gap: float | None = number()
     #: Distance at which contacts (or limits) become active.
-    margin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    margin: float | None = number()
     #: Whether passive contacts are generated.
-    passive: str | None = attrs.field(default=None, converter=to_str)
+    passive: str | None = text()
     #: Contact priority.
-    priority: int | None = attrs.field(default=None, converter=to_int)
+    priority: int | None = integer()
     #: Self-collision mode.
-    selfcollide: str | None = attrs.field(default=None, converter=to_str)
+    selfcollide: str | None = text()
     #: Constraint solver impedance parameters.
-    solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
+    solimp: Floats | None = vec1to5()
     #: Weight for mixing solver parameters of two contacting geoms.
-    solmix: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    solmix: float | None = number()
     #: Constraint solver reference parameters (timeconst, dampratio).
-    solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
+    solref: Floats | None = vec1to2()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FlexcompPin(TypedElement):
     """Points of a flexcomp pinned in place."""
 
     tag: ClassVar[str] = "pin"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/flexcomp/pin",)
     #: Grid coordinates of pinned points.
-    grid: Ints | None = attrs.field(default=None, converter=to_ints)
+    grid: Ints | None = integers()
     #: Grid ranges of pinned points.
-    gridrange: Ints | None = attrs.field(default=None, converter=to_ints)
+    gridrange: Ints | None = integers()
     #: Indices of pinned points.
-    id: Ints | None = attrs.field(default=None, converter=to_ints)
+    id: Ints | None = integers()
     #: Lower and upper limits.
-    range: Ints | None = attrs.field(default=None, converter=to_ints)
+    range: Ints | None = integers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Deformable(TypedElement):
     """Section of flexes and skins."""
 
     tag: ClassVar[str] = "deformable"
+    schema_keys: ClassVar[tuple[str, ...]] = ("deformable",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Flex(TypedElement):
     """A flex: a deformable collection of elements."""
 
     tag: ClassVar[str] = "flex"
+    schema_keys: ClassVar[tuple[str, ...]] = ("deformable/flex",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Names of the bodies the vertices belong to, separated by spaces.
-    body: str | None = attrs.field(default=None, converter=to_str)
+    body: str | None = reference("body")
     #: Number of cells.
-    cellcount: str | None = attrs.field(default=None, converter=to_str)
+    cellcount: str | None = text()
     #: Dimension.
-    dim: int | None = attrs.field(default=None, converter=to_int)
+    dim: int | None = integer()
     #: Degree-of-freedom parametrization.
-    dof: str | None = attrs.field(default=None, converter=to_str)
+    dof: str | None = text()
     #: Element vertex indices.
-    element: Ints | None = attrs.field(default=None, converter=to_ints)
+    element: Ints | None = integers()
     #: Element texture coordinates.
-    elemtexcoord: Floats | None = attrs.field(default=None, converter=to_floats)
+    elemtexcoord: Floats | None = numbers()
     #: Whether the flex skin is rendered flat.
-    flatskin: str | None = attrs.field(default=None, converter=to_str)
+    flatskin: str | None = text()
     #: Integer group, used for visualization filters and by convention.
-    group: int | None = attrs.field(default=None, converter=to_int)
+    group: int | None = integer()
     #: Name of the material asset used for rendering.
-    material: str | None = attrs.field(default=None, converter=to_str)
+    material: str | None = reference("material")
     #: Names of the bodies used as nodes.
-    node: str | None = attrs.field(default=None, converter=to_str)
+    node: str | None = reference("body")
     #: Node coordinates.
-    nodecoord: Floats | None = attrs.field(default=None, converter=to_floats)
+    nodecoord: Floats | None = numbers()
     #: Radius of the flex elements.
-    radius: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    radius: float | None = number()
     #: Colour and transparency (r, g, b, a).
-    rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
+    rgba: Floats | None = vec4()
     #: Texture coordinates.
-    texcoord: Floats | None = attrs.field(default=None, converter=to_floats)
+    texcoord: Floats | None = numbers()
     #: Vertex coordinates.
-    vertex: Floats | None = attrs.field(default=None, converter=to_floats)
+    vertex: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FlexEdge(TypedElement):
     """Edge properties of a flex."""
 
     tag: ClassVar[str] = "edge"
+    schema_keys: ClassVar[tuple[str, ...]] = ("deformable/flex/edge",)
     #: Damping (coefficients of a polynomial in MuJoCo 4).
-    damping: Floats | None = attrs.field(default=None, converter=to_floats)
+    damping: Floats | None = numbers()
     #: Spring stiffness (coefficients of a polynomial in MuJoCo 4).
-    stiffness: Floats | None = attrs.field(default=None, converter=to_floats)
+    stiffness: Floats | None = numbers()

@@ -8,20 +8,19 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.values import (
-    Floats,
-    float_key,
-    to_bool,
-    to_float,
-    to_floats,
-    to_str,
-    to_vec1to2,
-    to_vec1to5,
-    to_vec3,
+from mjcf_model.declaring import (
+    boolean,
+    node,
+    number,
+    numbers,
+    reference,
+    text,
+    vec1to2,
+    vec1to5,
+    vec3,
 )
+from mjcf_model.values import Floats
 
 __all__ = [
     "Connect",
@@ -37,121 +36,129 @@ __all__ = [
 ]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Equality(TypedElement):
     """Section of equality constraints."""
 
     tag: ClassVar[str] = "equality"
+    schema_keys: ClassVar[tuple[str, ...]] = ("equality",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class EqualitySettings(TypedElement):
     """The settings every equality constraint and ``<default><equality>`` share."""
 
     #: Whether the element is active initially.
-    active: bool | None = attrs.field(default=None, converter=to_bool)
+    active: bool | None = boolean()
     #: Constraint solver impedance parameters.
-    solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
+    solimp: Floats | None = vec1to5()
     #: Constraint solver reference parameters (timeconst, dampratio).
-    solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
+    solref: Floats | None = vec1to2()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class EqualityElement(EqualitySettings):
     """Fields every equality constraint shares: the settings plus a name and a class."""
 
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+    dclass: str | None = reference("class", xml="class")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class DefaultEquality(EqualitySettings):
     """Default values for equality constraints (``<default><equality>``)."""
 
     tag: ClassVar[str] = "equality"
+    schema_keys: ClassVar[tuple[str, ...]] = ("default/equality",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Connect(EqualityElement):
     """Connects two bodies at a point (ball joint constraint)."""
 
     tag: ClassVar[str] = "connect"
+    schema_keys: ClassVar[tuple[str, ...]] = ("equality/connect",)
     #: Anchor point of the constraint.
-    anchor: Floats | None = attrs.field(default=None, converter=to_vec3)
+    anchor: Floats | None = vec3()
     #: Name of the first body.
-    body1: str | None = attrs.field(default=None, converter=to_str)
+    body1: str | None = reference("body")
     #: Name of the second body.
-    body2: str | None = attrs.field(default=None, converter=to_str)
+    body2: str | None = reference("body")
     #: Name of the first site.
-    site1: str | None = attrs.field(default=None, converter=to_str)
+    site1: str | None = reference("site")
     #: Name of the second site.
-    site2: str | None = attrs.field(default=None, converter=to_str)
+    site2: str | None = reference("site")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Weld(EqualityElement):
     """Welds two bodies together."""
 
     tag: ClassVar[str] = "weld"
+    schema_keys: ClassVar[tuple[str, ...]] = ("equality/weld",)
     #: Anchor point of the constraint.
-    anchor: Floats | None = attrs.field(default=None, converter=to_vec3)
+    anchor: Floats | None = vec3()
     #: Name of the first body.
-    body1: str | None = attrs.field(default=None, converter=to_str)
+    body1: str | None = reference("body")
     #: Name of the second body.
-    body2: str | None = attrs.field(default=None, converter=to_str)
+    body2: str | None = reference("body")
     #: Relative pose of the welded bodies.
-    relpose: Floats | None = attrs.field(default=None, converter=to_floats)
+    relpose: Floats | None = numbers()
     #: Name of the first site.
-    site1: str | None = attrs.field(default=None, converter=to_str)
+    site1: str | None = reference("site")
     #: Name of the second site.
-    site2: str | None = attrs.field(default=None, converter=to_str)
+    site2: str | None = reference("site")
     #: Scale of rotational relative to translational residual.
-    torquescale: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    torquescale: float | None = number()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class EqualityJoint(EqualityElement):
     """Couples two joints with a polynomial."""
 
     tag: ClassVar[str] = "joint"
+    schema_keys: ClassVar[tuple[str, ...]] = ("equality/joint",)
     #: Name of the first joint.
-    joint1: str | None = attrs.field(default=None, converter=to_str)
+    joint1: str | None = reference("joint")
     #: Name of the second joint.
-    joint2: str | None = attrs.field(default=None, converter=to_str)
+    joint2: str | None = reference("joint")
     #: Polynomial coefficients of the coupling.
-    polycoef: Floats | None = attrs.field(default=None, converter=to_floats)
+    polycoef: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class EqualityTendon(EqualityElement):
     """Couples two tendons with a polynomial."""
 
     tag: ClassVar[str] = "tendon"
+    schema_keys: ClassVar[tuple[str, ...]] = ("equality/tendon",)
     #: Polynomial coefficients of the coupling.
-    polycoef: Floats | None = attrs.field(default=None, converter=to_floats)
+    polycoef: Floats | None = numbers()
     #: Name of the first tendon.
-    tendon1: str | None = attrs.field(default=None, converter=to_str)
+    tendon1: str | None = reference("tendon")
     #: Name of the second tendon.
-    tendon2: str | None = attrs.field(default=None, converter=to_str)
+    tendon2: str | None = reference("tendon")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class EqualityFlex(EqualityElement):
     """Fixes the edge lengths of a flex."""
 
     tag: ClassVar[str] = "flex"
+    schema_keys: ClassVar[tuple[str, ...]] = ("equality/flex",)
     #: Name of the flex.
-    flex: str | None = attrs.field(default=None, converter=to_str)
+    flex: str | None = reference("flex")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class EqualityFlexStrain(EqualityElement):
     """Constrains the strain of a flex."""
 
     tag: ClassVar[str] = "flexstrain"
+    schema_keys: ClassVar[tuple[str, ...]] = ("equality/flexstrain",)
     #: Index of the cell.
-    cell: str | None = attrs.field(default=None, converter=to_str)
+    cell: str | None = text()
     #: Name of the flex.
-    flex: str | None = attrs.field(default=None, converter=to_str)
+    flex: str | None = reference("flex")

@@ -8,226 +8,228 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.keywords import GEOM_TYPES, LIGHT_TYPES, TRACKING_MODES
-from mjcf_model.values import (
-    Floats,
-    Ints,
-    float_key,
-    one_of,
-    to_bool,
-    to_float,
-    to_floats,
-    to_int,
-    to_ints,
-    to_str,
-    to_vec1to2,
-    to_vec1to3,
-    to_vec1to5,
-    to_vec2,
-    to_vec3,
-    to_vec4,
-    to_vec6,
+from mjcf_model.declaring import (
+    boolean,
+    integer,
+    integers,
+    keyword,
+    node,
+    number,
+    numbers,
+    reference,
+    text,
+    vec1to2,
+    vec1to3,
+    vec1to5,
+    vec2,
+    vec3,
+    vec4,
+    vec6,
 )
+from mjcf_model.keywords import GEOM_TYPES, LIGHT_TYPES, TRACKING_MODES
+from mjcf_model.values import Floats, Ints
 
 __all__ = ["Camera", "Geom", "Light", "Oriented", "Site"]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Oriented(TypedElement):
     """Base of elements placed in their parent's frame by a position and one orientation."""
 
     #: Position (x, y, z) in the parent frame, in length units.
-    pos: Floats | None = attrs.field(default=None, converter=to_vec3)
+    pos: Floats | None = vec3()
     #: Orientation as a unit quaternion (w, x, y, z).
-    quat: Floats | None = attrs.field(default=None, converter=to_vec4)
+    quat: Floats | None = vec4()
     #: Orientation as a rotation axis and angle.
-    axisangle: Floats | None = attrs.field(default=None, converter=to_vec4)
+    axisangle: Floats | None = vec4()
     #: Orientation as the frame's X and Y axes.
-    xyaxes: Floats | None = attrs.field(default=None, converter=to_vec6)
+    xyaxes: Floats | None = vec6()
     #: Orientation as the frame's Z axis (minimal rotation from +Z).
-    zaxis: Floats | None = attrs.field(default=None, converter=to_vec3)
+    zaxis: Floats | None = vec3()
     #: Orientation as Euler angles in the compiler's ``eulerseq``.
-    euler: Floats | None = attrs.field(default=None, converter=to_vec3)
+    euler: Floats | None = vec3()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Geom(Oriented):
     """A geometric shape used for collision, rendering and inertia."""
 
     tag: ClassVar[str] = "geom"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/geom", "default/geom")
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+    dclass: str | None = reference("class", xml="class")
     #: Element type keyword.
-    type: str | None = attrs.field(default=None, converter=to_str, validator=one_of(GEOM_TYPES))
+    type: str | None = keyword(GEOM_TYPES)
     #: Size parameters; their number and meaning depend on ``type``.
-    size: Floats | None = attrs.field(default=None, converter=to_vec1to3)
+    size: Floats | None = vec1to3()
     #: Start and end points (x1 y1 z1 x2 y2 z2) of a capsule, cylinder, box or ellipsoid.
-    fromto: Floats | None = attrs.field(default=None, converter=to_vec6)
+    fromto: Floats | None = vec6()
     #: Adhesion force parameter.
-    adhesion: str | None = attrs.field(default=None, converter=to_str)
+    adhesion: str | None = text()
     #: Whether the element casts shadows.
-    castshadow: str | None = attrs.field(default=None, converter=to_str)
+    castshadow: str | None = text()
     #: Contact affinity bitmask.
-    conaffinity: int | None = attrs.field(default=None, converter=to_int)
+    conaffinity: int | None = integer()
     #: Dimensionality of the contact space (1, 3, 4 or 6).
-    condim: int | None = attrs.field(default=None, converter=to_int)
+    condim: int | None = integer()
     #: Contact type bitmask.
-    contype: int | None = attrs.field(default=None, converter=to_int)
+    contype: int | None = integer()
     #: Density used to compute mass from volume.
-    density: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    density: float | None = number()
     #: Scale applied when fitting a primitive to a mesh.
-    fitscale: str | None = attrs.field(default=None, converter=to_str)
+    fitscale: str | None = text()
     #: Coefficients of the ellipsoid fluid model.
-    fluidcoef: Floats | None = attrs.field(default=None, converter=to_floats)
+    fluidcoef: Floats | None = numbers()
     #: Fluid interaction model (``none`` or ``ellipsoid``).
-    fluidshape: str | None = attrs.field(default=None, converter=to_str)
+    fluidshape: str | None = text()
     #: Sliding, torsional and rolling friction coefficients.
-    friction: Floats | None = attrs.field(default=None, converter=to_vec1to3)
+    friction: Floats | None = vec1to3()
     #: Part of the margin within which contacts are not generated.
-    gap: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    gap: float | None = number()
     #: Integer group, used for visualization filters and by convention.
-    group: int | None = attrs.field(default=None, converter=to_int)
+    group: int | None = integer()
     #: Name of the height-field asset.
-    hfield: str | None = attrs.field(default=None, converter=to_str)
+    hfield: str | None = reference("hfield")
     #: Distance at which contacts (or limits) become active.
-    margin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    margin: float | None = number()
     #: Mass.
-    mass: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    mass: float | None = number()
     #: Name of the material asset used for rendering.
-    material: str | None = attrs.field(default=None, converter=to_str)
+    material: str | None = reference("material")
     #: Name of the mesh asset.
-    mesh: str | None = attrs.field(default=None, converter=to_str)
+    mesh: str | None = reference("mesh")
     #: Contact priority.
-    priority: int | None = attrs.field(default=None, converter=to_int)
+    priority: int | None = integer()
     #: Colour and transparency (r, g, b, a).
-    rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
+    rgba: Floats | None = vec4()
     #: Whether mass is distributed over the surface rather than the volume.
-    shellinertia: bool | None = attrs.field(default=None, converter=to_bool)
+    shellinertia: bool | None = boolean()
     #: Constraint solver impedance parameters.
-    solimp: Floats | None = attrs.field(default=None, converter=to_vec1to5)
+    solimp: Floats | None = vec1to5()
     #: Weight for mixing solver parameters of two contacting geoms.
-    solmix: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    solmix: float | None = number()
     #: Constraint solver reference parameters (timeconst, dampratio).
-    solref: Floats | None = attrs.field(default=None, converter=to_vec1to2)
+    solref: Floats | None = vec1to2()
     #: Surface velocity of a conveyor-like geom.
-    surfacevel: str | None = attrs.field(default=None, converter=to_str)
+    surfacevel: str | None = text()
     #: Custom user data (numbers).
-    user: Floats | None = attrs.field(default=None, converter=to_floats)
+    user: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Site(Oriented):
     """A site: a frame of interest that does not collide."""
 
     tag: ClassVar[str] = "site"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/site", "default/site")
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+    dclass: str | None = reference("class", xml="class")
     #: Element type keyword.
-    type: str | None = attrs.field(default=None, converter=to_str)
+    type: str | None = text()
     #: Size parameters; their number and meaning depend on ``type``.
-    size: Floats | None = attrs.field(default=None, converter=to_vec1to3)
+    size: Floats | None = vec1to3()
     #: Start and end points (x1 y1 z1 x2 y2 z2) of a capsule, cylinder, box or ellipsoid.
-    fromto: Floats | None = attrs.field(default=None, converter=to_vec6)
+    fromto: Floats | None = vec6()
     #: Integer group, used for visualization filters and by convention.
-    group: int | None = attrs.field(default=None, converter=to_int)
+    group: int | None = integer()
     #: Name of the material asset used for rendering.
-    material: str | None = attrs.field(default=None, converter=to_str)
+    material: str | None = reference("material")
     #: Name of the mesh asset.
-    mesh: str | None = attrs.field(default=None, converter=to_str)
+    mesh: str | None = reference("mesh")
     #: Colour and transparency (r, g, b, a).
-    rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
+    rgba: Floats | None = vec4()
     #: Custom user data (numbers).
-    user: Floats | None = attrs.field(default=None, converter=to_floats)
+    user: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Camera(Oriented):
     """A camera."""
 
     tag: ClassVar[str] = "camera"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/camera", "default/camera")
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+    dclass: str | None = reference("class", xml="class")
     #: Focal length in length units.
-    focal: Floats | None = attrs.field(default=None, converter=to_vec2)
+    focal: Floats | None = vec2()
     #: Focal length in pixels.
-    focalpixel: Floats | None = attrs.field(default=None, converter=to_vec2)
+    focalpixel: Floats | None = vec2()
     #: Vertical field of view in degrees.
-    fovy: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    fovy: float | None = number()
     #: Inter-pupillary distance for stereo rendering.
-    ipd: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    ipd: float | None = number()
     #: How the element tracks its target (``fixed``, ``track``, ``trackcom``, ...).
-    mode: str | None = attrs.field(default=None, converter=to_str, validator=one_of(TRACKING_MODES))
+    mode: str | None = keyword(TRACKING_MODES)
     #: Output channels of the camera.
-    output: str | None = attrs.field(default=None, converter=to_str)
+    output: str | None = text()
     #: Principal point in length units.
-    principal: Floats | None = attrs.field(default=None, converter=to_vec2)
+    principal: Floats | None = vec2()
     #: Principal point in pixels.
-    principalpixel: Floats | None = attrs.field(default=None, converter=to_vec2)
+    principalpixel: Floats | None = vec2()
     #: Projection type (``perspective`` or ``orthographic``).
-    projection: str | None = attrs.field(default=None, converter=to_str)
+    projection: str | None = text()
     #: Image resolution in pixels (width, height).
-    resolution: Ints | None = attrs.field(default=None, converter=to_ints)
+    resolution: Ints | None = integers()
     #: Physical sensor size.
-    sensorsize: Floats | None = attrs.field(default=None, converter=to_vec2)
+    sensorsize: Floats | None = vec2()
     #: Name of the body a tracking camera or light targets.
-    target: str | None = attrs.field(default=None, converter=to_str)
+    target: str | None = reference("body")
     #: Custom user data (numbers).
-    user: Floats | None = attrs.field(default=None, converter=to_floats)
+    user: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Light(TypedElement):
     """A light."""
 
     tag: ClassVar[str] = "light"
+    schema_keys: ClassVar[tuple[str, ...]] = ("body/light", "default/light")
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+    dclass: str | None = reference("class", xml="class")
     #: Element type keyword.
-    type: str | None = attrs.field(default=None, converter=to_str, validator=one_of(LIGHT_TYPES))
+    type: str | None = keyword(LIGHT_TYPES)
     #: Position (x, y, z) in the parent frame, in length units.
-    pos: Floats | None = attrs.field(default=None, converter=to_vec3)
+    pos: Floats | None = vec3()
     #: Whether the element is active initially.
-    active: bool | None = attrs.field(default=None, converter=to_bool)
+    active: bool | None = boolean()
     #: Ambient colour.
-    ambient: Floats | None = attrs.field(default=None, converter=to_vec3)
+    ambient: Floats | None = vec3()
     #: Constant, linear and quadratic attenuation.
-    attenuation: Floats | None = attrs.field(default=None, converter=to_vec3)
+    attenuation: Floats | None = vec3()
     #: Radius of the light bulb, for soft shadows.
-    bulbradius: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    bulbradius: float | None = number()
     #: Whether the element casts shadows.
-    castshadow: bool | None = attrs.field(default=None, converter=to_bool)
+    castshadow: bool | None = boolean()
     #: Cutoff (spot angle for lights; output clamp for sensors).
-    cutoff: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    cutoff: float | None = number()
     #: Diffuse colour.
-    diffuse: Floats | None = attrs.field(default=None, converter=to_vec3)
+    diffuse: Floats | None = vec3()
     #: Direction the light points in.
-    dir: Floats | None = attrs.field(default=None, converter=to_vec3)
+    dir: Floats | None = vec3()
     #: Whether the light is directional (legacy form of ``type``).
-    directional: bool | None = attrs.field(default=None, converter=to_bool)
+    directional: bool | None = boolean()
     #: Spotlight exponent.
-    exponent: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    exponent: float | None = number()
     #: Light intensity.
-    intensity: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    intensity: float | None = number()
     #: How the element tracks its target (``fixed``, ``track``, ``trackcom``, ...).
-    mode: str | None = attrs.field(default=None, converter=to_str, validator=one_of(TRACKING_MODES))
+    mode: str | None = keyword(TRACKING_MODES)
     #: Lower and upper limits.
-    range: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    range: float | None = number()
     #: Shadow softness.
-    softness: str | None = attrs.field(default=None, converter=to_str)
+    softness: str | None = text()
     #: Specular colour or intensity.
-    specular: Floats | None = attrs.field(default=None, converter=to_vec3)
+    specular: Floats | None = vec3()
     #: Name of the body a tracking camera or light targets.
-    target: str | None = attrs.field(default=None, converter=to_str)
+    target: str | None = reference("body")
     #: Name of the texture asset.
-    texture: str | None = attrs.field(default=None, converter=to_str)
+    texture: str | None = reference("texture")

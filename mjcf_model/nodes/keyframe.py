@@ -8,19 +8,19 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.values import Floats, float_key, to_float, to_floats, to_str
+from mjcf_model.declaring import node, number, numbers, text
+from mjcf_model.values import Floats
 
 __all__ = ["Key", "Keyframe"]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Keyframe(TypedElement):
     """Section of keyframes."""
 
     tag: ClassVar[str] = "keyframe"
+    schema_keys: ClassVar[tuple[str, ...]] = ("keyframe",)
 
     @property
     def keys(self) -> tuple[Key, ...]:
@@ -28,26 +28,27 @@ class Keyframe(TypedElement):
         return self._of_type(Key)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Key(TypedElement):
     """A keyframe: a stored simulation state."""
 
     tag: ClassVar[str] = "key"
+    schema_keys: ClassVar[tuple[str, ...]] = ("keyframe/key",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Actuator activations.
-    act: Floats | None = attrs.field(default=None, converter=to_floats)
+    act: Floats | None = numbers()
     #: Controls.
-    ctrl: Floats | None = attrs.field(default=None, converter=to_floats)
+    ctrl: Floats | None = numbers()
     #: Mocap body positions.
-    mpos: Floats | None = attrs.field(default=None, converter=to_floats)
+    mpos: Floats | None = numbers()
     #: Mocap body orientations.
-    mquat: Floats | None = attrs.field(default=None, converter=to_floats)
+    mquat: Floats | None = numbers()
     #: Plastic state.
-    plastic: Floats | None = attrs.field(default=None, converter=to_floats)
+    plastic: Floats | None = numbers()
     #: Joint positions.
-    qpos: Floats | None = attrs.field(default=None, converter=to_floats)
+    qpos: Floats | None = numbers()
     #: Joint velocities.
-    qvel: Floats | None = attrs.field(default=None, converter=to_floats)
+    qvel: Floats | None = numbers()
     #: Simulation time.
-    time: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    time: float | None = number()

@@ -8,62 +8,78 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.values import to_str
+from mjcf_model.declaring import node, reference, text
 
 __all__ = ["Extension", "ExtensionPlugin", "Plugin", "PluginConfig", "PluginInstance", "PluginUse"]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Extension(TypedElement):
     """Section that declares engine plugins."""
 
     tag: ClassVar[str] = "extension"
+    schema_keys: ClassVar[tuple[str, ...]] = ("extension",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class ExtensionPlugin(TypedElement):
     """An engine plugin used by the model."""
 
     tag: ClassVar[str] = "plugin"
+    schema_keys: ClassVar[tuple[str, ...]] = ("extension/plugin",)
     #: Identifier of the plugin library.
-    plugin: str | None = attrs.field(default=None, converter=to_str)
+    plugin: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class PluginInstance(TypedElement):
     """A named, configured instance of a plugin."""
 
     tag: ClassVar[str] = "instance"
+    schema_keys: ClassVar[tuple[str, ...]] = ("extension/plugin/instance",)
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class PluginConfig(TypedElement):
     """One key/value configuration entry of a plugin."""
 
     tag: ClassVar[str] = "config"
+    schema_keys: ClassVar[tuple[str, ...]] = (
+        "extension/plugin/instance/config",
+        "asset/mesh/plugin/config",
+        "body/geom/plugin/config",
+        "body/plugin/config",
+        "body/flexcomp/plugin/config",
+        "actuator/plugin/config",
+        "sensor/plugin/config",
+    )
     #: Configuration key.
-    key: str | None = attrs.field(default=None, converter=to_str)
+    key: str | None = text()
     #: Configuration value.
-    value: str | None = attrs.field(default=None, converter=to_str)
+    value: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class PluginUse(TypedElement):
     """Elements that attach a plugin, by library or by instance."""
 
     #: Name of the plugin instance.
-    instance: str | None = attrs.field(default=None, converter=to_str)
+    instance: str | None = reference("plugin")
     #: Identifier of the plugin library.
-    plugin: str | None = attrs.field(default=None, converter=to_str)
+    plugin: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Plugin(PluginUse):
     """A plugin attached to a body, geom, mesh or flexcomp."""
 
     tag: ClassVar[str] = "plugin"
+    schema_keys: ClassVar[tuple[str, ...]] = (
+        "asset/mesh/plugin",
+        "body/geom/plugin",
+        "body/plugin",
+        "body/flexcomp/plugin",
+    )

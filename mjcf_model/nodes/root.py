@@ -14,6 +14,7 @@ from typing import ClassVar
 import attrs
 
 from mjcf_model.base import TypedElement
+from mjcf_model.declaring import node, text
 from mjcf_model.nodes.actuator import Actuator
 from mjcf_model.nodes.asset import Asset
 from mjcf_model.nodes.body import Worldbody
@@ -28,7 +29,6 @@ from mjcf_model.nodes.plugin import Extension
 from mjcf_model.nodes.sensor import Sensor
 from mjcf_model.nodes.tendon import Tendon
 from mjcf_model.nodes.visual import Visual
-from mjcf_model.values import to_str
 
 
 def to_base_dir(value: str | os.PathLike[str] | None) -> Path | None:
@@ -45,22 +45,24 @@ def to_base_dir(value: str | os.PathLike[str] | None) -> Path | None:
 __all__ = ["Include", "Mujoco"]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Include(TypedElement):
     """Includes another MJCF file's elements here."""
 
     tag: ClassVar[str] = "include"
+    schema_keys: ClassVar[tuple[str, ...]] = ("include",)
     #: File name, relative to the model (or asset) directory.
-    file: str | None = attrs.field(default=None, converter=to_str)
+    file: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Mujoco(TypedElement):
     """The root of an MJCF model."""
 
     tag: ClassVar[str] = "mujoco"
+    schema_keys: ClassVar[tuple[str, ...]] = ("mujoco",)
     #: Name of the model asset.
-    model: str | None = attrs.field(default=None, converter=to_str)
+    model: str | None = text()
     #: The folder the model's relative file paths (meshes, textures, includes, ...)
     #: resolve from: the loaded file's folder, or ``None`` for a model built in code,
     #: whose paths resolve from wherever it is compiled or written. Where a model's

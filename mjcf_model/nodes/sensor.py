@@ -8,10 +8,9 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.values import Floats, float_key, to_float, to_floats, to_int, to_str
+from mjcf_model.declaring import integer, node, number, numbers, reference, text
+from mjcf_model.values import Floats
 
 __all__ = [
     "Accelerometer",
@@ -78,509 +77,559 @@ __all__ = [
 ]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Sensor(TypedElement):
     """Section of sensors."""
 
     tag: ClassVar[str] = "sensor"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class SensorElement(TypedElement):
     """Fields every sensor element shares."""
 
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Cutoff (spot angle for lights; output clamp for sensors).
-    cutoff: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    cutoff: float | None = number()
     #: Custom user data (numbers).
-    user: Floats | None = attrs.field(default=None, converter=to_floats)
+    user: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class SampledSensor(SensorElement):
     """Sensors with delay and sampling settings."""
 
     #: Delay, in time units.
-    delay: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    delay: float | None = number()
     #: Interpolation of delayed values.
-    interp: str | None = attrs.field(default=None, converter=to_str)
+    interp: str | None = text()
     #: Sampling interval (and phase).
-    interval: Floats | None = attrs.field(default=None, converter=to_floats)
+    interval: Floats | None = numbers()
     #: Number of samples kept for delays.
-    nsample: int | None = attrs.field(default=None, converter=to_int)
+    nsample: int | None = integer()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class NoisySensor(SampledSensor):
     """Sampled sensors that declare a noise level."""
 
     #: Standard deviation of noise (informational).
-    noise: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    noise: float | None = number()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class SiteSensor(NoisySensor):
     """Sensors attached to a site."""
 
     #: Name of the site.
-    site: str | None = attrs.field(default=None, converter=to_str)
+    site: str | None = reference("site")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Touch(SiteSensor):
     """Sum of normal contact forces in the site's volume."""
 
     tag: ClassVar[str] = "touch"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/touch",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Accelerometer(SiteSensor):
     """Linear acceleration at a site."""
 
     tag: ClassVar[str] = "accelerometer"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/accelerometer",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Velocimeter(SiteSensor):
     """Linear velocity at a site."""
 
     tag: ClassVar[str] = "velocimeter"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/velocimeter",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Gyro(SiteSensor):
     """Angular velocity at a site."""
 
     tag: ClassVar[str] = "gyro"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/gyro",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Force(SiteSensor):
     """Interaction force at a site."""
 
     tag: ClassVar[str] = "force"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/force",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Torque(SiteSensor):
     """Interaction torque at a site."""
 
     tag: ClassVar[str] = "torque"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/torque",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Magnetometer(SiteSensor):
     """Magnetic flux at a site."""
 
     tag: ClassVar[str] = "magnetometer"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/magnetometer",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class CamProjection(SiteSensor):
     """Projection of a site onto a camera image."""
 
     tag: ClassVar[str] = "camprojection"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/camprojection",)
     #: Name of the camera.
-    camera: str | None = attrs.field(default=None, converter=to_str)
+    camera: str | None = reference("camera")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Rangefinder(SiteSensor):
     """Distance to the nearest surface along a ray."""
 
     tag: ClassVar[str] = "rangefinder"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/rangefinder",)
     #: Name of the camera.
-    camera: str | None = attrs.field(default=None, converter=to_str)
+    camera: str | None = reference("camera")
     #: Data values.
-    data: str | None = attrs.field(default=None, converter=to_str)
+    data: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class JointSensor(NoisySensor):
     """Sensors that read a joint."""
 
     #: Name of the joint.
-    joint: str | None = attrs.field(default=None, converter=to_str)
+    joint: str | None = reference("joint")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class JointPos(JointSensor):
     """Joint position."""
 
     tag: ClassVar[str] = "jointpos"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/jointpos",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class JointVel(JointSensor):
     """Joint velocity."""
 
     tag: ClassVar[str] = "jointvel"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/jointvel",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TendonSensor(NoisySensor):
     """Sensors that read a tendon."""
 
     #: Name of the tendon.
-    tendon: str | None = attrs.field(default=None, converter=to_str)
+    tendon: str | None = reference("tendon")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TendonPos(TendonSensor):
     """Tendon length."""
 
     tag: ClassVar[str] = "tendonpos"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tendonpos",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TendonVel(TendonSensor):
     """Tendon velocity."""
 
     tag: ClassVar[str] = "tendonvel"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tendonvel",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class ActuatorSensor(NoisySensor):
     """Sensors that read an actuator."""
 
     #: Name of the actuator.
-    actuator: str | None = attrs.field(default=None, converter=to_str)
+    actuator: str | None = reference("actuator")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class ActuatorPos(ActuatorSensor):
     """Actuator length."""
 
     tag: ClassVar[str] = "actuatorpos"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/actuatorpos",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class ActuatorVel(ActuatorSensor):
     """Actuator velocity."""
 
     tag: ClassVar[str] = "actuatorvel"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/actuatorvel",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class ActuatorFrc(ActuatorSensor):
     """Actuator force."""
 
     tag: ClassVar[str] = "actuatorfrc"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/actuatorfrc",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class JointActuatorFrc(JointSensor):
     """Total actuator force at a joint."""
 
     tag: ClassVar[str] = "jointactuatorfrc"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/jointactuatorfrc",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TendonActuatorFrc(TendonSensor):
     """Total actuator force at a tendon."""
 
     tag: ClassVar[str] = "tendonactuatorfrc"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tendonactuatorfrc",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class BallQuat(JointSensor):
     """Orientation of a ball joint."""
 
     tag: ClassVar[str] = "ballquat"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/ballquat",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class BallAngVel(JointSensor):
     """Angular velocity of a ball joint."""
 
     tag: ClassVar[str] = "ballangvel"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/ballangvel",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class JointLimitPos(JointSensor):
     """Joint limit distance."""
 
     tag: ClassVar[str] = "jointlimitpos"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/jointlimitpos",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class JointLimitVel(JointSensor):
     """Joint limit velocity."""
 
     tag: ClassVar[str] = "jointlimitvel"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/jointlimitvel",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class JointLimitFrc(JointSensor):
     """Joint limit force."""
 
     tag: ClassVar[str] = "jointlimitfrc"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/jointlimitfrc",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TendonLimitPos(TendonSensor):
     """Tendon limit distance."""
 
     tag: ClassVar[str] = "tendonlimitpos"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tendonlimitpos",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TendonLimitVel(TendonSensor):
     """Tendon limit velocity."""
 
     tag: ClassVar[str] = "tendonlimitvel"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tendonlimitvel",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TendonLimitFrc(TendonSensor):
     """Tendon limit force."""
 
     tag: ClassVar[str] = "tendonlimitfrc"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tendonlimitfrc",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class ObjectSensor(NoisySensor):
     """Sensors that read a frame of an object of any type."""
 
     #: Name of the referenced object.
-    objname: str | None = attrs.field(default=None, converter=to_str)
+    objname: str | None = reference("@objtype")
     #: Type of the referenced object.
-    objtype: str | None = attrs.field(default=None, converter=to_str)
+    objtype: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FrameSensor(ObjectSensor):
     """Frame sensors that may report relative to another frame."""
 
     #: Name of the reference frame object.
-    refname: str | None = attrs.field(default=None, converter=to_str)
+    refname: str | None = reference("@reftype")
     #: Type of the reference frame object.
-    reftype: str | None = attrs.field(default=None, converter=to_str)
+    reftype: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FramePos(FrameSensor):
     """Position of an object's frame."""
 
     tag: ClassVar[str] = "framepos"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framepos",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FrameQuat(FrameSensor):
     """Orientation of an object's frame."""
 
     tag: ClassVar[str] = "framequat"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framequat",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FrameXAxis(FrameSensor):
     """X axis of an object's frame."""
 
     tag: ClassVar[str] = "framexaxis"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framexaxis",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FrameYAxis(FrameSensor):
     """Y axis of an object's frame."""
 
     tag: ClassVar[str] = "frameyaxis"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/frameyaxis",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FrameZAxis(FrameSensor):
     """Z axis of an object's frame."""
 
     tag: ClassVar[str] = "framezaxis"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framezaxis",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FrameLinVel(FrameSensor):
     """Linear velocity of an object's frame."""
 
     tag: ClassVar[str] = "framelinvel"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framelinvel",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FrameAngVel(FrameSensor):
     """Angular velocity of an object's frame."""
 
     tag: ClassVar[str] = "frameangvel"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/frameangvel",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FrameLinAcc(ObjectSensor):
     """Linear acceleration of an object's frame."""
 
     tag: ClassVar[str] = "framelinacc"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framelinacc",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FrameAngAcc(ObjectSensor):
     """Angular acceleration of an object's frame."""
 
     tag: ClassVar[str] = "frameangacc"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/frameangacc",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class SubtreeSensor(NoisySensor):
     """Sensors that read the subtree rooted at a body."""
 
     #: Name of the body.
-    body: str | None = attrs.field(default=None, converter=to_str)
+    body: str | None = reference("body")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class SubtreeCom(SubtreeSensor):
     """Centre of mass of a subtree."""
 
     tag: ClassVar[str] = "subtreecom"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/subtreecom",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class SubtreeLinVel(SubtreeSensor):
     """Linear velocity of a subtree's centre of mass."""
 
     tag: ClassVar[str] = "subtreelinvel"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/subtreelinvel",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class SubtreeAngMom(SubtreeSensor):
     """Angular momentum of a subtree."""
 
     tag: ClassVar[str] = "subtreeangmom"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/subtreeangmom",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class InsideSite(ObjectSensor):
     """Whether an object is inside a site's volume."""
 
     tag: ClassVar[str] = "insidesite"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/insidesite",)
     #: Which objects count as enclosed.
-    enclosed: str | None = attrs.field(default=None, converter=to_str)
+    enclosed: str | None = text()
     #: Name of the site.
-    site: str | None = attrs.field(default=None, converter=to_str)
+    site: str | None = reference("site")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class GeomPairSensor(NoisySensor):
     """Sensors that measure between two geoms or bodies."""
 
     #: Name of the first body.
-    body1: str | None = attrs.field(default=None, converter=to_str)
+    body1: str | None = reference("body")
     #: Name of the second body.
-    body2: str | None = attrs.field(default=None, converter=to_str)
+    body2: str | None = reference("body")
     #: Name of the first geom.
-    geom1: str | None = attrs.field(default=None, converter=to_str)
+    geom1: str | None = reference("geom")
     #: Name of the second geom.
-    geom2: str | None = attrs.field(default=None, converter=to_str)
+    geom2: str | None = reference("geom")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Distance(GeomPairSensor):
     """Distance between two geoms or bodies."""
 
     tag: ClassVar[str] = "distance"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/distance",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Normal(GeomPairSensor):
     """Normal between two geoms or bodies."""
 
     tag: ClassVar[str] = "normal"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/normal",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class FromTo(GeomPairSensor):
     """Segment between the nearest points of two geoms or bodies."""
 
     tag: ClassVar[str] = "fromto"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/fromto",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class ContactSensor(GeomPairSensor):
     """Contacts matching a filter."""
 
     tag: ClassVar[str] = "contact"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/contact",)
     #: Data values.
-    data: str | None = attrs.field(default=None, converter=to_str)
+    data: str | None = text()
     #: Number of contacts reported.
-    num: int | None = attrs.field(default=None, converter=to_int)
+    num: int | None = integer()
     #: How contacts are reduced.
-    reduce: str | None = attrs.field(default=None, converter=to_str)
+    reduce: str | None = text()
     #: Name of the site.
-    site: str | None = attrs.field(default=None, converter=to_str)
+    site: str | None = reference("site")
     #: Name of the root body of the first subtree.
-    subtree1: str | None = attrs.field(default=None, converter=to_str)
+    subtree1: str | None = reference("body")
     #: Name of the root body of the second subtree.
-    subtree2: str | None = attrs.field(default=None, converter=to_str)
+    subtree2: str | None = reference("body")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class EPotential(NoisySensor):
     """Potential energy."""
 
     tag: ClassVar[str] = "e_potential"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/e_potential",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class EKinetic(NoisySensor):
     """Kinetic energy."""
 
     tag: ClassVar[str] = "e_kinetic"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/e_kinetic",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Clock(NoisySensor):
     """Simulation time."""
 
     tag: ClassVar[str] = "clock"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/clock",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Tactile(SampledSensor):
     """Tactile sensor over a mesh."""
 
     tag: ClassVar[str] = "tactile"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tactile",)
     #: MJCF attribute ``geom``; see the MuJoCo XML reference.
-    geom: str | None = attrs.field(default=None, converter=to_str)
+    geom: str | None = reference("geom")
     #: Name of the mesh asset.
-    mesh: str | None = attrs.field(default=None, converter=to_str)
+    mesh: str | None = reference("mesh")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class UserSensor(SensorElement):
     """A sensor computed by user callbacks."""
 
     tag: ClassVar[str] = "user"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/user",)
     #: Data type of the user sensor.
-    datatype: str | None = attrs.field(default=None, converter=to_str)
+    datatype: str | None = text()
     #: Dimension.
-    dim: int | None = attrs.field(default=None, converter=to_int)
+    dim: int | None = integer()
     #: Computation stage the user sensor needs.
-    needstage: str | None = attrs.field(default=None, converter=to_str)
+    needstage: str | None = text()
     #: Standard deviation of noise (informational).
-    noise: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    noise: float | None = number()
     #: Name of the referenced object.
-    objname: str | None = attrs.field(default=None, converter=to_str)
+    objname: str | None = reference("@objtype")
     #: Type of the referenced object.
-    objtype: str | None = attrs.field(default=None, converter=to_str)
+    objtype: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class SensorPlugin(SensorElement):
     """A sensor implemented by a plugin."""
 
     tag: ClassVar[str] = "plugin"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/plugin",)
     #: Name of the plugin instance.
-    instance: str | None = attrs.field(default=None, converter=to_str)
+    instance: str | None = reference("plugin")
     #: Name of the referenced object.
-    objname: str | None = attrs.field(default=None, converter=to_str)
+    objname: str | None = reference("@objtype")
     #: Type of the referenced object.
-    objtype: str | None = attrs.field(default=None, converter=to_str)
+    objtype: str | None = text()
     #: Identifier of the plugin library.
-    plugin: str | None = attrs.field(default=None, converter=to_str)
+    plugin: str | None = text()
     #: Name of the reference frame object.
-    refname: str | None = attrs.field(default=None, converter=to_str)
+    refname: str | None = reference("@reftype")
     #: Type of the reference frame object.
-    reftype: str | None = attrs.field(default=None, converter=to_str)
+    reftype: str | None = text()

@@ -8,23 +8,22 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.keywords import LIMITED
-from mjcf_model.values import (
-    Floats,
-    float_key,
-    one_of,
-    to_float,
-    to_floats,
-    to_int,
-    to_str,
-    to_vec1to2,
-    to_vec1to5,
-    to_vec2,
-    to_vec4,
+from mjcf_model.declaring import (
+    integer,
+    keyword,
+    node,
+    number,
+    numbers,
+    reference,
+    text,
+    vec1to2,
+    vec1to5,
+    vec2,
+    vec4,
 )
+from mjcf_model.keywords import LIMITED
+from mjcf_model.values import Floats
 
 __all__ = [
     "DefaultTendon",
@@ -40,96 +39,98 @@ __all__ = [
 ]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Tendon(TypedElement):
     """Section of tendons."""
 
     tag: ClassVar[str] = "tendon"
+    schema_keys: ClassVar[tuple[str, ...]] = ("tendon",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TendonSettings(TypedElement):
     """The tendon settings that both tendon types and ``<default><tendon>`` share."""
 
     #: Whether the total actuator force is clamped: ``true``, ``false`` or ``auto``.
-    actuatorfrclimited: str | None = attrs.field(
-        default=None, converter=to_str, validator=one_of(LIMITED)
-    )
+    actuatorfrclimited: str | None = keyword(LIMITED)
     #: Range of the total actuator force.
-    actuatorfrcrange: Floats | None = attrs.field(default=None, converter=to_vec2)
+    actuatorfrcrange: Floats | None = vec2()
     #: Armature inertia added to the degree of freedom.
-    armature: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    armature: float | None = number()
     #: Damping (coefficients of a polynomial in MuJoCo 4).
-    damping: Floats | None = attrs.field(default=None, converter=to_floats)
+    damping: Floats | None = numbers()
     #: Dry friction loss.
-    frictionloss: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    frictionloss: float | None = number()
     #: Integer group, used for visualization filters and by convention.
-    group: int | None = attrs.field(default=None, converter=to_int)
+    group: int | None = integer()
     #: Whether limits apply: ``true``, ``false`` or ``auto``.
-    limited: str | None = attrs.field(default=None, converter=to_str, validator=one_of(LIMITED))
+    limited: str | None = keyword(LIMITED)
     #: Distance at which contacts (or limits) become active.
-    margin: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    margin: float | None = number()
     #: Lower and upper limits.
-    range: Floats | None = attrs.field(default=None, converter=to_vec2)
+    range: Floats | None = vec2()
     #: Solver impedance parameters of the friction constraint.
-    solimpfriction: Floats | None = attrs.field(default=None, converter=to_vec1to5)
+    solimpfriction: Floats | None = vec1to5()
     #: Solver impedance parameters of the limit constraint.
-    solimplimit: Floats | None = attrs.field(default=None, converter=to_vec1to5)
+    solimplimit: Floats | None = vec1to5()
     #: Solver reference parameters of the friction constraint.
-    solreffriction: Floats | None = attrs.field(default=None, converter=to_vec1to2)
+    solreffriction: Floats | None = vec1to2()
     #: Solver reference parameters of the limit constraint.
-    solreflimit: Floats | None = attrs.field(default=None, converter=to_vec1to2)
+    solreflimit: Floats | None = vec1to2()
     #: Spring rest length (or dead band).
-    springlength: Floats | None = attrs.field(default=None, converter=to_floats)
+    springlength: Floats | None = numbers()
     #: Yield threshold of the spring.
-    springyield: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    springyield: float | None = number()
     #: Spring stiffness (coefficients of a polynomial in MuJoCo 4).
-    stiffness: Floats | None = attrs.field(default=None, converter=to_floats)
+    stiffness: Floats | None = numbers()
     #: Custom user data (numbers).
-    user: Floats | None = attrs.field(default=None, converter=to_floats)
+    user: Floats | None = numbers()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TendonElement(TendonSettings):
     """Fields both tendon types share: the settings plus a name and a class."""
 
     #: Name, unique within its namespace.
-    name: str | None = attrs.field(default=None, converter=to_str)
+    name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = attrs.field(default=None, converter=to_str, metadata={"xml": "class"})
+    dclass: str | None = reference("class", xml="class")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class DefaultTendon(TendonSettings):
     """Default values for tendons (``<default><tendon>``)."""
 
     tag: ClassVar[str] = "tendon"
+    schema_keys: ClassVar[tuple[str, ...]] = ("default/tendon",)
     #: Name of the material asset used for rendering.
-    material: str | None = attrs.field(default=None, converter=to_str)
+    material: str | None = reference("material")
     #: Colour and transparency (r, g, b, a).
-    rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
+    rgba: Floats | None = vec4()
     #: Width.
-    width: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    width: float | None = number()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Spatial(TendonElement):
     """A spatial tendon: a path through sites and around geoms."""
 
     tag: ClassVar[str] = "spatial"
+    schema_keys: ClassVar[tuple[str, ...]] = ("tendon/spatial",)
     #: Name of the material asset used for rendering.
-    material: str | None = attrs.field(default=None, converter=to_str)
+    material: str | None = reference("material")
     #: Colour and transparency (r, g, b, a).
-    rgba: Floats | None = attrs.field(default=None, converter=to_vec4)
+    rgba: Floats | None = vec4()
     #: Width.
-    width: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    width: float | None = number()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Fixed(TendonElement):
     """A fixed tendon: a linear combination of joint positions."""
 
     tag: ClassVar[str] = "fixed"
+    schema_keys: ClassVar[tuple[str, ...]] = ("tendon/fixed",)
 
     @property
     def joints(self) -> tuple[TendonJoint, ...]:
@@ -137,41 +138,45 @@ class Fixed(TendonElement):
         return self._of_type(TendonJoint)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TendonSite(TypedElement):
     """A site the spatial tendon passes through."""
 
     tag: ClassVar[str] = "site"
+    schema_keys: ClassVar[tuple[str, ...]] = ("tendon/spatial/site",)
     #: Name of the site.
-    site: str | None = attrs.field(default=None, converter=to_str)
+    site: str | None = reference("site")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TendonGeom(TypedElement):
     """A geom the spatial tendon wraps around."""
 
     tag: ClassVar[str] = "geom"
+    schema_keys: ClassVar[tuple[str, ...]] = ("tendon/spatial/geom",)
     #: MJCF attribute ``geom``; see the MuJoCo XML reference.
-    geom: str | None = attrs.field(default=None, converter=to_str)
+    geom: str | None = reference("geom")
     #: Name of the site that chooses the wrapping side.
-    sidesite: str | None = attrs.field(default=None, converter=to_str)
+    sidesite: str | None = reference("site")
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Pulley(TypedElement):
     """Starts a new branch of a spatial tendon."""
 
     tag: ClassVar[str] = "pulley"
+    schema_keys: ClassVar[tuple[str, ...]] = ("tendon/spatial/pulley",)
     #: Divisor of the tendon length of the branch after the pulley.
-    divisor: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    divisor: float | None = number()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class TendonJoint(TypedElement):
     """A joint and its coefficient in a fixed tendon."""
 
     tag: ClassVar[str] = "joint"
+    schema_keys: ClassVar[tuple[str, ...]] = ("tendon/fixed/joint",)
     #: Coefficient of the joint in the fixed tendon.
-    coef: float | None = attrs.field(default=None, converter=to_float, eq=float_key)
+    coef: float | None = number()
     #: Name of the joint.
-    joint: str | None = attrs.field(default=None, converter=to_str)
+    joint: str | None = reference("joint")

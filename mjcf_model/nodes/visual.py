@@ -8,10 +8,8 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-import attrs
-
 from mjcf_model.base import TypedElement
-from mjcf_model.values import to_str
+from mjcf_model.declaring import node, text
 
 __all__ = [
     "Visual",
@@ -24,204 +22,211 @@ __all__ = [
 ]
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class Visual(TypedElement):
     """Visualization settings section."""
 
     tag: ClassVar[str] = "visual"
+    schema_keys: ClassVar[tuple[str, ...]] = ("visual",)
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class VisualGlobal(TypedElement):
     """Global visualization settings."""
 
     tag: ClassVar[str] = "global"
+    schema_keys: ClassVar[tuple[str, ...]] = ("visual/global",)
     #: Visualization setting ``azimuth``; see the MuJoCo XML reference.
-    azimuth: str | None = attrs.field(default=None, converter=to_str)
+    azimuth: str | None = text()
     #: Visualization setting ``bvactive``; see the MuJoCo XML reference.
-    bvactive: str | None = attrs.field(default=None, converter=to_str)
+    bvactive: str | None = text()
     #: Visualization setting ``cameraid``; see the MuJoCo XML reference.
-    cameraid: str | None = attrs.field(default=None, converter=to_str)
+    cameraid: str | None = text()
     #: Elevation data.
-    elevation: str | None = attrs.field(default=None, converter=to_str)
+    elevation: str | None = text()
     #: Visualization setting ``ellipsoidinertia``; see the MuJoCo XML reference.
-    ellipsoidinertia: str | None = attrs.field(default=None, converter=to_str)
+    ellipsoidinertia: str | None = text()
     #: Vertical field of view in degrees.
-    fovy: str | None = attrs.field(default=None, converter=to_str)
+    fovy: str | None = text()
     #: Visualization setting ``glow``; see the MuJoCo XML reference.
-    glow: str | None = attrs.field(default=None, converter=to_str)
+    glow: str | None = text()
     #: Inter-pupillary distance for stereo rendering.
-    ipd: str | None = attrs.field(default=None, converter=to_str)
+    ipd: str | None = text()
     #: Visualization setting ``linewidth``; see the MuJoCo XML reference.
-    linewidth: str | None = attrs.field(default=None, converter=to_str)
+    linewidth: str | None = text()
     #: Visualization setting ``offheight``; see the MuJoCo XML reference.
-    offheight: str | None = attrs.field(default=None, converter=to_str)
+    offheight: str | None = text()
     #: Visualization setting ``offwidth``; see the MuJoCo XML reference.
-    offwidth: str | None = attrs.field(default=None, converter=to_str)
+    offwidth: str | None = text()
     #: Visualization setting ``orthographic``; see the MuJoCo XML reference.
-    orthographic: str | None = attrs.field(default=None, converter=to_str)
+    orthographic: str | None = text()
     #: Visualization setting ``realtime``; see the MuJoCo XML reference.
-    realtime: str | None = attrs.field(default=None, converter=to_str)
+    realtime: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class VisualQuality(TypedElement):
     """Rendering quality settings."""
 
     tag: ClassVar[str] = "quality"
+    schema_keys: ClassVar[tuple[str, ...]] = ("visual/quality",)
     #: Visualization setting ``numquads``; see the MuJoCo XML reference.
-    numquads: str | None = attrs.field(default=None, converter=to_str)
+    numquads: str | None = text()
     #: Visualization setting ``numslices``; see the MuJoCo XML reference.
-    numslices: str | None = attrs.field(default=None, converter=to_str)
+    numslices: str | None = text()
     #: Visualization setting ``numstacks``; see the MuJoCo XML reference.
-    numstacks: str | None = attrs.field(default=None, converter=to_str)
+    numstacks: str | None = text()
     #: Visualization setting ``offsamples``; see the MuJoCo XML reference.
-    offsamples: str | None = attrs.field(default=None, converter=to_str)
+    offsamples: str | None = text()
     #: Visualization setting ``shadowsize``; see the MuJoCo XML reference.
-    shadowsize: str | None = attrs.field(default=None, converter=to_str)
+    shadowsize: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class VisualHeadlight(TypedElement):
     """The headlight."""
 
     tag: ClassVar[str] = "headlight"
+    schema_keys: ClassVar[tuple[str, ...]] = ("visual/headlight",)
     #: Whether the element is active initially.
-    active: str | None = attrs.field(default=None, converter=to_str)
+    active: str | None = text()
     #: Ambient colour.
-    ambient: str | None = attrs.field(default=None, converter=to_str)
+    ambient: str | None = text()
     #: Diffuse colour.
-    diffuse: str | None = attrs.field(default=None, converter=to_str)
+    diffuse: str | None = text()
     #: Specular colour or intensity.
-    specular: str | None = attrs.field(default=None, converter=to_str)
+    specular: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class VisualMap(TypedElement):
     """Mapping of model quantities to visual ones."""
 
     tag: ClassVar[str] = "map"
+    schema_keys: ClassVar[tuple[str, ...]] = ("visual/map",)
     #: Visualization setting ``actuatortendon``; see the MuJoCo XML reference.
-    actuatortendon: str | None = attrs.field(default=None, converter=to_str)
+    actuatortendon: str | None = text()
     #: Visualization setting ``alpha``; see the MuJoCo XML reference.
-    alpha: str | None = attrs.field(default=None, converter=to_str)
+    alpha: str | None = text()
     #: Visualization setting ``fogend``; see the MuJoCo XML reference.
-    fogend: str | None = attrs.field(default=None, converter=to_str)
+    fogend: str | None = text()
     #: Visualization setting ``fogstart``; see the MuJoCo XML reference.
-    fogstart: str | None = attrs.field(default=None, converter=to_str)
+    fogstart: str | None = text()
     #: Peak force.
-    force: str | None = attrs.field(default=None, converter=to_str)
+    force: str | None = text()
     #: Visualization setting ``haze``; see the MuJoCo XML reference.
-    haze: str | None = attrs.field(default=None, converter=to_str)
+    haze: str | None = text()
     #: Visualization setting ``shadowclip``; see the MuJoCo XML reference.
-    shadowclip: str | None = attrs.field(default=None, converter=to_str)
+    shadowclip: str | None = text()
     #: Visualization setting ``shadowscale``; see the MuJoCo XML reference.
-    shadowscale: str | None = attrs.field(default=None, converter=to_str)
+    shadowscale: str | None = text()
     #: Spring stiffness (coefficients of a polynomial in MuJoCo 4).
-    stiffness: str | None = attrs.field(default=None, converter=to_str)
+    stiffness: str | None = text()
     #: Visualization setting ``stiffnessrot``; see the MuJoCo XML reference.
-    stiffnessrot: str | None = attrs.field(default=None, converter=to_str)
+    stiffnessrot: str | None = text()
     #: Visualization setting ``torque``; see the MuJoCo XML reference.
-    torque: str | None = attrs.field(default=None, converter=to_str)
+    torque: str | None = text()
     #: Visualization setting ``zfar``; see the MuJoCo XML reference.
-    zfar: str | None = attrs.field(default=None, converter=to_str)
+    zfar: str | None = text()
     #: Visualization setting ``znear``; see the MuJoCo XML reference.
-    znear: str | None = attrs.field(default=None, converter=to_str)
+    znear: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class VisualScale(TypedElement):
     """Sizes of decorative elements."""
 
     tag: ClassVar[str] = "scale"
+    schema_keys: ClassVar[tuple[str, ...]] = ("visual/scale",)
     #: Visualization setting ``actuatorlength``; see the MuJoCo XML reference.
-    actuatorlength: str | None = attrs.field(default=None, converter=to_str)
+    actuatorlength: str | None = text()
     #: Visualization setting ``actuatorwidth``; see the MuJoCo XML reference.
-    actuatorwidth: str | None = attrs.field(default=None, converter=to_str)
+    actuatorwidth: str | None = text()
     #: Name of the camera.
-    camera: str | None = attrs.field(default=None, converter=to_str)
+    camera: str | None = text()
     #: Visualization setting ``com``; see the MuJoCo XML reference.
-    com: str | None = attrs.field(default=None, converter=to_str)
+    com: str | None = text()
     #: Visualization setting ``connect``; see the MuJoCo XML reference.
-    connect: str | None = attrs.field(default=None, converter=to_str)
+    connect: str | None = text()
     #: Visualization setting ``constraint``; see the MuJoCo XML reference.
-    constraint: str | None = attrs.field(default=None, converter=to_str)
+    constraint: str | None = text()
     #: Visualization setting ``contactheight``; see the MuJoCo XML reference.
-    contactheight: str | None = attrs.field(default=None, converter=to_str)
+    contactheight: str | None = text()
     #: Visualization setting ``contactwidth``; see the MuJoCo XML reference.
-    contactwidth: str | None = attrs.field(default=None, converter=to_str)
+    contactwidth: str | None = text()
     #: Visualization setting ``forcewidth``; see the MuJoCo XML reference.
-    forcewidth: str | None = attrs.field(default=None, converter=to_str)
+    forcewidth: str | None = text()
     #: Visualization setting ``framelength``; see the MuJoCo XML reference.
-    framelength: str | None = attrs.field(default=None, converter=to_str)
+    framelength: str | None = text()
     #: Visualization setting ``framewidth``; see the MuJoCo XML reference.
-    framewidth: str | None = attrs.field(default=None, converter=to_str)
+    framewidth: str | None = text()
     #: Visualization setting ``frustum``; see the MuJoCo XML reference.
-    frustum: str | None = attrs.field(default=None, converter=to_str)
+    frustum: str | None = text()
     #: Visualization setting ``jointlength``; see the MuJoCo XML reference.
-    jointlength: str | None = attrs.field(default=None, converter=to_str)
+    jointlength: str | None = text()
     #: Visualization setting ``jointwidth``; see the MuJoCo XML reference.
-    jointwidth: str | None = attrs.field(default=None, converter=to_str)
+    jointwidth: str | None = text()
     #: Visualization setting ``light``; see the MuJoCo XML reference.
-    light: str | None = attrs.field(default=None, converter=to_str)
+    light: str | None = text()
     #: Visualization setting ``selectpoint``; see the MuJoCo XML reference.
-    selectpoint: str | None = attrs.field(default=None, converter=to_str)
+    selectpoint: str | None = text()
     #: Visualization setting ``slidercrank``; see the MuJoCo XML reference.
-    slidercrank: str | None = attrs.field(default=None, converter=to_str)
+    slidercrank: str | None = text()
 
 
-@attrs.frozen(kw_only=True, repr=False)
+@node
 class VisualRgba(TypedElement):
     """Colours of decorative elements."""
 
     tag: ClassVar[str] = "rgba"
+    schema_keys: ClassVar[tuple[str, ...]] = ("visual/rgba",)
     #: Name of the actuator.
-    actuator: str | None = attrs.field(default=None, converter=to_str)
+    actuator: str | None = text()
     #: Visualization setting ``actuatornegative``; see the MuJoCo XML reference.
-    actuatornegative: str | None = attrs.field(default=None, converter=to_str)
+    actuatornegative: str | None = text()
     #: Visualization setting ``actuatorpositive``; see the MuJoCo XML reference.
-    actuatorpositive: str | None = attrs.field(default=None, converter=to_str)
+    actuatorpositive: str | None = text()
     #: Visualization setting ``bv``; see the MuJoCo XML reference.
-    bv: str | None = attrs.field(default=None, converter=to_str)
+    bv: str | None = text()
     #: Visualization setting ``bvactive``; see the MuJoCo XML reference.
-    bvactive: str | None = attrs.field(default=None, converter=to_str)
+    bvactive: str | None = text()
     #: Name of the camera.
-    camera: str | None = attrs.field(default=None, converter=to_str)
+    camera: str | None = text()
     #: Visualization setting ``com``; see the MuJoCo XML reference.
-    com: str | None = attrs.field(default=None, converter=to_str)
+    com: str | None = text()
     #: Visualization setting ``connect``; see the MuJoCo XML reference.
-    connect: str | None = attrs.field(default=None, converter=to_str)
+    connect: str | None = text()
     #: Visualization setting ``constraint``; see the MuJoCo XML reference.
-    constraint: str | None = attrs.field(default=None, converter=to_str)
+    constraint: str | None = text()
     #: Visualization setting ``contactforce``; see the MuJoCo XML reference.
-    contactforce: str | None = attrs.field(default=None, converter=to_str)
+    contactforce: str | None = text()
     #: Visualization setting ``contactfriction``; see the MuJoCo XML reference.
-    contactfriction: str | None = attrs.field(default=None, converter=to_str)
+    contactfriction: str | None = text()
     #: Visualization setting ``contactgap``; see the MuJoCo XML reference.
-    contactgap: str | None = attrs.field(default=None, converter=to_str)
+    contactgap: str | None = text()
     #: Visualization setting ``contactpoint``; see the MuJoCo XML reference.
-    contactpoint: str | None = attrs.field(default=None, converter=to_str)
+    contactpoint: str | None = text()
     #: Visualization setting ``contacttorque``; see the MuJoCo XML reference.
-    contacttorque: str | None = attrs.field(default=None, converter=to_str)
+    contacttorque: str | None = text()
     #: Visualization setting ``crankbroken``; see the MuJoCo XML reference.
-    crankbroken: str | None = attrs.field(default=None, converter=to_str)
+    crankbroken: str | None = text()
     #: Visualization setting ``fog``; see the MuJoCo XML reference.
-    fog: str | None = attrs.field(default=None, converter=to_str)
+    fog: str | None = text()
     #: Peak force.
-    force: str | None = attrs.field(default=None, converter=to_str)
+    force: str | None = text()
     #: Visualization setting ``frustum``; see the MuJoCo XML reference.
-    frustum: str | None = attrs.field(default=None, converter=to_str)
+    frustum: str | None = text()
     #: Visualization setting ``haze``; see the MuJoCo XML reference.
-    haze: str | None = attrs.field(default=None, converter=to_str)
+    haze: str | None = text()
     #: How inertia is computed from the mesh.
-    inertia: str | None = attrs.field(default=None, converter=to_str)
+    inertia: str | None = text()
     #: Name of the joint.
-    joint: str | None = attrs.field(default=None, converter=to_str)
+    joint: str | None = text()
     #: Visualization setting ``light``; see the MuJoCo XML reference.
-    light: str | None = attrs.field(default=None, converter=to_str)
+    light: str | None = text()
     #: Visualization setting ``rangefinder``; see the MuJoCo XML reference.
-    rangefinder: str | None = attrs.field(default=None, converter=to_str)
+    rangefinder: str | None = text()
     #: Visualization setting ``selectpoint``; see the MuJoCo XML reference.
-    selectpoint: str | None = attrs.field(default=None, converter=to_str)
+    selectpoint: str | None = text()
     #: Visualization setting ``slidercrank``; see the MuJoCo XML reference.
-    slidercrank: str | None = attrs.field(default=None, converter=to_str)
+    slidercrank: str | None = text()

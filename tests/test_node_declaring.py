@@ -1,0 +1,128 @@
+"""The node core: one decorator, sparse storage, and the fast builder as an owned contract."""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+import attrs
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from mjcf_model import Geom, Joint
+from mjcf_model.base import TypedElement, build_node
+from mjcf_model.declaring import declared_classes, node, reference, vec3
+from mjcf_model.namespaces import SCHEMA
+from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.strategies import element_values, elements
+
+TYPED_CLASSES = sorted(set(CLASS_BY_KEY.values()), key=lambda cls: cls.__name__)
+
+
+@pytest.mark.parametrize("cls", TYPED_CLASSES, ids=lambda cls: cls.__name__)
+@settings(max_examples=15)
+@given(data=st.data())
+def test_building_from_values_equals_the_attrs_constructor(
+    cls: type[TypedElement], data: st.DataObject
+) -> None:
+    """build_node(cls, values) equals cls(**values), hashes alike and reads every field alike."""
+    values = data.draw(element_values(cls))
+    built, constructed = build_node(cls, values), cls(**values)
+    assert built == constructed
+    assert hash(built) == hash(constructed)
+    assert all(getattr(built, f.name) == getattr(constructed, f.name) for f in attrs.fields(cls))
+
+
+@pytest.mark.parametrize("cls", TYPED_CLASSES, ids=lambda cls: cls.__name__)
+@settings(max_examples=15)
+@given(data=st.data())
+def test_building_on_a_base_equals_attrs_evolve(
+    cls: type[TypedElement], data: st.DataObject
+) -> None:
+    """build_node(cls, values, base) equals attrs.evolve(base, **values), None included."""
+    base = data.draw(elements(cls))
+    values = data.draw(element_values(cls))
+    assert build_node(cls, values, base) == attrs.evolve(base, **values)
+
+
+def test_only_the_fields_given_are_stored() -> None:
+    """A built node stores the fields it was given (None removes one); the rest read defaults."""
+    geom = build_node(Geom, {"size": "0.1", "name": "g"})
+    assert set(vars(geom)) == {"size", "name"}
+    assert geom.mass is None and geom.children == () and not geom.extra
+    cleared = build_node(Geom, {"name": None}, geom)
+    assert set(vars(cleared)) == {"size"} and cleared.name is None
+
+
+def test_building_an_unknown_field_raises_like_the_constructor() -> None:
+    """An unknown field name is a TypeError, as attrs' constructor makes it."""
+    with pytest.raises(TypeError, match="Geom has no field 'colour'"):
+        build_node(Geom, {"colour": "red"})
+    with pytest.raises(TypeError):
+        Geom(colour="red")  # type: ignore[call-arg]
+
+
+def test_building_converts_and_validates_like_the_constructor() -> None:
+    """Converters and validators run on the given values, with the constructor's errors."""
+    assert build_node(Joint, {"range": "0 1"}).range == (0.0, 1.0)
+    with pytest.raises(ValueError, match="expected 2 numbers"):
+        build_node(Joint, {"range": "0"})
+    with pytest.raises(ValueError, match="hinge"):
+        build_node(Joint, {"type": "hinges"})
+
+
+def test_declaring_refuses_what_the_builder_cannot_honour() -> None:
+    """A node class with __attrs_post_init__ is refused when it is declared."""
+    with pytest.raises(TypeError, match="__attrs_post_init__"):
+
+        @node
+        class Checked(TypedElement):
+            tag: ClassVar[str] = "checked"
+
+            def __attrs_post_init__(self) -> None:
+                pass
+
+
+def test_a_declared_class_gets_sparse_fields_and_its_info() -> None:
+    """@node gives keyword-only frozen attrs classes whose info lists their MJCF attributes."""
+
+    @node
+    class Thing(TypedElement):
+        tag: ClassVar[str] = "thing"
+        pos: tuple[float, ...] | None = vec3()
+        body: str | None = reference("body", xml="attachedto")
+
+    thing = Thing(pos=[1, 2, 3], body="torso")
+    assert thing.pos == (1.0, 2.0, 3.0) and thing.body == "torso"
+    assert set(vars(build_node(Thing, {"pos": [1, 2, 3]}))) == {"pos"}
+    assert Thing.__node_info__.table == {"pos": "pos", "attachedto": "body"}
+    with pytest.raises(attrs.exceptions.FrozenInstanceError):
+        thing.pos = None  # type: ignore[misc]
+    with pytest.raises(TypeError):
+        Thing((1, 2, 3))  # type: ignore[misc]
+    assert Thing in declared_classes()
+
+
+def test_registry_is_every_declared_schema_key() -> None:
+    """CLASS_BY_KEY holds exactly the schema keys the classes declare, all in the table."""
+    declared = {
+        key: cls
+        for cls in declared_classes()
+        for key in cls.__node_info__.keys  # type: ignore[attr-defined]
+    }
+    assert dict(CLASS_BY_KEY) == declared
+    assert set(CLASS_BY_KEY) <= set(SCHEMA)
+    assert all(cls.__node_info__.tag == key.rsplit("/", 1)[-1] for key, cls in CLASS_BY_KEY.items())
+
+
+@pytest.mark.parametrize("key", sorted(CLASS_BY_KEY))
+def test_reference_fields_agree_with_the_namespace_table(key: str) -> None:
+    """A field declared reference(ns) is a reference to ns in the table, and the converse."""
+    cls, spec = CLASS_BY_KEY[key], SCHEMA[key]
+    fields = {f.name: f for f in attrs.fields(cls)}
+    declared: dict[str, Any] = {}
+    for xml, field_name in cls.__node_info__.table.items():
+        if xml in spec.attributes:
+            declared[xml] = fields[field_name].metadata.get("namespace")
+    table = {xml: spec.references.get(xml) for xml in declared}
+    assert declared == table
