@@ -66,6 +66,7 @@ def _table(rows: list[Row]) -> str:
 
 def _cases(tiny: bool) -> list[Case]:
     from benchmarks.cases_corpus import corpus_cases
+    from benchmarks.cases_imports import import_cases
     from benchmarks.cases_objects import object_cases
     from benchmarks.cases_synthetic import synthetic_cases
 
@@ -74,6 +75,7 @@ def _cases(tiny: bool) -> list[Case]:
         *corpus_cases(corpus[:3] if tiny else corpus),
         *synthetic_cases(50 if tiny else 5000),
         *object_cases((2, 5) if tiny else (10, 100, 1000)),
+        *import_cases(),
     ]
 
 

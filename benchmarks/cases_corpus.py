@@ -8,17 +8,21 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
+from benchmarks.etree_path import (
+    MISSING_ROBOSUITE,
+    etree_inlined,
+    robosuite_scaled,
+    robosuite_utils,
+    scale_contenders,
+)
 from benchmarks.harness import OURS, Case, Contender
 
 __all__ = ["corpus_cases"]
 
-
-def _robosuite_utils() -> object | None:
-    try:
-        import robosuite.utils.mjcf_utils as utils
-    except ImportError:
-        return None
-    return utils
+#: What mjcf-model's corpus rows that rename do with ``<include>``.
+_INLINED = "includes inlined (load(..., inline_includes=True)), as on the robosuite row"
+#: What the robosuite rows do with ``<include>`` (robosuite itself has no include support).
+_SPLICED = "includes inlined: each replaced by its file's elements (etree_inlined)"
 
 
 def _each(files: Sequence[Path], work: Callable[[Path], object]) -> Callable[[], object]:
@@ -50,6 +54,14 @@ def _mjspec(path: Path) -> str:
     return str(parent.to_xml())
 
 
+def _scales(tree: ET.Element) -> bool:
+    try:
+        robosuite_scaled(tree)
+    except Exception:
+        return False
+    return True
+
+
 def _working(files: Sequence[Path], work: Callable[[Path], object]) -> list[Path]:
     """The files a peer handles at all (dm_control lags MuJoCo's schema)."""
     fine = []
@@ -67,7 +79,7 @@ def corpus_cases(files: Sequence[Path]) -> list[Case]:
     from mjcf_model import prefixed, scaled
     from serializers import dumps, load
 
-    utils = _robosuite_utils()
+    utils = robosuite_utils()
     common = list(files)
     peers: dict[str, Callable[[Path], object]] = {}
     try:
@@ -84,7 +96,7 @@ def corpus_cases(files: Sequence[Path]) -> list[Case]:
         return dumps(prefixed(load(path, inline_includes=True), "p_"))
 
     def robosuite_all(path: Path) -> str:
-        root = ET.parse(path).getroot()
+        root = etree_inlined(path)
         utils.add_prefix(root, "p_")  # type: ignore[union-attr]
         return ET.tostring(root, encoding="unicode")
 
@@ -93,20 +105,24 @@ def corpus_cases(files: Sequence[Path]) -> list[Case]:
 
         return bytes(lxml.etree.tostring(lxml.etree.parse(str(path))))
 
-    missing_robosuite = "robosuite is not installed"
     inputs = f"{len(common)} corpus files (sum over files)"
     cases = [
         Case(
             "corpus: load + prefix + dump",
             [
-                Contender(OURS, _each(common, ours_all)),
+                Contender(OURS, _each(common, ours_all), note=_INLINED),
                 Contender(
                     "robosuite (ElementTree + add_prefix)",
                     _each(common, robosuite_all) if utils else None,
-                    missing_robosuite,
+                    MISSING_ROBOSUITE,
+                    note=_SPLICED,
                 ),
                 *[
-                    Contender(f"{name} (load + attach + write)", _each(common, work))
+                    Contender(
+                        f"{name} (load + attach + write)",
+                        _each(common, work),
+                        note="includes read by the tool itself",
+                    )
                     for name, work in peers.items()
                 ],
                 Contender("lxml parse + serialize (floor, no prefix)", _each(common, lxml_io)),
@@ -127,18 +143,19 @@ def corpus_cases(files: Sequence[Path]) -> list[Case]:
         ),
     ]
     models = [load(p, inline_includes=True) for p in common]
-    trees = [ET.parse(p).getroot() for p in common]
+    trees = [etree_inlined(p) for p in common]
     cases.append(
         Case(
             "corpus: prefix alone",
             [
-                Contender(OURS, lambda: [prefixed(m, "p_") for m in models]),
+                Contender(OURS, lambda: [prefixed(m, "p_") for m in models], note=_INLINED),
                 Contender(
                     "robosuite add_prefix (in place)",
                     (lambda: [utils.add_prefix(copy.deepcopy(t), "p_") for t in trees])
                     if utils
-                    else None,  # type: ignore[union-attr]
-                    missing_robosuite,
+                    else None,
+                    MISSING_ROBOSUITE,
+                    note=_SPLICED + "; on a deepcopy",
                 ),
                 Contender(
                     "ElementTree deepcopy alone (part of the line above)",
@@ -148,34 +165,15 @@ def corpus_cases(files: Sequence[Path]) -> list[Case]:
             inputs,
         )
     )
-
-    def robosuite_scale(tree: ET.Element) -> None:
-        tree = copy.deepcopy(tree)
-        world = tree.find("worldbody")
-        asset = tree.find("asset")
-        if world is None:
-            return
-        utils.scale_mjcf_model(  # type: ignore[union-attr]
-            world,
-            asset if asset is not None else ET.Element("asset"),
-            2.0,
-            utils.get_elements,
-            worldbody=world,  # type: ignore[union-attr]
-        )
-
-    scalable = [i for i, t in enumerate(trees) if utils is None or _working([t], robosuite_scale)]  # type: ignore[list-item]
+    pairs = [(m, t) for m, t in zip(models, trees, strict=True) if utils is None or _scales(t)]
     cases.append(
         Case(
             "corpus: uniform scale alone",
-            [
-                Contender(OURS, lambda: [scaled(models[i], 2) for i in scalable]),
-                Contender(
-                    "robosuite scale_mjcf_model (on a deepcopy)",
-                    (lambda: [robosuite_scale(trees[i]) for i in scalable]) if utils else None,
-                    missing_robosuite,
-                ),
-            ],
-            f"{len(scalable)} corpus files robosuite can scale",
+            scale_contenders(
+                lambda: [scaled(m, 2) for m, _ in pairs],
+                (lambda: [robosuite_scaled(t) for _, t in pairs]) if utils else None,
+            ),
+            f"{len(pairs)} corpus files robosuite can scale",
         )
     )
     return cases

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
+from benchmarks.etree_path import robosuite_scaled, robosuite_utils, scale_contenders
 from benchmarks.harness import OURS, Case, Contender
 from benchmarks.inputs import synthetic_xml
 
@@ -17,10 +18,12 @@ def synthetic_cases(bodies: int) -> list[Case]:
     from mjcf_model import prefixed, scaled
     from serializers import dumps, from_dict, loads, to_dict
 
+    robosuite = robosuite_utils() is not None
     cases = []
     for shape in ("deep", "wide"):
         text = synthetic_xml(bodies, shape)
         model, twin = loads(text), loads(text)
+        tree = ET.fromstring(text)
         data = to_dict(model)
         inputs = f"{bodies} bodies, {shape}"
         name = f"synthetic {shape}"
@@ -43,7 +46,14 @@ def synthetic_cases(bodies: int) -> list[Case]:
             Case(f"{name}: load", [Contender(OURS, lambda text=text: loads(text))], inputs),
             Case(f"{name}: dump", [Contender(OURS, lambda m=model: dumps(m))], inputs),
             Case(f"{name}: prefix", [Contender(OURS, lambda m=model: prefixed(m, "p_"))], inputs),
-            Case(f"{name}: uniform scale", [Contender(OURS, lambda m=model: scaled(m, 2))], inputs),
+            Case(
+                f"{name}: uniform scale",
+                scale_contenders(
+                    lambda m=model: scaled(m, 2),
+                    (lambda t=tree: robosuite_scaled(t)) if robosuite else None,
+                ),
+                inputs,
+            ),
             Case(f"{name}: to_dict", [Contender(OURS, lambda m=model: to_dict(m))], inputs),
             Case(f"{name}: from_dict", [Contender(OURS, lambda d=data: from_dict(d))], inputs),
             Case(

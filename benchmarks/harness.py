@@ -23,6 +23,8 @@ class Contender:
     run: Callable[[], object] | None
     #: Why the contender cannot run here (``run`` is then ``None``).
     missing: str = ""
+    #: What exactly the contender does, for the table's note column.
+    note: str = ""
 
 
 @dataclass
@@ -94,7 +96,7 @@ def run_case(case: Case, repeat: int) -> list[Row]:
                 statistics.median(times),
                 None,
                 peak,
-                "",
+                contender.note,
                 times,
             )
         )

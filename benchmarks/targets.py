@@ -27,7 +27,7 @@ def _line(text: str, value: float | None, limit: float, at_most: bool) -> str:
     if value is None:
         return f"| {text} | not measured | |"
     met = value <= limit if at_most else value >= limit
-    bound = f"{'<=' if at_most else '>='} {limit:g}"
+    bound = f"target {'<=' if at_most else '>='} {limit:g}"
     return f"| {text} | {value:.2f} ({bound}) | {'met' if met else 'MISSED'} |"
 
 
@@ -35,86 +35,95 @@ def _ratio(a: float | None, b: float | None) -> float | None:
     return a / b if a is not None and b else None
 
 
-def targets(rows: list[Row]) -> str:
-    """A table: each target, the measured ratio, and whether it holds."""
-    lines = ["| target | measured | |", "|---|---|---|"]
-    corpus = "corpus: load + prefix + dump"
-    ours = _median(rows, corpus, OURS)
-    lines.append(
-        _line(
-            "corpus load + prefix + dump: mjcf-model / robosuite ElementTree path",
-            _ratio(ours, _median(rows, corpus, "robosuite")),
-            1.5,
-            at_most=True,
-        )
+def _at_most(rows: list[Row], case: str, peer: str, label: str, limit: float) -> str:
+    """mjcf-model's time over ``peer``'s in ``case``: met when at most ``limit``."""
+    return _line(
+        f"{label}: mjcf-model time / {peer} time",
+        _ratio(_median(rows, case, OURS), _median(rows, case, peer)),
+        limit,
+        at_most=True,
     )
-    lines.append(
-        _line(
-            "corpus load + prefix + dump: dm_control.mjcf / mjcf-model",
-            _ratio(_median(rows, corpus, "dm_control"), ours),
-            20,
-            at_most=False,
-        )
+
+
+def _faster(rows: list[Row], case: str, peer: str, label: str, limit: float) -> str:
+    """``peer``'s time over mjcf-model's in ``case``: met when at least ``limit``."""
+    return _line(
+        f"{label}: {peer} time / mjcf-model time",
+        _ratio(_median(rows, case, peer), _median(rows, case, OURS)),
+        limit,
+        at_most=False,
     )
+
+
+def _compose(rows: list[Row]) -> list[str]:
     sizes = sorted(
         {int(m.group(1)) for r in rows if (m := re.match(r"compose (\d+) cans \+ write", r.case))}
     )
-    if len(sizes) >= 2:
-        big, small = sizes[-1], sizes[-2]
-        write_big, write_small = (
-            f"compose {big} cans + write XML",
-            f"compose {small} cans + write XML",
-        )
-        ours_big = _median(rows, write_big, OURS)
-        lines.append(
-            _line(
-                f"compose: mjcf-model N={big} / N={small} (linear: {big / small:g}x)",
-                _ratio(ours_big, _median(rows, write_small, OURS)),
-                1.2 * big / small,
-                at_most=True,
-            )
-        )
-        lines.append(
-            _line(
-                f"compose N={big}: robosuite / mjcf-model",
-                _ratio(_median(rows, write_big, "robosuite"), ours_big),
-                20,
-                at_most=False,
-            )
-        )
-        memory = f"compose {big} cans, before writing (peak memory)"
-        lines.append(
-            _line(
-                f"compose N={big} peak memory: mjcf-model / robosuite ElementTree",
-                _ratio(
-                    *(
-                        float(p) if p else None
-                        for p in (_peak(rows, memory, OURS), _peak(rows, memory, "robosuite"))
-                    )
-                ),
-                1.0,
-                at_most=True,
-            )
-        )
+    if len(sizes) < 2:
+        return []
+    big, small = sizes[-1], sizes[-2]
+    write_big = f"compose {big} cans + write XML"
+    memory = f"compose {big} cans, before writing (peak memory)"
+    peaks = (_peak(rows, memory, OURS), _peak(rows, memory, "robosuite"))
+    return [
+        _line(
+            f"compose: mjcf-model time N={big} / N={small} (linear: {big / small:g})",
+            _ratio(
+                _median(rows, write_big, OURS),
+                _median(rows, f"compose {small} cans + write XML", OURS),
+            ),
+            1.2 * big / small,
+            at_most=True,
+        ),
+        _faster(rows, write_big, "robosuite", f"compose {big} cans + write", 20),
+        _line(
+            f"compose {big} cans peak memory: mjcf-model / robosuite",
+            _ratio(*(float(p) if p else None for p in peaks)),
+            1.0,
+            at_most=True,
+        ),
+    ]
+
+
+def targets(rows: list[Row]) -> str:
+    """A table: each target, the measured ratio, and whether it holds (issue 12's targets).
+
+    Each ratio says which time is divided by which, and its bound says which way is met.
+
+    Example:
+        >>> from benchmarks.harness import Row
+        >>> rows = [Row("corpus: load + dump", OURS, "", 0.3),
+        ...         Row("corpus: load + dump", "ElementTree parse + tostring", "", 0.1)]
+        >>> print(targets(rows).splitlines()[4])
+        | corpus load + dump: mjcf-model time / ElementTree time | 3.00 (target <= 1.5) | MISSED |
+
+    """
+    lines = ["| target | measured | |", "|---|---|---|"]
+    prefix = "corpus: load + prefix + dump"
+    lines.append(_at_most(rows, prefix, "robosuite", "corpus load + prefix + dump", 1.0))
+    lines.append(_faster(rows, prefix, "dm_control", "corpus load + prefix + dump", 20))
+    lines.append(_at_most(rows, "corpus: load + dump", "ElementTree", "corpus load + dump", 1.5))
     for shape in ("deep", "wide"):
-        name = f"synthetic {shape}"
-        load = _median(rows, f"{name}: load", OURS)
+        case = f"synthetic {shape}: load + dump"
+        lines.append(_at_most(rows, case, "ElementTree", f"synthetic {shape} load + dump", 1.5))
+    scale = "robosuite scale_mjcf_model"
+    lines.append(_at_most(rows, "corpus: uniform scale alone", scale, "corpus uniform scale", 1.0))
+    for shape in ("deep", "wide"):
+        case = f"synthetic {shape}: uniform scale"
+        lines.append(_at_most(rows, case, scale, f"synthetic {shape} uniform scale", 1.0))
+    for label in ("CanObject", "BoxObject", "CompositeObject"):
+        case = f"construct {label} + get_obj() + asset (compat layer)"
         lines.append(
-            _line(
-                f"{name}: load + dump, mjcf-model / ElementTree",
-                _ratio(
-                    _median(rows, f"{name}: load + dump", OURS),
-                    _median(rows, f"{name}: load + dump", "ElementTree"),
-                ),
-                3,
-                at_most=True,
-            )
+            _at_most(rows, case, "robosuite", f"construct {label} + get_obj() + asset", 1.0)
         )
+    lines += _compose(rows)
+    for shape in ("deep", "wide"):
+        load = _median(rows, f"synthetic {shape}: load", OURS)
         for what in ("== of two separately loaded models", "hash"):
             lines.append(
                 _line(
-                    f"{name}: {what} / load",
-                    _ratio(_median(rows, f"{name}: {what}", OURS), load),
+                    f"synthetic {shape}: mjcf-model time of {what} / of load",
+                    _ratio(_median(rows, f"synthetic {shape}: {what}", OURS), load),
                     1,
                     at_most=True,
                 )

@@ -4,14 +4,53 @@ from __future__ import annotations
 
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
-from benchmarks.harness import OURS, Case, Contender, run_case
+import mujoco
+import pytest
+
+from benchmarks.etree_path import etree_inlined, robosuite_scaled
+from benchmarks.harness import OURS, Case, Contender, Row, run_case
+from benchmarks.inputs import synthetic_xml
+from benchmarks.targets import targets
+from mjcf_model import compiled, scaled
+from mjcf_model.compare import compile_text_beside, model_differences, path_fields
+from serializers import loads
+from tests.conftest import compiling_corpus, corpus_id
+
+#: Corpus files with ``<include>`` elements (robosuite's ElementTree path must inline them).
+_INCLUDING = [p for p in compiling_corpus() if any(True for _ in ET.parse(p).iter("include"))]
+
+#: The compiled arrays of lengths both uniform-scale rows change.
+_LENGTHS = ("body_pos", "body_ipos", "geom_pos", "geom_size", "site_pos", "jnt_pos", "jnt_range")
+
+#: Issue 12's rows: (case, peer contender) pairs measured beside mjcf-model.
+_ISSUE_12_ROWS = [
+    *(
+        (f"synthetic {shape}: uniform scale", "robosuite scale_mjcf_model (on a deepcopy)")
+        for shape in ("deep", "wide")
+    ),
+    *(
+        (f"construct {name} + get_obj() + asset (compat layer)", "robosuite")
+        for name in ("CanObject", "BoxObject", "CompositeObject")
+    ),
+    *(
+        ("import time", peer)
+        for peer in (
+            "robosuite (import robosuite.utils.mjcf_utils)",
+            "dm_control (import dm_control.mjcf)",
+            "xml.etree.ElementTree (floor)",
+            "python -c pass (interpreter start-up)",
+        )
+    ),
+]
 
 
-def test_tiny_run_writes_every_case_with_every_contender(tmp_path: Path) -> None:
-    """``python -m benchmarks --tiny`` runs every case and writes the results table."""
-    output = tmp_path / "RESULTS.md"
+@pytest.fixture(scope="module")
+def tiny_results(tmp_path_factory: pytest.TempPathFactory) -> str:
+    """The RESULTS.md text of one ``python -m benchmarks --tiny`` run."""
+    output = tmp_path_factory.mktemp("benchmarks") / "RESULTS.md"
     done = subprocess.run(
         [sys.executable, "-m", "benchmarks", "--tiny", "--output", str(output)],
         capture_output=True,
@@ -20,7 +59,21 @@ def test_tiny_run_writes_every_case_with_every_contender(tmp_path: Path) -> None
         check=False,
     )
     assert done.returncode == 0, done.stderr[-2000:]
-    text = output.read_text(encoding="utf-8")
+    return output.read_text(encoding="utf-8")
+
+
+def _row(results: str, case: str, contender: str) -> list[str] | None:
+    """The cells of the table row of ``contender`` in ``case`` (``None`` if absent)."""
+    for line in results.split("## All cases")[1].splitlines():
+        cells = [cell.strip() for cell in line.strip("|").split(" | ")]
+        if len(cells) == 7 and cells[0] == case and cells[2] == contender:
+            return cells
+    return None
+
+
+def test_tiny_run_writes_every_case_with_every_contender(tiny_results: str) -> None:
+    """``python -m benchmarks --tiny`` runs every case and writes the results table."""
+    text = tiny_results
     assert "## Targets" in text and "Machine:" in text and "--tiny" in text
     for case in (
         "corpus: load + prefix + dump",
@@ -36,6 +89,59 @@ def test_tiny_run_writes_every_case_with_every_contender(tmp_path: Path) -> None
     for contender in ("robosuite", "dm_control.mjcf", "MjSpec", "lxml", "ElementTree"):
         assert contender in text, contender
     assert "failed:" not in text
+
+
+def test_every_target_finds_its_rows(tiny_results: str) -> None:
+    """Each target line of the tiny run is measured: its case and contender names exist."""
+    table = tiny_results.split("## Targets")[1].split("## All cases")[0]
+    lines = [line for line in table.splitlines() if line.startswith("| ") and "---" not in line]
+    assert len(lines) > 15 and "not measured" not in table, table
+    assert all(line.endswith(("| met |", "| MISSED |")) for line in lines[1:]), table
+
+
+@pytest.mark.parametrize(("case", "peer"), _ISSUE_12_ROWS)
+def test_issue_12_rows_stand_beside_their_peer(tiny_results: str, case: str, peer: str) -> None:
+    """Each row issue 12 adds has a measured mjcf-model side and peer side, with a ratio."""
+    for contender in (OURS, peer):
+        cells = _row(tiny_results, case, contender)
+        assert cells is not None, (case, contender)
+        median, ratio, note = cells[3], cells[4], cells[6]
+        assert median.endswith(("ms", " s")) and ratio.endswith("x"), cells
+        assert case != "import time" or "start-up" in note, cells
+
+
+@pytest.mark.parametrize("path", _INCLUDING, ids=corpus_id)
+def test_robosuite_path_reads_the_included_files_too(path: Path) -> None:
+    """The ElementTree path inlines includes as mjcf-model does: MuJoCo compiles the same model."""
+    text = ET.tostring(etree_inlined(path), encoding="unicode")
+    assert "<include" not in text
+    inlined = compile_text_beside(text, path)
+    original = mujoco.MjModel.from_xml_path(str(path))
+    assert model_differences(inlined, original, ignore=path_fields()) == []
+
+
+@pytest.mark.parametrize("shape", ["deep", "wide"])
+def test_both_scale_rows_scale_the_same_lengths(shape: str) -> None:
+    """The two scale rows (robosuite, mjcf-model) compile to the same doubled lengths."""
+    text = synthetic_xml(120, shape)
+    theirs = mujoco.MjModel.from_xml_string(
+        ET.tostring(robosuite_scaled(ET.fromstring(text)), encoding="unicode")
+    )
+    ours, unscaled = compiled(scaled(loads(text), 2)), compiled(loads(text))
+    differences = model_differences(theirs, ours)
+    assert set(_LENGTHS).isdisjoint(differences), differences
+    assert {"body_pos", "geom_size", "site_pos"} <= set(model_differences(ours, unscaled))
+
+
+def test_targets_say_met_missed_or_not_measured() -> None:
+    """A target is met inside its bound, MISSED outside it, and not measured without rows."""
+    case = "construct CanObject + get_obj() + asset (compat layer)"
+    faster = [Row(case, OURS, "", 0.1), Row(case, "robosuite", "", 0.2)]
+    slower = [Row(case, OURS, "", 0.3), Row(case, "robosuite", "", 0.2)]
+    label = "| construct CanObject + get_obj() + asset: mjcf-model time / robosuite time |"
+    assert f"{label} 0.50 (target <= 1) | met |" in targets(faster)
+    assert f"{label} 1.50 (target <= 1) | MISSED |" in targets(slower)
+    assert f"{label} not measured | |" in targets([])
 
 
 def test_ratios_are_relative_to_this_library() -> None:
