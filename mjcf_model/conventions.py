@@ -48,7 +48,7 @@ model-wide         :data:`MODEL_WIDE_SETTINGS`: the parent's value is kept.
 >>> from serializers import dumps, loads
 >>> child = loads('<mujoco><compiler angle="radian"/><worldbody><body name="b">'
 ...               '<joint name="j" range="0 1.5"/><geom size="1"/></body></worldbody></mujoco>')
->>> print(dumps(in_conventions(child, loads("<mujoco/>"))), end="")
+>>> print(dumps(in_conventions(child, loads("<mujoco/>")), canonical=True), end="")
 <mujoco>
   <worldbody>
     <body name="b">

@@ -14,13 +14,14 @@ with the child that stood there (:attr:`Layout.sources`).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 __all__ = ["DocumentText", "Layout"]
 
 
 class DocumentText:
-    """The text of a file around its root element: XML declaration, comments, line breaks.
+    r"""The text of a file around its root element: XML declaration, comments, line breaks.
 
     Example:
         >>> DocumentText('<?xml version="1.0"?>\\n', "\\n", (), ()).before
@@ -31,7 +32,11 @@ class DocumentText:
     __slots__ = ("after", "after_comments", "before", "before_comments")
 
     def __init__(
-        self, before: str, after: str, before_comments: tuple[Any, ...], after_comments: tuple[Any, ...]
+        self,
+        before: str,
+        after: str,
+        before_comments: tuple[Any, ...],
+        after_comments: tuple[Any, ...],
     ) -> None:
         #: Everything before the root's start tag, comments included.
         self.before = before
@@ -60,7 +65,9 @@ class Layout:
         "document",
         "end",
         "gaps",
+        "getter",
         "names",
+        "size",
         "sources",
         "start",
         "tag",
@@ -104,6 +111,13 @@ class Layout:
         self.comments = comments
         #: For the root element: the text of the file around it.
         self.document: DocumentText | None = None
+        #: For a typed element whose attributes all have fields: reads the element's
+        #: values for ``names`` at once (``None`` otherwise).
+        self.getter: Callable[[Any], tuple[Any, ...]] | None = None
+        #: How many fields the element stored when it was read: with ``getter``, an
+        #: element whose stored fields are as many and whose values are still
+        #: ``values`` was not changed (the writer's fast check).
+        self.size = 0
 
     def __repr__(self) -> str:
         return f"Layout({self.start!r}, ...)"

@@ -381,12 +381,13 @@ def with_folders(model: Mujoco, folders: Folders) -> Mujoco:
     Example:
         >>> from serializers import dumps, loads
         >>> model = loads('<mujoco><compiler meshdir="m" angle="radian"/></mujoco>')
-        >>> dumps(with_folders(model, Folders()))
+        >>> dumps(with_folders(model, Folders()), canonical=True)
         '<mujoco>\n  <compiler angle="radian"/>\n</mujoco>\n'
-        >>> dumps(with_folders(model, Folders(texture="t")))
+        >>> dumps(with_folders(model, Folders(texture="t")), canonical=True)
         '<mujoco>\n  <compiler angle="radian" texturedir="t"/>\n</mujoco>\n'
-        >>> dumps(with_folders(loads('<mujoco><compiler meshdir="m"/></mujoco>'), Folders()))
-        '<mujoco/>\n'
+        >>> empty = with_folders(loads('<mujoco><compiler meshdir="m"/></mujoco>'), Folders())
+        >>> dumps(empty, canonical=True), dumps(empty)
+        ('<mujoco/>\n', '<mujoco></mujoco>')
 
     """
     written = {

@@ -10,6 +10,7 @@ element to :func:`build_element`, so the two cannot disagree.
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -17,10 +18,12 @@ from mjcf_model.base import (
     AnyElement,
     GenericElement,
     Node,
+    TypedElement,
     build_node,
     field_table,
 )
 from mjcf_model.errors import MjcfError, MjcfValueError
+from mjcf_model.layout import Layout
 from mjcf_model.registry import CLASS_BY_KEY
 from mjcf_model.values import Unparsed
 
@@ -72,6 +75,8 @@ def build_element(
     children: Sequence[Node],
     text: str | None,
     locate: Locate | None = None,
+    layout: Layout | None = None,
+    memo: dict[tuple[Any, str], Any] | None = None,
 ) -> AnyElement:
     """Build the node for one element from its parsed parts.
 
@@ -87,6 +92,9 @@ def build_element(
         children: The already built child nodes.
         text: Character data, or ``None`` when there is none but white space.
         locate: Adds file, line and path to an error about this element.
+        layout: The element's source text: the node keeps it, and its ``values``
+            are set to the values the node holds for its ``names``.
+        memo: One dict per document: each attribute text is converted once.
 
     Example:
         >>> build_element("body/geom", "geom", [("size", "1 x")], [], None).size
@@ -95,7 +103,12 @@ def build_element(
     """
     cls = CLASS_BY_KEY.get(key) if key is not None else None
     if cls is None or cls.tag != tag:
-        return GenericElement(tag=tag, attributes=attributes, children=children, text=text)
+        generic = GenericElement(
+            tag=tag, attributes=attributes, children=children, text=text, layout=layout
+        )
+        if layout is not None:  # the map holds the very strings given
+            layout.values = tuple(generic.attributes.values())
+        return generic
     table = field_table(cls)
     fields: dict[str, Any] = {}
     extra: list[tuple[str, str]] = []
@@ -105,17 +118,30 @@ def build_element(
             extra.append((name, value))
         else:
             fields[field] = value
-    fields["attribute_order"] = tuple(name for name, _ in attributes)
+    fields["attribute_order"] = (
+        layout.names if layout is not None else tuple([name for name, _ in attributes])
+    )
     if extra:
         fields["extra"] = extra
     if children:
         fields["children"] = children
     if text is not None:
         fields["text"] = text
+    if layout is not None:
+        fields["layout"] = layout
     try:
-        return build_node(cls, fields)
+        node = build_node(cls, fields, memo=memo)
     except MjcfValueError:
         pass
+    else:
+        if layout is None or not attributes:
+            return node
+        getter = _VALUE_GETTERS.get((cls, layout.names)) if not extra else None
+        if getter is None:
+            return _with_values(node, table, attributes, layout, not extra)
+        layout.values = getter(node)
+        layout.getter, layout.size = getter, len(node.__dict__)
+        return node
     for name, value in attributes:  # only on the error path: find the values it cannot read
         field = table.get(name)
         if field is None:
@@ -128,4 +154,47 @@ def build_element(
                 problem = locate(problem)
             assert isinstance(problem, MjcfValueError)
             fields[field] = Unparsed(value, problem)
-    return build_node(cls, fields)
+    node = build_node(cls, fields)
+    return node if layout is None else _with_values(node, table, attributes, layout, not extra)
+
+
+#: Per class and attribute names (all typed fields), a getter of their values as a tuple.
+_VALUE_GETTERS: dict[tuple[type, tuple[str, ...]], Callable[[Any], tuple[Any, ...]]] = {}
+#: Past this many, the getters are forgotten (hostile text could make any number).
+_MAX_VALUE_GETTERS = 4096
+
+
+def _with_values(
+    node: TypedElement,
+    table: dict[str, str],
+    attributes: Sequence[tuple[str, str]],
+    layout: Layout,
+    all_typed: bool,
+) -> TypedElement:
+    """``node``, its layout given the values it holds for each of ``attributes``.
+
+    An attribute without a field (``all_typed`` false) holds the given text.
+    """
+    if not all_typed:
+        layout.values = tuple(
+            [
+                value if field is None else getattr(node, field)
+                for field, value in [(table.get(name), value) for name, value in attributes]
+            ]
+        )
+        return node
+    key = (type(node), layout.names)
+    getter = _VALUE_GETTERS.get(key)
+    if getter is None:
+        if len(_VALUE_GETTERS) >= _MAX_VALUE_GETTERS:
+            _VALUE_GETTERS.clear()
+        fields = [table[name] for name in layout.names]
+        if len(fields) == 1:
+            single = operator.attrgetter(fields[0])
+            getter = lambda element: (single(element),)  # noqa: E731
+        else:
+            getter = operator.attrgetter(*fields)
+        _VALUE_GETTERS[key] = getter
+    layout.values = getter(node)
+    layout.getter, layout.size = getter, len(node.__dict__)
+    return node

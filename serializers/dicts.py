@@ -28,6 +28,7 @@ from cattrs.strategies import configure_tagged_union, include_subclasses
 
 from mjcf_model.base import AttributeMap, Element, Node, TypedElement
 from mjcf_model.errors import MjcfValueError
+from mjcf_model.layout import Layout
 from mjcf_model.node_building import build_node
 from mjcf_model.traversal import with_children
 from mjcf_model.values import Floats, Unparsed
@@ -68,6 +69,8 @@ def _built_converter() -> cattrs.Converter:
     )
     built.register_unstructure_hook(AttributeMap, dict)
     built.register_structure_hook(AttributeMap, lambda value, _: AttributeMap(value))
+    # A layout (how a loaded element was written) is not part of the value: to_dict drops it.
+    built.register_unstructure_hook(Layout, lambda _layout: None)
     include_subclasses(Node, built, union_strategy=_union)
     return built
 
@@ -106,6 +109,7 @@ def to_dict(node: Node) -> dict[str, Any]:
         if isinstance(current, Element) and current.children:
             shallow = with_children(current, ())
         out.update(converter.unstructure(shallow, Node))
+        out.pop("layout", None)
         for key, value in out.items():
             if type(value) is Unparsed:
                 out[key] = {_UNPARSED: value.text}

@@ -28,6 +28,7 @@ from mjcf_model.errors import (
     MjcfSecurityError,
     MjcfSyntaxError,
 )
+from mjcf_model.layout import DocumentText, Layout
 from mjcf_model.namespaces import child_key, children_context, guess_context
 from mjcf_model.node_building import build_node
 from mjcf_model.nodes.root import Include, Mujoco
@@ -42,20 +43,80 @@ __all__ = ["from_etree", "load", "loads"]
 _STRING = "<string>"
 
 
-@attrs.define
 class _Open:
     """An element whose start tag was read and whose end tag was not yet."""
 
-    tag: str
-    attributes: list[tuple[str, str]]
-    key: str | None
-    context: str | None
-    line: int
-    #: 1-based position among the parent's children with the same tag.
-    index: int
-    children: list[Node] = attrs.field(factory=list)
-    text: list[str] = attrs.field(factory=list)
-    counts: dict[str, int] = attrs.field(factory=dict)
+    __slots__ = (
+        "attributes",
+        "children",
+        "comments",
+        "context",
+        "counts",
+        "cursor",
+        "gap",
+        "gaps",
+        "index",
+        "key",
+        "line",
+        "names",
+        "sources",
+        "start",
+        "tag",
+        "text",
+    )
+
+    def __init__(
+        self,
+        tag: str,
+        attributes: list[tuple[str, str]],
+        names: tuple[str, ...],
+        key: str | None,
+        context: str | None,
+        line: int,
+        index: int,
+        start: str,
+        cursor: int,
+        gap: str,
+    ) -> None:
+        self.tag = tag
+        self.attributes = attributes
+        #: The attribute names in source order.
+        self.names = names
+        self.key = key
+        self.context = context
+        self.line = line
+        #: 1-based position among the parent's children with the same tag.
+        self.index = index
+        #: The start tag's source text.
+        self.start = start
+        #: The byte offset where the text not yet given to a gap or a child begins.
+        self.cursor = cursor
+        #: The source text between the previous sibling (or the parent's start tag) and this.
+        self.gap = gap
+        #: The character data read, or ``None`` before any.
+        self.text: list[str] | None = None
+        #: What the children need, made at the first child (most elements have none):
+        #: the children, the count of each tag among them, the source text before each
+        #: child, and each child's layout or the comment node (:attr:`Layout.sources`).
+        self.children: list[Node] = _NO_CHILDREN
+        self.counts: dict[str, int] | None = None
+        self.gaps: list[str] = _NO_CHILDREN
+        self.sources: list[Any] = _NO_CHILDREN
+        #: The exact text of comment children that ``<!--text-->`` would not give back.
+        self.comments: dict[int, str] | None = None
+
+    def add_child(self, gap: str, child: Node, source: Any) -> None:
+        """Note a child and the source text before it."""
+        if self.counts is None:
+            self.counts = {}
+            self.children, self.gaps, self.sources = [], [], []
+        self.gaps.append(gap)
+        self.children.append(child)
+        self.sources.append(source)
+
+
+#: What an element without children holds as its children (never appended to).
+_NO_CHILDREN: list[Any] = []
 
 
 @attrs.define
@@ -92,8 +153,16 @@ class _Reader:
         self.top: list[Node] = []  # comments around the root, and the root itself
         #: The ``<include>`` elements read, when includes are inlined.
         self.includes: list[_PendingInclude] = []
-        #: The bytes being parsed.
+        #: The bytes being parsed, and the same as text when they are ASCII (byte offsets
+        #: are then text offsets), else ``None``.
         self.raw = b""
+        self.ascii: str | None = None
+        #: Each attribute text's converted value, per field converter: converted once.
+        self.memo: dict[tuple[Any, str], Any] = {}
+        #: Where the root's start tag begins and its end tag ends, and where reading stopped.
+        self.root_begin = self.root_end = 0
+        #: The element being closed, for :meth:`locate`.
+        self.closing: _Open | None = None
         # MuJoCo reads the bytes as UTF-8 whatever the XML declaration says; so do we.
         self.parser = expat.ParserCreate(encoding="utf-8")
         self.parser.ordered_attributes = True
@@ -142,39 +211,96 @@ class _Reader:
 
     # -- events -------------------------------------------------------------------
 
+    def source(self, begin: int, end: int) -> str:
+        """The source text between two byte offsets."""
+        if self.ascii is not None:
+            return self.ascii[begin:end]
+        return self.raw[begin:end].decode("utf-8", "surrogatepass")
+
     def start(self, tag: str, flat: list[str]) -> None:
-        attributes = list(zip(flat[::2], flat[1::2], strict=True))
-        numeric = _NUMERIC_ATTRIBUTES[self.stack[-1].context if self.stack else None][tag]
+        raw = self.raw
+        begin = self.parser.CurrentByteIndex
+        stop = raw.find(b">", begin) + 1  # the tag's end, unless a value holds a ">"
+        stack = self.stack
+        context = stack[-1].context if stack else None
+        names = flat[::2]
+        attributes = list(zip(names, flat[1::2], strict=True))
+        numeric = None
         for name, value in attributes:
+            if ">" in value:
+                stop = _start_tag_end(raw, begin)
             # expat turns a tab or line break in a value into a space; tinyxml2 keeps
             # it. Only text fields care, and only values with a space can be affected.
-            if " " in value and name not in numeric:
-                attributes = _exact_attributes(self.raw, self.parser.CurrentByteIndex, attributes)
-                break
-        if self.stack:
-            parent = self.stack[-1]
-            context = parent.context
-            index = parent.counts[tag] = parent.counts.get(tag, 0) + 1
+            if " " in value:
+                if numeric is None:
+                    numeric = _NUMERIC_ATTRIBUTES[context][tag]
+                if name not in numeric:
+                    attributes = _exact_attributes(raw, begin, attributes)
+                    stop = _start_tag_end(raw, begin)
+                    break
+        text = self.ascii
+        if stack:
+            parent = stack[-1]
+            counts = parent.counts
+            index = 1 if counts is None else counts.get(tag, 0) + 1
+            cursor = parent.cursor
+            gap = text[cursor:begin] if text is not None else self.source(cursor, begin)
         else:
-            context, index = None, 1
+            index, gap = 1, ""
+            self.root_begin = begin
         key = child_key(context, tag)
         inner = children_context(key, context)
-        if not self.stack and self.include_context is not None:
+        if not stack and self.include_context is not None:
             inner = self.include_context  # MuJoCo takes the root's children, whatever its tag
-        self.stack.append(
+        stack.append(
             _Open(
-                tag=tag,
-                attributes=attributes,
-                key=key,
-                context=inner,
-                line=self.parser.CurrentLineNumber,
-                index=index,
+                tag,
+                attributes,
+                tuple(names),
+                key,
+                inner,
+                self.parser.CurrentLineNumber,
+                index,
+                text[begin:stop] if text is not None else self.source(begin, stop),
+                stop,
+                gap,
             )
         )
 
+    def locate(self, error: MjcfError) -> MjcfError:
+        """``error`` with the file, line and path of the element being closed."""
+        item = self.closing
+        assert item is not None
+        return error.located(file=self.filename, line=item.line, path=self.path_to(item))
+
     def end(self, _tag: str) -> None:
         item = self.stack.pop()
-        text = element_text(item.text, bool(item.children))
+        text = element_text(item.text, bool(item.children)) if item.text else None
+        if item.start.endswith("/>"):
+            layout = Layout(item.tag, item.start, _NO_GAPS, "", item.names, (), (), text, None)
+            after = item.cursor
+        else:
+            begin = self.parser.CurrentByteIndex
+            after = self.raw.index(b">", begin) + 1
+            source = self.ascii
+            if source is not None:
+                last = source[item.cursor : begin]
+                end_tag = source[begin:after]
+            else:
+                last = self.source(item.cursor, begin)
+                end_tag = self.source(begin, after)
+            layout = Layout(
+                item.tag,
+                item.start,
+                (*item.gaps, last),
+                end_tag,
+                item.names,
+                (),
+                tuple(item.sources),
+                text,
+                item.comments,
+            )
+        self.closing = item
         try:
             node = build_element(
                 item.key,
@@ -182,16 +308,21 @@ class _Reader:
                 item.attributes,
                 item.children,
                 text,
-                lambda error: error.located(
-                    file=self.filename, line=item.line, path=self.path_to(item)
-                ),
+                self.locate,
+                layout,
+                self.memo,
             )
         except MjcfError as error:
-            raise error.located(
-                file=self.filename, line=item.line, path=self.path_to(item)
-            ) from None
-        siblings = self.stack[-1].children if self.stack else self.top
-        siblings.append(node)
+            raise self.locate(error) from None
+        if self.stack:
+            parent = self.stack[-1]
+            parent.add_child(item.gap, node, layout)
+            if parent.counts is not None:
+                parent.counts[item.tag] = item.index
+            parent.cursor = after
+        else:
+            self.top.append(node)
+            self.root_end = after
         if self.session.inline_includes and isinstance(node, Include):
             if not node.file:
                 raise MjcfIncludeError(
@@ -208,23 +339,54 @@ class _Reader:
             )
 
     def comment(self, text: str) -> None:
-        (self.stack[-1].children if self.stack else self.top).append(Comment(text=text))
+        node = Comment(text=text)
+        if not self.stack:
+            self.top.append(node)  # its text is kept in the root's document text
+            return
+        parent = self.stack[-1]
+        begin = self.parser.CurrentByteIndex
+        after = self.raw.index(b"-->", begin + 4) + 3
+        if b"\r" in self.raw[begin:after]:  # expat gives the text with line feeds only
+            if parent.comments is None:
+                parent.comments = {}
+            parent.comments[len(parent.children)] = self.source(begin, after)
+        parent.add_child(self.source(parent.cursor, begin), node, node)
+        parent.cursor = after
 
     def characters(self, data: str) -> None:
         if self.stack:
-            self.stack[-1].text.append(data)
+            item = self.stack[-1]
+            if item.text is None:
+                item.text = [data]
+            else:
+                item.text.append(data)
 
     # -- driver -------------------------------------------------------------------
 
     def parse(self, data: str | bytes) -> list[Node]:
         """Read one document; text MuJoCo's lenient parser reads is repaired first."""
         raw = data.encode("utf-8", "surrogatepass") if isinstance(data, str) else data
+        if raw.startswith((b"\xff\xfe", b"\xfe\xff")):
+            # expat follows a UTF-16 byte order mark; read as UTF-8, offsets are text offsets
+            try:
+                raw = raw.decode("utf-16").encode("utf-8", "surrogatepass")
+            except UnicodeDecodeError as error:
+                raise MjcfSyntaxError(
+                    f"malformed UTF-16 after a byte order mark: {error.reason}; save the file"
+                    " as UTF-8, which MuJoCo reads",
+                    file=self.filename,
+                ) from None
         try:
             self.raw = raw
+            if raw.isascii():
+                self.ascii = raw.decode("ascii")
             self.parser.Parse(raw, True)
+            self.record_document(len(raw))
         except expat.ExpatError as error:
             if self.completed_root(raw):
-                return self.top  # MuJoCo reads the first root element and ignores what follows
+                # MuJoCo reads the first root element and ignores what follows
+                self.record_document(_epilog_end(raw, self.root_end, self.parser.ErrorByteIndex))
+                return self.top
             blanked = _blank_text_before_root(raw)
             repaired = _escape_stray_markup(blanked or raw) or blanked
             if repaired is not None:
@@ -237,7 +399,36 @@ class _Reader:
                     self.includes = retry.includes
                     return top
             raise self.syntax_error(error, raw) from None
+        finally:
+            self.release()
         return self.top
+
+    def release(self) -> None:
+        """Let go of the parser and the text: the parser holds this reader's handlers.
+
+        Without this, each reader would be a reference cycle that keeps the file's
+        text alive until the cyclic garbage collector runs.
+        """
+        parser = self.parser
+        parser.StartElementHandler = parser.EndElementHandler = None
+        parser.CommentHandler = parser.CharacterDataHandler = None
+        parser.StartDoctypeDeclHandler = parser.EntityDeclHandler = None
+        parser.ExternalEntityRefHandler = None
+        self.raw, self.ascii, self.closing = b"", None, None
+
+    def record_document(self, stop: int) -> None:
+        """Give the root's layout the text around the root, up to byte ``stop``."""
+        comments = [n for n in self.top if isinstance(n, Comment)]
+        root = next((n for n in self.top if not isinstance(n, Comment)), None)
+        if not isinstance(root, (TypedElement, GenericElement)) or root.layout is None:
+            return
+        count = self.top.index(root)
+        root.layout.document = DocumentText(
+            self.source(0, self.root_begin),
+            self.source(self.root_end, stop),
+            tuple(comments[:count]),
+            tuple(comments[count:]),
+        )
 
     def completed_root(self, raw: bytes) -> bool:
         """Whether expat stopped at markup after a complete root, which MuJoCo ignores."""
@@ -255,6 +446,36 @@ class _Reader:
         if index >= 0:
             detail += _character_hint(raw[index : index + 4])
         return MjcfSyntaxError(detail, file=self.filename, line=error.lineno, path=path)
+
+
+def _start_tag_end(raw: bytes, index: int) -> int:
+    """The offset after the ``>`` that ends the start tag at ``index`` (expat read it whole)."""
+    while True:
+        mark = _TAG_END_MARK.search(raw, index)
+        assert mark is not None
+        position = mark.start()
+        if raw[position] == ord(">"):
+            return position + 1
+        index = raw.index(raw[position : position + 1], position + 1) + 1
+
+
+def _epilog_end(raw: bytes, index: int, limit: int) -> int:
+    """Where the white space, comments and processing instructions from ``index`` end.
+
+    Nothing past ``limit`` (where expat found an error) is included.
+    """
+    while True:
+        while index < limit and raw[index : index + 1] in (b" ", b"\t", b"\r", b"\n"):
+            index += 1
+        for opening, closing in ((b"<!--", b"-->"), (b"<?", b"?>")):
+            if raw.startswith(opening, index):
+                end = raw.find(closing, index + len(opening))
+                if end < 0 or end + len(closing) > limit:
+                    return index
+                index = end + len(closing)
+                break
+        else:
+            return index
 
 
 def _character_hint(found: bytes) -> str:
@@ -276,6 +497,10 @@ def _character_hint(found: bytes) -> str:
     return ""
 
 
+#: The gaps of an element with nothing inside (shared: most elements).
+_NO_GAPS = ("",)
+#: What ends a start tag, or opens a value that may hold a ``>``.
+_TAG_END_MARK = re.compile(b"[\"'>]")
 #: The characters that start markup or a reference (single character classes).
 _TEXT_MARK = re.compile(b"[<&\\]]")
 _TAG_MARK = re.compile(b"[<&\"'>]")
