@@ -17,10 +17,19 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from types import MappingProxyType
+from typing import Any
 
 import attrs
 
-from mjcf_model.base import AnyElement, GenericElement, TypedElement, get_attribute
+from mjcf_model.base import (
+    AnyElement,
+    GenericElement,
+    TypedElement,
+    attribute_items,
+    get_attribute,
+)
+from mjcf_model.queries import attribute_values
+from mjcf_model.traversal import Ancestors
 from mjcf_model.values import Value
 
 __all__ = ["MAIN", "DefaultClasses"]
@@ -43,6 +52,16 @@ class DefaultClasses:
     parents: Mapping[str, str | None]
     #: The default element of each ``(class, tag)``, e.g. ``("arm", "geom")``.
     settings: Mapping[tuple[str, str], AnyElement]
+    #: Chains and merged settings, worked out on first use (the classes never change).
+    _memo: dict[tuple[object, ...], Any] = attrs.field(
+        factory=dict, init=False, eq=False, repr=False
+    )
+    #: The tags some class sets an attribute of (see :meth:`sets`).
+    _tags: frozenset[str] = attrs.field(init=False, eq=False, repr=False)
+
+    @_tags.default
+    def _set_tags(self) -> frozenset[str]:
+        return frozenset(tag for (_, tag), setting in self.settings.items() if _writes(setting))
 
     @classmethod
     def empty(cls) -> DefaultClasses:
@@ -89,12 +108,56 @@ class DefaultClasses:
             ('a', 'main')
 
         """
+        memo = self._memo.get(("chain", name))
+        if memo is not None:
+            chain: tuple[str, ...] = memo
+            return chain
         found: list[str] = []
         current: str | None = name
         while current is not None and current not in found:
             found.append(current)
             current = self.parents.get(current)
+        self._memo[("chain", name)] = tuple(found)
         return tuple(found)
+
+    def sets(self, tag: str) -> bool:
+        """Whether any class sets an attribute of ``tag`` elements.
+
+        Example:
+            >>> from mjcf_model import Geom
+            >>> classes = DefaultClasses(parents={"main": None},
+            ...                          settings={("main", "geom"): Geom(type="box")})
+            >>> classes.sets("geom"), classes.sets("site")
+            (True, False)
+
+        """
+        return tag in self._tags
+
+    def given(self, name: str, tag: str) -> Mapping[str, tuple[Value, str]]:
+        """Every attribute class ``name`` gives ``tag`` elements, with the class that writes it.
+
+        Example:
+            >>> from mjcf_model import Geom
+            >>> classes = DefaultClasses(
+            ...     parents={"main": None, "a": "main"},
+            ...     settings={("main", "geom"): Geom(size=[1]), ("a", "geom"): Geom(type="box")},
+            ... )
+            >>> dict(classes.given("a", "geom"))
+            {'size': ((1.0,), 'main'), 'type': ('box', 'a')}
+
+        """
+        memo = self._memo.get(("given", name, tag))
+        if memo is not None:
+            known: dict[str, tuple[Value, str]] = memo
+            return known
+        merged: dict[str, tuple[Value, str]] = {}
+        for current in reversed(self.chain(name)):
+            setting = self.settings.get((current, tag))
+            if setting is not None:
+                for attribute, value in attribute_items(setting):
+                    merged[attribute] = (value, current)
+        self._memo[("given", name, tag)] = merged
+        return merged
 
     def lookup(self, name: str, tag: str, attribute: str) -> tuple[Value, str] | None:
         """The value of ``attribute`` for ``tag`` elements in class ``name``, and its class.
@@ -111,13 +174,7 @@ class DefaultClasses:
             ((1.0,), 'main')
 
         """
-        for current in self.chain(name):
-            setting = self.settings.get((current, tag))
-            if setting is not None:
-                value = get_attribute(setting, attribute)
-                if value is not None:
-                    return value, current
-        return None
+        return self.given(name, tag).get(attribute)
 
     def class_of(self, element: AnyElement, ancestors: Sequence[AnyElement]) -> str:
         """The class ``element`` takes defaults from: its own, an inherited ``childclass``, or main.
@@ -130,18 +187,42 @@ class DefaultClasses:
             'arm'
 
         """
-        for ancestor in reversed(ancestors):
-            if ancestor.tag == "default":
-                own = get_attribute(ancestor, "class")
-                return own if isinstance(own, str) else MAIN
+        enclosing, inherited = _scope_of(ancestors)
+        if enclosing is not None:
+            return enclosing
         own = get_attribute(element, "class")
         if isinstance(own, str):
             return own
-        for ancestor in reversed(ancestors):
-            inherited = get_attribute(ancestor, "childclass")
-            if isinstance(inherited, str):
-                return inherited
-        return MAIN
+        return MAIN if inherited is None else inherited
+
+    def inherited(
+        self, element: AnyElement, ancestors: Sequence[AnyElement], tag: str | None = None
+    ) -> Mapping[str, tuple[Value, str]]:
+        """What ``element``'s classes give it (see :meth:`given`), whatever it writes itself.
+
+        For an element inside ``<default>``, what the enclosing class inherits.
+        ``tag`` as in :meth:`resolve`.
+
+        Example:
+            >>> from mjcf_model import Geom
+            >>> classes = DefaultClasses(parents={"main": None},
+            ...                          settings={("main", "geom"): Geom(type="box")})
+            >>> dict(classes.inherited(Geom(type="sphere"), ()))
+            {'type': ('box', 'main')}
+
+        """
+        tag = tag or element.tag
+        if not self.sets(tag):
+            return _NOTHING
+        name = self._giver(element, ancestors)
+        return _NOTHING if name is None else self.given(name, tag)
+
+    def _giver(self, element: AnyElement, ancestors: Sequence[AnyElement]) -> str | None:
+        """The class whose settings ``element`` inherits (``None``: none, in the main default)."""
+        name = self.class_of(element, ancestors)
+        if _scope_of(ancestors)[0] is not None and ancestors[-1].tag == "default":
+            return self.parents.get(name)  # a default element: its class's parent gives
+        return name
 
     def resolve(
         self,
@@ -166,11 +247,79 @@ class DefaultClasses:
         own = get_attribute(element, attribute)
         if own is not None:
             return own
-        name = self.class_of(element, ancestors)
-        if ancestors and ancestors[-1].tag == "default":
-            parent = self.parents.get(name)
-            if parent is None:
-                return None
-            name = parent
-        found = self.lookup(name, tag or element.tag, attribute)
+        found = self.inherited(element, ancestors, tag).get(attribute)
         return None if found is None else found[0]
+
+    def resolve_many(
+        self,
+        element: AnyElement,
+        ancestors: Sequence[AnyElement],
+        attributes: tuple[str, ...],
+        tag: str | None = None,
+    ) -> tuple[Value | None, ...]:
+        """:meth:`resolve` for several attributes at once.
+
+        Example:
+            >>> from mjcf_model import Geom
+            >>> classes = DefaultClasses(parents={"main": None},
+            ...                          settings={("main", "geom"): Geom(type="box")})
+            >>> classes.resolve_many(Geom(size=[1]), (), ("type", "size", "mass"))
+            ('box', (1.0,), None)
+
+        """
+        own = attribute_values(element, attributes)
+        if None not in own:
+            return own
+        tag = tag or element.tag
+        if tag not in self._tags:
+            return own
+        name = self._giver(element, ancestors)
+        if name is None:
+            return own
+        key = ("values", name, tag, attributes)
+        inherited = self._memo.get(key)
+        if inherited is None:
+            given = self.given(name, tag)
+            inherited = tuple(_value(given.get(attribute)) for attribute in attributes)
+            self._memo[key] = inherited
+        return tuple(
+            [value if value is not None else got for value, got in zip(own, inherited, strict=True)]
+        )
+
+
+#: What an element's ancestors say about its class: the class of the nearest
+#: ``<default>`` around it, and the nearest ``childclass`` (``None``: none).
+_Scope = tuple[str | None, str | None]
+_NO_SCOPE: _Scope = (None, None)
+_NOTHING: Mapping[str, tuple[Value, str]] = MappingProxyType({})
+
+
+def _writes(setting: AnyElement) -> bool:
+    """Whether a default element writes any attribute."""
+    if isinstance(setting, GenericElement):
+        return bool(setting.attributes)
+    info = type(setting).__node_info__
+    return bool(setting.extra) or any(value is not None for value in info.getter(setting))
+
+
+def _value(found: tuple[Value, str] | None) -> Value | None:
+    return None if found is None else found[0]
+
+
+def _scope_of(ancestors: Sequence[AnyElement]) -> _Scope:
+    """The scope of an element with these ancestors."""
+    if isinstance(ancestors, Ancestors):
+        return ancestors.folded(_scope, _NO_SCOPE)
+    scope = _NO_SCOPE
+    for ancestor in ancestors:
+        scope = _scope(scope, ancestor)
+    return scope
+
+
+def _scope(scope: _Scope, ancestor: AnyElement) -> _Scope:
+    """The scope below ``ancestor``, given the scope it stands in."""
+    if ancestor.tag == "default":
+        own = get_attribute(ancestor, "class")
+        return (own if isinstance(own, str) else MAIN, scope[1])
+    inherited = get_attribute(ancestor, "childclass")
+    return (scope[0], inherited) if isinstance(inherited, str) else scope

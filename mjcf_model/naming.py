@@ -21,7 +21,7 @@ skin inline first.
 >>> from serializers import dumps, loads
 >>> model = loads('''<mujoco><worldbody><body name="arm"><joint name="elbow"/></body></worldbody>
 ... <actuator><motor joint="elbow" name="m"/></actuator></mujoco>''')
->>> print(dumps(prefixed(model, "left_")), end="")
+>>> print(dumps(prefixed(model, "left_"), canonical=True), end="")
 <mujoco>
   <worldbody>
     <body name="left_arm">
@@ -42,8 +42,14 @@ from pathlib import Path
 from mjcf_model.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.namespaces import NAMESPACES, SCHEMA, ElementSpec, reference_namespace
-from mjcf_model.naming_generated import SAME_MODEL_ATTACH, GeneratedNames, declarations
+from mjcf_model.naming_generated import (
+    DECLARING_KEYS,
+    SAME_MODEL_ATTACH,
+    GeneratedNames,
+    declarations,
+)
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.queries import attribute_values
 from mjcf_model.traversal import GUESS, keyed_walk, map_elements, refuse_opaque
 from mjcf_model.values import Value
 
@@ -81,8 +87,9 @@ def declared_names(node: AnyElement) -> dict[str, frozenset[str]]:
     found: dict[str, set[str]] = {}
     base_dir = node.base_dir if isinstance(node, Mujoco) else None
     for element, key, _ in keyed_walk(node):
-        for _, namespace, name in declarations(element, key, base_dir=base_dir):
-            found.setdefault(namespace, set()).add(name)
+        if key in DECLARING_KEYS:
+            for _, namespace, name in declarations(element, key, base_dir=base_dir):
+                found.setdefault(namespace, set()).add(name)
     return {namespace: frozenset(names) for namespace, names in found.items()}
 
 
@@ -129,6 +136,38 @@ def prefix_map(
     }
 
 
+class _Plan:
+    """What renaming reads on the elements of one schema key, worked out once per key."""
+
+    __slots__ = ("declares", "names", "references", "spec")
+
+    def __init__(self, spec: ElementSpec) -> None:
+        #: The table's entry.
+        self.spec = spec
+        #: Whether the element declares a name.
+        self.declares = bool(spec.declares)
+        #: The reference attributes, read at once.
+        self.names = tuple(spec.references)
+        #: Per reference: its namespace (``None`` when an ``objtype``-style attribute
+        #: names it), that attribute, and whether it holds a list of names.
+        self.references = tuple(
+            (
+                None if target.startswith("@") else target,
+                target[1:] if target.startswith("@") else None,
+                attribute in spec.list_references,
+            )
+            for attribute, target in spec.references.items()
+        )
+
+
+#: The plan of each schema key that declares or refers to a name.
+_PLANS = {key: _Plan(spec) for key, spec in SCHEMA.items() if spec.declares or spec.references}
+_SAME_MODEL_PLAN = _Plan(SAME_MODEL_ATTACH)
+
+#: The keys of elements renaming leaves alone when they have no children.
+_NOTHING_TO_RENAME = frozenset(SCHEMA) - _PLANS.keys() - _SKINS - {"include", "body/attach"}
+
+
 def _renamed_attributes(
     element: AnyElement, key: str | None, rename: Renamer, follow: Renamer, base_dir: Path | None
 ) -> dict[str, Value | None]:
@@ -136,42 +175,37 @@ def _renamed_attributes(
 
     ``rename`` renames declared names, ``follow`` references (generated names too).
     """
-    spec: ElementSpec | None = SCHEMA.get(key) if key is not None else None
-    if spec is None:
+    plan = _PLANS.get(key) if key is not None else None
+    if plan is None:
         return {}
     if key == "body/attach" and get_attribute(element, "model") is None:
-        spec = SAME_MODEL_ATTACH
+        plan = _SAME_MODEL_PLAN
     changes: dict[str, Value | None] = {}
-    for attribute, namespace, name in declarations(element, key, base_dir=base_dir):
-        new = rename(namespace, name)
-        if new != name:
-            changes[attribute] = new
-    if not spec.references:
+    if plan.declares:
+        for attribute, namespace, name in declarations(element, key, base_dir=base_dir):
+            new = rename(namespace, name)
+            if new != name:
+                changes[attribute] = new
+    if not plan.names:
         return changes
-    values = {attribute: get_attribute(element, attribute) for attribute in spec.references}
-    context = {**values, **_selectors(element, spec)}
-    for attribute, value in values.items():
+    for attribute, value, (target, selector, listed) in zip(
+        plan.names, attribute_values(element, plan.names), plan.references, strict=True
+    ):
         if not isinstance(value, str) or not value:
             continue
-        target = reference_namespace(spec, attribute, context)
+        if selector is not None:
+            target = reference_namespace(
+                plan.spec, attribute, {selector: get_attribute(element, selector)}
+            )
         if target is None:
             continue
-        if attribute in spec.list_references:
+        if listed:
             joined = " ".join(follow(target, part) for part in value.split())
             if joined != " ".join(value.split()):
                 changes[attribute] = joined
         elif (renamed_value := follow(target, value)) != value:
             changes[attribute] = renamed_value
     return changes
-
-
-def _selectors(element: AnyElement, spec: ElementSpec) -> dict[str, Value | None]:
-    """The ``objtype``-style attributes that say where ``@``-references point."""
-    return {
-        target[1:]: get_attribute(element, target[1:])
-        for target in spec.references.values()
-        if target.startswith("@")
-    }
 
 
 def _apply(node: AnyElement, rename: Renamer, attach_prefix: str | None) -> AnyElement:
@@ -191,7 +225,8 @@ def _apply(node: AnyElement, rename: Renamer, attach_prefix: str | None) -> AnyE
         return generated().renamed(namespace, name, follow, attach_prefix)
 
     def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
-        refuse_opaque(element, key, "rename names in")
+        if key is None or key == "include":
+            refuse_opaque(element, key, "rename names in")
         if key in _SKINS and get_attribute(element, "file"):
             _refuse_file_skin(element, generated().renames_bodies(rename, attach_prefix))
         changes = _renamed_attributes(element, key, rename, follow, base_dir)
@@ -200,7 +235,7 @@ def _apply(node: AnyElement, rename: Renamer, attach_prefix: str | None) -> AnyE
             changes["prefix"] = attach_prefix + (inner if isinstance(inner, str) else "")
         return with_attributes(element, changes)
 
-    return map_elements(visit, node, GUESS)
+    return map_elements(visit, node, GUESS, kept=_NOTHING_TO_RENAME)
 
 
 def _refuse_file_skin(skin: AnyElement, renames_bodies: bool) -> None:

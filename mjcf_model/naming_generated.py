@@ -54,6 +54,7 @@ from mjcf_model.provenance import Folders, file_stem
 from mjcf_model.traversal import keyed_walk
 
 __all__ = [
+    "DECLARING_KEYS",
     "DEFAULT_MODEL_NAME",
     "SAME_MODEL_ATTACH",
     "GeneratedNames",
@@ -82,6 +83,9 @@ _GRID_DOFS = frozenset({"trilinear", "quadratic"})
 _NAMED_BY_FILE = frozenset(
     {"asset/mesh", "asset/texture", "asset/hfield", "asset/skin", "deformable/skin"}
 )
+
+#: The schema keys of elements that declare a name (the others need no look).
+DECLARING_KEYS = frozenset(key for key, spec in SCHEMA.items() if spec.declares)
 
 #: The top-level default class: MuJoCo does not allow renaming it.
 _MAIN_CLASS = ("main", "class")
@@ -157,10 +161,9 @@ def declarations(
         [('name', 'mesh', 'hand')]
 
     """
-    spec = SCHEMA.get(key) if key is not None else None
-    if spec is None:
+    if key is None or key not in DECLARING_KEYS:
         return
-    for attribute, namespace in spec.declares.items():
+    for attribute, namespace in SCHEMA[key].declares.items():
         name = get_attribute(element, attribute)
         if isinstance(name, str) and name and (name, namespace) != _MAIN_CLASS:
             yield attribute, namespace, name
@@ -285,8 +288,9 @@ class GeneratedNames:
             base_dir = node.base_dir
         found = cls()
         for element, key, chain in _chained_walk(node):
-            for _, namespace, name in declarations(element, key, base_dir=base_dir):
-                found.declared.setdefault(namespace, {}).setdefault(name, set()).add(chain)
+            if key in DECLARING_KEYS:
+                for _, namespace, name in declarations(element, key, base_dir=base_dir):
+                    found.declared.setdefault(namespace, {}).setdefault(name, set()).add(chain)
             if key == "body/flexcomp":
                 flex = get_attribute(element, "name")
                 if isinstance(flex, str) and flex:

@@ -18,7 +18,8 @@ on the results), in document order.
 
 from __future__ import annotations
 
-from collections.abc import Collection, Iterable, Iterator
+import operator
+from collections.abc import Callable, Collection, Iterable, Iterator
 
 import attrs
 
@@ -26,7 +27,15 @@ from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement, get_
 from mjcf_model.traversal import walk
 from mjcf_model.values import Value, format_value, plain_value
 
-__all__ = ["Categories", "categorized", "find", "find_all", "parent_of", "walk"]
+__all__ = [
+    "Categories",
+    "attribute_values",
+    "categorized",
+    "find",
+    "find_all",
+    "parent_of",
+    "walk",
+]
 
 #: Keyword arguments that stand for another MJCF attribute (``class`` is a Python keyword).
 _KEYWORD_ATTRIBUTES = {"dclass": "class"}
@@ -34,6 +43,51 @@ _KEYWORD_ATTRIBUTES = {"dclass": "class"}
 #: Sections whose element children robosuite files under ``actuators`` and ``sensors``.
 _ACTUATOR_SECTION = "actuator"
 _SENSOR_SECTION = "sensor"
+
+
+#: The reader :func:`attribute_values` made for each typed class and attribute names.
+_READERS: dict[tuple[type, tuple[str, ...]], Callable[[AnyElement], tuple[Value | None, ...]]] = {}
+
+
+def attribute_values(element: AnyElement, names: tuple[str, ...]) -> tuple[Value | None, ...]:
+    """The values of the MJCF attributes ``names`` (``None`` where not written), read at once.
+
+    The same values as :func:`~mjcf_model.base.get_attribute` for each name, read
+    by one reader per class and names, made on first use: the transforms that
+    read several attributes of every element use it.
+
+    Example:
+        >>> from mjcf_model import Geom
+        >>> attribute_values(Geom(dclass="arm", size=[1], extra={"x": "1"}), ("class", "pos", "x"))
+        ('arm', None, '1')
+
+    """
+    if isinstance(element, GenericElement):
+        get = element.attributes.get
+        return tuple([get(name) for name in names])
+    reader = _READERS.get((type(element), names))
+    if reader is None:
+        reader = _reader(type(element), names)
+        _READERS[(type(element), names)] = reader
+    return reader(element)
+
+
+def _reader(
+    cls: type[TypedElement], names: tuple[str, ...]
+) -> Callable[[AnyElement], tuple[Value | None, ...]]:
+    table = cls.__node_info__.table
+    fields = tuple(table.get(name) for name in names)
+    if len(names) > 1 and None not in fields:
+        return operator.attrgetter(*fields)  # type: ignore[arg-type]
+    pairs = tuple(zip(names, fields, strict=True))
+
+    def read(element: AnyElement) -> tuple[Value | None, ...]:
+        extra = element.extra  # type: ignore[union-attr]
+        return tuple(
+            [extra.get(name) if field is None else getattr(element, field) for name, field in pairs]
+        )
+
+    return read
 
 
 def _matches(value: Value | None, expected: object) -> bool:

@@ -33,8 +33,8 @@ import numpy.typing as npt
 from mjcf_model.base import AnyElement, with_attributes
 from mjcf_model.defaults import DefaultClasses
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.scaling_plugins import with_sdf_settings
-from mjcf_model.scaling_rules import ScaleContext
+from mjcf_model.scaling_plugins import SDF_SETTINGS_KEYS, with_sdf_settings
+from mjcf_model.scaling_rules import NO_LENGTHS, ScaleContext
 from mjcf_model.scaling_table import RULES
 from mjcf_model.traversal import GUESS, map_elements, refuse_opaque
 
@@ -111,8 +111,8 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     context = ScaleContext(factors=factors, mass=mass, classes=classes, model=node)
 
     def visit(element: AnyElement, key: str | None, ancestors: Sequence[AnyElement]) -> AnyElement:
-        refuse_opaque(element, key, "scale")
-        if key is None:
+        if key is None or key == "include":
+            refuse_opaque(element, key, "scale")
             return element
         if key == "body/attach":
             raise MjcfValueError(
@@ -120,6 +120,14 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
                 "scale that model and attach the result"
             )
         changed = with_attributes(element, RULES[key](element, ancestors, context))
-        return with_sdf_settings(changed, key, ancestors, context)
+        if key in SDF_SETTINGS_KEYS:
+            return with_sdf_settings(changed, key, ancestors, context)
+        return changed
 
-    return map_elements(visit, node, GUESS)
+    return map_elements(visit, node, GUESS, kept=_UNSCALED)
+
+
+#: The keys of elements that never change, when they have no children.
+_UNSCALED = frozenset(
+    key for key, rule in RULES.items() if rule is NO_LENGTHS and key not in SDF_SETTINGS_KEYS
+) - {"include", "body/attach"}

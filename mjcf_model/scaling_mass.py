@@ -22,7 +22,6 @@ from collections.abc import Sequence
 from mjcf_model.base import AnyElement, get_attribute
 from mjcf_model.provenance import file_stem
 from mjcf_model.scaling_rules import Changes, ScaleContext, builtin_default, numbers
-from mjcf_model.traversal import keyed_walk
 
 __all__ = ["geom_density", "is_shell"]
 
@@ -41,17 +40,21 @@ def _mesh_name(mesh: AnyElement) -> str | None:
 
 def _shell_meshes(context: ScaleContext) -> frozenset[str]:
     """The names of the model's meshes whose inertia is computed on their surface."""
-    if context.model is None:
+    model = context.model
+    if model is None or model.tag != "mujoco":
         return frozenset()
     found = set()
-    for element, key, ancestors in keyed_walk(context.model):
-        if (
-            key == "asset/mesh"
-            and context.classes.resolve(element, ancestors, "inertia") == "shell"
-        ):
-            name = _mesh_name(element)
-            if name is not None:
-                found.add(name)
+    for section in model.elements:  # meshes stand only in the top-level <asset> sections
+        if section.tag != "asset":
+            continue
+        for element in section.elements:
+            if (
+                element.tag == "mesh"
+                and context.classes.resolve(element, (model, section), "inertia") == "shell"
+            ):
+                name = _mesh_name(element)
+                if name is not None:
+                    found.add(name)
     return frozenset(found)
 
 
@@ -68,15 +71,27 @@ def is_shell(geom: AnyElement, ancestors: Sequence[AnyElement], context: ScaleCo
         False
 
     """
-    classes = context.classes
-    if classes.resolve(geom, ancestors, "type") in _MESH_TYPES:
-        mesh = classes.resolve(geom, ancestors, "mesh")
+    kind, mesh, shell = context.classes.resolve_many(geom, ancestors, _SHELL_READ)
+    return _is_shell(kind, mesh, shell, context)
+
+
+#: What decides whether a geom's mass is on its surface.
+_SHELL_READ = ("type", "mesh", "shellinertia")
+#: What :func:`geom_density` reads: the mass, the density, then :data:`_SHELL_READ`.
+_DENSITY_READ = ("mass", "density", *_SHELL_READ)
+
+
+def _is_shell(kind: object, mesh: object, shell: object, context: ScaleContext) -> bool:
+    """:func:`is_shell` for a geom's resolved ``type``, ``mesh`` and ``shellinertia``."""
+    if kind in _MESH_TYPES:
         return mesh in context.cached("shell meshes", lambda: _shell_meshes(context))
-    return classes.resolve(geom, ancestors, "shellinertia") in (True, "true")
+    return shell in (True, "true")
 
 
 def _in_world(ancestors: Sequence[AnyElement]) -> bool:
     """Whether the nearest body around an element is the world body."""
+    if ancestors and ancestors[-1].tag == "body":
+        return False
     for ancestor in reversed(ancestors):
         if ancestor.tag in ("body", "worldbody"):
             return ancestor.tag == "worldbody"
@@ -103,12 +118,11 @@ def geom_density(
         {}
 
     """
-    classes = context.classes
     if context.mass != "keep" or _in_world(ancestors):
         return {}
-    if classes.resolve(geom, ancestors, "mass") is not None:
+    mass, density, kind, mesh, shell = context.classes.resolve_many(geom, ancestors, _DENSITY_READ)
+    if mass is not None:
         return {}
-    density = numbers(classes.resolve(geom, ancestors, "density"))
-    value = (density or builtin_default("geom", "density"))[0]
-    factor = context.area if is_shell(geom, ancestors, context) else context.volume
+    value = (numbers(density) or builtin_default("geom", "density"))[0]
+    factor = context.area if _is_shell(kind, mesh, shell, context) else context.volume
     return {"density": value / factor}

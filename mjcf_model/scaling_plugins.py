@@ -27,7 +27,14 @@ from mjcf_model.scaling_rules import Changes, ScaleContext, numbers, times
 from mjcf_model.traversal import keyed_walk, with_children
 from mjcf_model.values import format_value
 
-__all__ = ["SDF_LENGTHS", "makes_sdf", "sdf_config", "sdf_mesh_scale", "with_sdf_settings"]
+__all__ = [
+    "SDF_LENGTHS",
+    "SDF_SETTINGS_KEYS",
+    "makes_sdf",
+    "sdf_config",
+    "sdf_mesh_scale",
+    "with_sdf_settings",
+]
 
 #: The SDF plugins whose shape scales through their settings: each length
 #: setting and its default (from the plugins' sources, as shipped in 3.9 and 4.0).
@@ -43,6 +50,8 @@ _FIXED_SHAPES = frozenset({"mujoco.sdf.bolt", "mujoco.sdf.nut", "mujoco.sdf.gear
 
 #: The schema keys of elements that make a shape with a plugin.
 _SHAPE_USES = frozenset({"asset/mesh/plugin", "body/geom/plugin"})
+#: The keys of the elements :func:`with_sdf_settings` completes or refuses.
+SDF_SETTINGS_KEYS = _SHAPE_USES | {"extension/plugin/instance"}
 
 
 def _instances(context: ScaleContext) -> dict[str, str]:
@@ -173,4 +182,4 @@ def makes_sdf(mesh: AnyElement) -> bool:
         (True, False)
 
     """
-    return any(child.tag == "plugin" for child in mesh.elements)
+    return bool(mesh.children) and any(child.tag == "plugin" for child in mesh.elements)

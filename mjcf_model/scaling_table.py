@@ -17,6 +17,7 @@ import numpy as np
 from mjcf_model.base import AnyElement, get_attribute
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.namespaces import SCHEMA
+from mjcf_model.queries import attribute_values
 from mjcf_model.scaling_mass import geom_density
 from mjcf_model.scaling_plugins import makes_sdf, sdf_config, sdf_mesh_scale
 from mjcf_model.scaling_rules import (
@@ -24,6 +25,7 @@ from mjcf_model.scaling_rules import (
     Changes,
     Rule,
     ScaleContext,
+    ValueRule,
     builtin_default,
     combine,
     inertias,
@@ -35,7 +37,7 @@ from mjcf_model.scaling_rules import (
     times,
     with_builtin,
 )
-from mjcf_model.values import format_value
+from mjcf_model.values import Value, format_value
 
 __all__ = ["RULES", "UNSCALED_BY_DECISION"]
 
@@ -66,28 +68,22 @@ def _builtin_length(attribute: str, tag: str) -> Rule:
 
 def _size_factors(
     element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
-) -> list[float]:
-    """Robosuite's per-axis convention for geom and site sizes, by how many are written.
-
-    Three values scale per axis; two are a radius (mean of x and y) and a
-    half-length (z); one is a radius (mean of all three). Values completed from
-    defaults beyond those written scale per axis. Exact when uniform.
-    """
-    x, y, z = context.factors
+) -> tuple[float, ...]:
+    """The factors of a geom's or site's size, by how many values it writes (see ``Cycles``)."""
     written = len(numbers(get_attribute(element, "size")) or ())
-    by_count = {1: [context.mean], 2: [(x + y) / 2, z], 3: [x, y, z]}
-    return [*by_count.get(written, []), *[x, y, z][written:]]
+    return context.cycles.sizes[written] if written < 4 else ()
 
 
-def _geom_size(
-    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
-) -> Changes:
-    """Scale a geom's ``size`` (every value is a length, whatever the type)."""
-    size = numbers(get_attribute(element, "size"))
+def _scaled_size(value: Value, context: ScaleContext) -> Value | None:
+    """A geom's ``size`` scaled (every value is a length, whatever the type)."""
+    size = value if type(value) is tuple else numbers(value)
     if size is None:
-        return {}
-    factors = _size_factors(element, ancestors, context)
-    return {"size": tuple(n * f for n, f in zip(size, factors, strict=False))}
+        return None
+    factors = context.cycles.sizes[len(size)] if len(size) < 4 else ()
+    return tuple([n * f for n, f in zip(size, factors, strict=False)])
+
+
+_geom_size = ValueRule("size", _scaled_size)
 
 
 _site_size = with_builtin(
@@ -102,6 +98,7 @@ def _slide_factor(kind: object, axis: object, context: ScaleContext) -> float:
 
 
 _JOINT_LENGTHS = ("range", "ref", "springref", "margin")
+_JOINT_READ = ("type", "axis", *_JOINT_LENGTHS)
 
 
 def _joint(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext) -> Changes:
@@ -111,27 +108,26 @@ def _joint(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleC
     slide; where the joint's own type differs, the right value is written on it.
     """
     classes = context.classes
-    factor = _slide_factor(
-        classes.resolve(element, ancestors, "type"),
-        classes.resolve(element, ancestors, "axis"),
-        context,
-    )
+    kind, axis, *lengths_written = attribute_values(element, _JOINT_READ)
+    inherited = classes.inherited(element, ancestors, "joint")
+    if kind is None and "type" in inherited:
+        kind = inherited["type"][0]
+    if axis is None and "axis" in inherited:
+        axis = inherited["axis"][0]
+    factor = _slide_factor(kind, axis, context)
     changes: Changes = {}
-    name = classes.class_of(element, ancestors)
-    if ancestors and ancestors[-1].tag == "default":
-        name = classes.parents.get(name) or ""
-    for attribute in _JOINT_LENGTHS:
-        own = get_attribute(element, attribute)
+    for attribute, own in zip(_JOINT_LENGTHS, lengths_written, strict=True):
         if own is not None:
             if factor != 1.0:
                 changes[attribute] = times(own, factor)
             continue
-        inherited = classes.lookup(name, "joint", attribute) if name else None
-        if inherited is None:
+        found = inherited.get(attribute)
+        if found is None:
             continue
-        value, provider = inherited
-        provider_kind = classes.lookup(provider, "joint", "type")
-        provider_axis = classes.lookup(provider, "joint", "axis")
+        value, provider = found
+        provider_given = classes.given(provider, "joint")
+        provider_kind = provider_given.get("type")
+        provider_axis = provider_given.get("axis")
         provider_factor = _slide_factor(
             provider_kind and provider_kind[0], provider_axis and provider_axis[0], context
         )

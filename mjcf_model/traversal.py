@@ -16,10 +16,9 @@ True
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator, Sequence
-from typing import TypeVar, overload
-
-import attrs
+import operator
+from collections.abc import Callable, Collection, Iterator, Sequence
+from typing import Any, TypeVar, overload
 
 from mjcf_model.base import (
     AnyElement,
@@ -31,7 +30,7 @@ from mjcf_model.base import (
     to_children,
 )
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.namespaces import child_key, children_context, guess_context
+from mjcf_model.namespaces import child_key, guess_context
 
 __all__ = [
     "GUESS",
@@ -56,6 +55,7 @@ ElementVisitor = Callable[[AnyElement, str | None, Sequence[AnyElement]], AnyEle
 _E = TypeVar("_E", bound=Element)
 _N = TypeVar("_N", bound=Node)
 _A = TypeVar("_A", bound=TypedElement | GenericElement)
+_V = TypeVar("_V")
 
 
 class Ancestors(Sequence[AnyElement]):
@@ -73,13 +73,49 @@ class Ancestors(Sequence[AnyElement]):
 
     """
 
-    __slots__ = ("_items", "_last", "_length", "_parent")
+    __slots__ = ("_folds", "_items", "_last", "_length", "_parent")
 
     def __init__(self, parent: Ancestors | None = None, last: AnyElement | None = None) -> None:
         self._parent = parent
         self._last = last
         self._length: int = 0 if parent is None else parent._length + 1
         self._items: tuple[AnyElement, ...] | None = None if parent is not None else ()
+        self._folds: dict[object, Any] | None = None
+
+    def folded(self, step: Callable[[_V, AnyElement], _V], initial: _V) -> _V:
+        """``step`` folded over the ancestors root first, from ``initial``; once per level.
+
+        Each level keeps its result (keyed by ``step``, so one ``step`` always
+        goes with the same ``initial``), so what an element inherits from its
+        ancestors (a ``childclass``) costs constant time per level however deep
+        the tree is.
+
+        Example:
+            >>> from mjcf_model import Body
+            >>> a = Ancestors().extended(Body(name="root")).extended(Body(name="arm"))
+            >>> a.folded(lambda names, body: (*names, body.name), ())
+            ('root', 'arm')
+
+        """
+        if self._folds is not None and step in self._folds:  # the common case: known
+            known: _V = self._folds[step]
+            return known
+        pending: list[Ancestors] = []
+        level: Ancestors | None = self
+        value = initial
+        while level is not None and level._last is not None:
+            folds = level._folds
+            if folds is not None and step in folds:
+                value = folds[step]
+                break
+            pending.append(level)
+            level = level._parent
+        for level in reversed(pending):
+            value = step(value, level._last)  # type: ignore[arg-type]
+            if level._folds is None:
+                level._folds = {}
+            level._folds[step] = value
+        return value
 
     def extended(self, element: AnyElement) -> Ancestors:
         """These ancestors followed by ``element``."""
@@ -146,11 +182,9 @@ def with_children(element: _E, children: Sequence[Node]) -> _E:
 
     """
     old = element.children
-    if len(old) == len(children) and all(a is b for a, b in zip(old, children, strict=True)):
+    if len(old) == len(children) and all(map(operator.is_, old, children)):
         return element
-    if isinstance(element, TypedElement):
-        return build_node(type(element), {"children": to_children(children)}, element)
-    return attrs.evolve(element, children=tuple(children))
+    return build_node(type(element), {"children": to_children(children)}, element)
 
 
 def _is_element(node: Node) -> bool:
@@ -208,12 +242,20 @@ def schema_key(element: AnyElement, context: str | _Guess | None = GUESS) -> str
     return child_key(context, element.tag)
 
 
-def map_elements(fn: ElementVisitor, node: _A, context: str | _Guess | None = GUESS) -> _A:
+def map_elements(
+    fn: ElementVisitor,
+    node: _A,
+    context: str | _Guess | None = GUESS,
+    *,
+    kept: Collection[str] = frozenset(),
+) -> _A:
     """Apply ``fn(element, key, ancestors)`` to every element, children first.
 
     ``key`` is the element's schema key (``None`` for an element the table does
     not know), ``ancestors`` the original elements from the root down to the
-    parent. Comments are kept as they are.
+    parent. Comments are kept as they are. ``kept`` names the keys of elements
+    ``fn`` returns unchanged when they have no children: ``fn`` is not called
+    for those (a transform's way of skipping what it has nothing to do with).
 
     Example:
         >>> from mjcf_model import Body, Geom
@@ -226,42 +268,78 @@ def map_elements(fn: ElementVisitor, node: _A, context: str | _Guess | None = GU
     """
     if isinstance(context, _Guess):
         context = guess_context(node.tag)
-    return _map_elements(fn, node, context)  # type: ignore[return-value]
+    return _map_elements(fn, node, context, kept)  # type: ignore[return-value]
 
 
-def _map_elements(fn: ElementVisitor, root: AnyElement, context: str | None) -> AnyElement:
-    """:func:`map_elements` with an explicit stack, so trees of any depth are mapped."""
+#: Either kind of element, for ``isinstance``.
+_ELEMENTS = (TypedElement, GenericElement)
 
-    class Frame:
-        __slots__ = ("ancestors", "element", "inner", "key", "mapped", "pending")
+#: ``child_key`` answers, by ``(context, tag)``: the walks ask it for every element.
+_KEYS: dict[tuple[str | None, str], str | None] = {}
+#: How many answers :data:`_KEYS` keeps (tags are open-ended in untrusted files).
+_KEYS_KEPT = 4096
+#: What :data:`_KEYS` gives for a question it has no answer to.
+_UNKNOWN = "?"
 
-        def __init__(self, element: AnyElement, context: str | None, ancestors: Ancestors):
-            self.element = element
-            self.key = child_key(context, element.tag)
-            self.inner = children_context(self.key, context)
-            self.ancestors = ancestors
-            self.mapped: list[Node] = []
-            self.pending = iter(element.children)
 
-    stack = [Frame(root, context, Ancestors())]
+def _key_of(context: str | None, tag: str) -> str | None:
+    """:func:`~mjcf_model.namespaces.child_key`, remembered."""
+    try:
+        return _KEYS[(context, tag)]
+    except KeyError:
+        key = child_key(context, tag)
+        if len(_KEYS) < _KEYS_KEPT:
+            _KEYS[(context, tag)] = key
+        return key
+
+
+def _with_mapped(element: _A, mapped: list[Node]) -> _A:
+    """:func:`with_children` for children the walk built (nodes already, not checked again)."""
+    old = element.children
+    if len(old) == len(mapped) and all(map(operator.is_, old, mapped)):
+        return element
+    return build_node(type(element), {"children": tuple(mapped)}, element)
+
+
+#: A frame of :func:`_map_elements`' stack.
+_Frame = tuple[AnyElement, str | None, str | None, Ancestors, Ancestors, list[Node], Iterator[Node]]
+
+
+def _map_elements(
+    fn: ElementVisitor, root: AnyElement, context: str | None, kept: Collection[str]
+) -> AnyElement:
+    """:func:`map_elements` with an explicit stack, so trees of any depth are mapped.
+
+    A frame is pushed only for an element with children; a leaf is visited
+    where it stands.
+    """
+    key = _key_of(context, root.tag)
+    inner = context if key is None or key == "include" else key
+    top = Ancestors()
+    keys, unknown = _KEYS, _UNKNOWN
+    # (element, key, its children's context, its ancestors, theirs, mapped, pending)
+    stack: list[_Frame] = [(root, key, inner, top, top.extended(root), [], iter(root.children))]
     while True:
-        frame = stack[-1]
-        below: Ancestors | None = None
-        for child in frame.pending:
-            if isinstance(child, (TypedElement, GenericElement)):
-                below = below or frame.ancestors.extended(frame.element)
-                stack.append(Frame(child, frame.inner, below))
+        element, key, inner, ancestors, below, mapped, pending = stack[-1]
+        for child in pending:
+            if not isinstance(child, _ELEMENTS):
+                mapped.append(child)
+                continue
+            child_key = keys.get((inner, child.tag), unknown)
+            if child_key is unknown:
+                child_key = _key_of(inner, child.tag)
+            if child.children:
+                deeper = inner if child_key is None or child_key == "include" else child_key
+                level = below.extended(child)
+                stack.append((child, child_key, deeper, below, level, [], iter(child.children)))
                 break
-            frame.mapped.append(child)
+            mapped.append(child if child_key in kept else fn(child, child_key, below))
         else:
             stack.pop()
-            element = frame.element
-            if element.children:
-                element = with_children(element, frame.mapped)
-            result = fn(element, frame.key, frame.ancestors)
+            result = fn(_with_mapped(element, mapped), key, ancestors)
             if not stack:
                 return result
-            stack[-1].mapped.append(result)
+            stack[-1][5].append(result)
 
 
 def refuse_opaque(element: AnyElement, key: str | None, action: str) -> None:
@@ -332,18 +410,26 @@ def keyed_walk(
     """
     if isinstance(context, _Guess):
         context = guess_context(node.tag)
-    stack: list[tuple[AnyElement, str | None, Ancestors]] = [(node, context, Ancestors())]
+    keys, unknown = _KEYS, _UNKNOWN
+    # Each level: the children still to walk, their context and their ancestors.
+    stack: list[tuple[Iterator[Node], str | None, Ancestors]] = [
+        (iter((node,)), context, Ancestors())
+    ]
     while stack:
-        element, parent_context, ancestors = stack.pop()
-        key = child_key(parent_context, element.tag)
-        yield element, key, ancestors
-        inner = children_context(key, parent_context)
-        below = ancestors.extended(element)
-        stack.extend(
-            (child, inner, below)
-            for child in reversed(element.children)
-            if isinstance(child, (TypedElement, GenericElement))
-        )
+        pending, parent_context, ancestors = stack[-1]
+        for element in pending:
+            if not isinstance(element, _ELEMENTS):
+                continue
+            key = keys.get((parent_context, element.tag), unknown)
+            if key is unknown:
+                key = _key_of(parent_context, element.tag)
+            yield element, key, ancestors
+            if element.children:
+                inner = parent_context if key is None or key == "include" else key
+                stack.append((iter(element.children), inner, ancestors.extended(element)))
+                break
+        else:
+            stack.pop()
 
 
 def replaced_at(node: _A, path: Path, new: Sequence[Node]) -> _A:
