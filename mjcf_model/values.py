@@ -133,10 +133,14 @@ def _count_phrase(lo: int, hi: int | None) -> str:
     return f"{lo} to {hi} numbers"
 
 
+_ONLY_FLOATS = frozenset({float})
+_ONLY_INTS = frozenset({int})
+
+
 def _floats(value: object, lo: int, hi: int | None) -> Floats:
     items: Floats
-    if isinstance(value, tuple) and value and all(type(v) is float for v in value):
-        items = _one_nan(value)
+    if type(value) is tuple and value and set(map(type, value)) <= _ONLY_FLOATS:
+        items = _one_nan(value)  # already floats (a transform's output): checked in C
     elif type(value) is str:
         # ``float`` reads one token in time linear in its length; no regular
         # expression ever sees attribute text (see tests/test_hostile.py).
@@ -406,6 +410,8 @@ def to_ints(value: object) -> Ints | None:
     """
     if value is None or type(value) is Unparsed:
         return value  # type: ignore[return-value]
+    if type(value) is tuple and set(map(type, value)) <= _ONLY_INTS:
+        return value  # already ints: checked in C
     return tuple(_parse_int(t, _shortened(value)) for t in _tokens(value))
 
 

@@ -10,8 +10,9 @@ True
 """
 
 from serializers.dicts import from_dict, to_dict
+from serializers.etree_reading import from_etree
 from serializers.export import export
-from serializers.reader import from_etree, load, loads
+from serializers.reader import load, loads
 from serializers.writer import dump, dumps, to_etree
 
 __all__ = [

@@ -30,7 +30,6 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-import attrs
 import numpy as np
 from numpy.typing import NDArray
 
@@ -69,14 +68,36 @@ class _Reader:
 
 
 def _floats(values: NDArray[Any]) -> tuple[float, ...] | None:
-    return tuple(float(v) for v in values) if len(values) else None
+    return tuple(values.astype(float).tolist()) if len(values) else None
+
+
+def _ints(values: NDArray[Any]) -> tuple[int, ...]:
+    return tuple(values.astype(int).tolist())
 
 
 def read_skin(path: str | os.PathLike[str]) -> Skin:
     """A binary skin file as an inline ``<skin>`` node (vertices, faces, bones).
 
     The float32 values of the file are kept exactly, so MuJoCo compiles the same skin.
+    A file read before and unchanged since (same size and modification time) is
+    not read again: renaming a model's bodies reads its skins each time.
     """
+    found = Path(path).stat()
+    key = (os.fspath(path), found.st_size, found.st_mtime_ns)
+    skin = _READ.get(key)
+    if skin is None:
+        if len(_READ) >= _MAX_READ:
+            _READ.clear()
+        skin = _READ[key] = _read_skin(path)
+    return skin
+
+
+#: Skins read, by path, size and modification time (a few: scenes hold few skin files).
+_READ: dict[tuple[str, int, int], Skin] = {}
+_MAX_READ = 16
+
+
+def _read_skin(path: str | os.PathLike[str]) -> Skin:
     reader = _Reader(Path(path).read_bytes(), str(path))
     nvertex, ntexcoord, nface, nbone = (int(n) for n in reader.take("<i4", 4))
     if min(nvertex, ntexcoord, nface, nbone) < 0:
@@ -96,7 +117,7 @@ def read_skin(path: str | os.PathLike[str]) -> Skin:
                 body=body,
                 bindpos=_floats(bind[:3]),
                 bindquat=_floats(bind[3:]),
-                vertid=tuple(int(i) for i in ids),
+                vertid=_ints(ids),
                 vertweight=_floats(weights),
             )
         )
@@ -108,7 +129,7 @@ def read_skin(path: str | os.PathLike[str]) -> Skin:
     return Skin(
         vertex=_floats(vertex),
         texcoord=_floats(texcoord),
-        face=tuple(int(i) for i in face) or None,
+        face=_ints(face) or None,
         children=bones,
     )
 
@@ -158,7 +179,7 @@ def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str] | None = 
                 "face": data.face,
             },
         )
-        return attrs.evolve(inline, children=[*inline.children, *data.children])
+        return build_node(type(inline), {"children": (*inline.children, *data.children)}, inline)
 
     return map_elements(visit, model)
 

@@ -1,0 +1,371 @@
+"""The text reader: expat events straight into nodes, for one document.
+
+:class:`Reader` drives expat directly and builds nodes as elements close, so it
+knows the line of every element for error messages, keeps comments, and never
+sees a DTD or an entity: both are refused. Text that MuJoCo's parser reads and
+expat refuses is repaired (:mod:`serializers.repairs`) and read again.
+
+>>> from serializers.includes import Session
+>>> top = Reader("<string>", Session(inline_includes=False, main_dir=None), None).parse(
+...     "<!-- a --><mujoco/>"
+... )
+>>> [type(node).__name__ for node in top]
+['Comment', 'Mujoco']
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any, NoReturn
+from xml.parsers import expat
+
+from mjcf_model.base import Comment, GenericElement, Node, TypedElement
+from mjcf_model.errors import MjcfError, MjcfIncludeError, MjcfSecurityError, MjcfSyntaxError
+from mjcf_model.layout import DocumentText, Layout
+from mjcf_model.namespaces import child_key, children_context
+from mjcf_model.nodes.root import Include
+from serializers.building import build_element, element_step, element_text
+from serializers.includes import PendingInclude, Session
+from serializers.open_element import OpenElement
+from serializers.repairs import (
+    NUMERIC_ATTRIBUTES,
+    blank_text_before_root,
+    character_hint,
+    epilog_end,
+    escape_stray_markup,
+    exact_attributes,
+)
+
+__all__ = ["Reader"]
+
+
+class Reader:
+    """Builds nodes from expat events for one document."""
+
+    def __init__(self, filename: str, session: Session, include_context: str | None) -> None:
+        self.filename = filename
+        self.session = session
+        #: For an included file, the context its root's children are read in.
+        self.include_context = include_context
+        self.stack: list[OpenElement] = []
+        self.top: list[Node] = []  # comments around the root, and the root itself
+        #: The ``<include>`` elements read, when includes are inlined.
+        self.includes: list[PendingInclude] = []
+        #: The bytes being parsed, and the same as text when they are ASCII (byte offsets
+        #: are then text offsets), else ``None``.
+        self.raw = b""
+        self.ascii: str | None = None
+        #: Each attribute text's converted value, per field converter: converted once.
+        self.memo: dict[tuple[Any, str], Any] = {}
+        #: Where the root's start tag begins and its end tag ends, and where reading stopped.
+        self.root_begin = self.root_end = 0
+        #: The element being closed, for :meth:`locate`.
+        self.closing: OpenElement | None = None
+        # MuJoCo reads the bytes as UTF-8 whatever the XML declaration says; so do we.
+        self.parser = expat.ParserCreate(encoding="utf-8")
+        self.parser.ordered_attributes = True
+        self.parser.buffer_text = True
+        self.parser.SetParamEntityParsing(expat.XML_PARAM_ENTITY_PARSING_NEVER)
+        self.parser.StartElementHandler = self.start
+        self.parser.EndElementHandler = self.end
+        self.parser.CommentHandler = self.comment
+        self.parser.CharacterDataHandler = self.characters
+        self.parser.StartDoctypeDeclHandler = self.refuse_doctype
+        self.parser.EntityDeclHandler = self.refuse_entity
+        self.parser.ExternalEntityRefHandler = self.refuse_external
+
+    # -- security -----------------------------------------------------------------
+
+    def refuse_doctype(self, name: str, *_args: Any) -> NoReturn:
+        """Refuse a DTD (expat's handler)."""
+        raise MjcfSecurityError(
+            f"DTD <!DOCTYPE {name}> refused: MJCF needs no DTD and entities are never"
+            " expanded (MuJoCo ignores a DTD: remove it)",
+            file=self.filename,
+            line=self.parser.CurrentLineNumber,
+        )
+
+    def refuse_entity(self, name: str, *_args: Any) -> NoReturn:
+        """Refuse an entity declaration (expat's handler)."""
+        raise MjcfSecurityError(
+            f"entity declaration {name!r} refused: entities are never expanded",
+            file=self.filename,
+            line=self.parser.CurrentLineNumber,
+        )
+
+    def refuse_external(self, *_args: Any) -> NoReturn:
+        """Refuse an external entity reference (expat's handler)."""
+        raise MjcfSecurityError(
+            "external entity reference refused: nothing is fetched",
+            file=self.filename,
+            line=self.parser.CurrentLineNumber,
+        )
+
+    def path_to(self, item: OpenElement | None) -> str:
+        """The element path of ``item`` (or of the innermost open element), for errors.
+
+        Built only when an error is raised: ``item`` has been closed, so the open
+        elements on the stack are its ancestors.
+        """
+        chain = self.stack if item is None else [*self.stack, item]
+        return "".join(f"/{element_step(o.tag, o.attributes, o.index)}" for o in chain)
+
+    # -- events -------------------------------------------------------------------
+
+    def source(self, begin: int, end: int) -> str:
+        """The source text between two byte offsets."""
+        if self.ascii is not None:
+            return self.ascii[begin:end]
+        return self.raw[begin:end].decode("utf-8", "surrogatepass")
+
+    def start(self, tag: str, flat: list[str]) -> None:
+        """Open an element at its start tag (expat's handler)."""
+        raw = self.raw
+        begin = self.parser.CurrentByteIndex
+        stop = raw.find(b">", begin) + 1  # the tag's end, unless a value holds a ">"
+        stack = self.stack
+        context = stack[-1].context if stack else None
+        names = flat[::2]
+        attributes = list(zip(names, flat[1::2], strict=True))
+        numeric = None
+        for name, value in attributes:
+            if ">" in value:
+                stop = _start_tag_end(raw, begin)
+            # expat turns a tab or line break in a value into a space; tinyxml2 keeps
+            # it. Only text fields care, and only values with a space can be affected.
+            if " " in value:
+                if numeric is None:
+                    numeric = NUMERIC_ATTRIBUTES[context][tag]
+                if name not in numeric:
+                    attributes = exact_attributes(raw, begin, attributes)
+                    stop = _start_tag_end(raw, begin)
+                    break
+        text = self.ascii
+        if stack:
+            parent = stack[-1]
+            counts = parent.counts
+            index = 1 if counts is None else counts.get(tag, 0) + 1
+            cursor = parent.cursor
+            gap = text[cursor:begin] if text is not None else self.source(cursor, begin)
+        else:
+            index, gap = 1, ""
+            self.root_begin = begin
+        key = child_key(context, tag)
+        inner = children_context(key, context)
+        if not stack and self.include_context is not None:
+            inner = self.include_context  # MuJoCo takes the root's children, whatever its tag
+        stack.append(
+            OpenElement(
+                tag,
+                attributes,
+                tuple(names),
+                key,
+                inner,
+                self.parser.CurrentLineNumber,
+                index,
+                text[begin:stop] if text is not None else self.source(begin, stop),
+                stop,
+                gap,
+            )
+        )
+
+    def locate(self, error: MjcfError) -> MjcfError:
+        """``error`` with the file, line and path of the element being closed."""
+        item = self.closing
+        assert item is not None
+        return error.located(file=self.filename, line=item.line, path=self.path_to(item))
+
+    def end(self, _tag: str) -> None:
+        """Build the element being closed and give it to its parent (expat's handler)."""
+        item = self.stack.pop()
+        text = element_text(item.text, bool(item.children)) if item.text else None
+        if item.start.endswith("/>"):
+            layout = Layout(item.tag, item.start, _NO_GAPS, "", item.names, (), (), text, None)
+            after = item.cursor
+        else:
+            begin = self.parser.CurrentByteIndex
+            after = self.raw.index(b">", begin) + 1
+            source = self.ascii
+            if source is not None:
+                last = source[item.cursor : begin]
+                end_tag = source[begin:after]
+            else:
+                last = self.source(item.cursor, begin)
+                end_tag = self.source(begin, after)
+            layout = Layout(
+                item.tag,
+                item.start,
+                (*item.gaps, last),
+                end_tag,
+                item.names,
+                (),
+                tuple(item.sources),
+                text,
+                item.comments,
+            )
+        self.closing = item
+        try:
+            node = build_element(
+                item.key,
+                item.tag,
+                item.attributes,
+                item.children,
+                text,
+                self.locate,
+                layout,
+                self.memo,
+            )
+        except MjcfError as error:
+            raise self.locate(error) from None
+        if self.stack:
+            parent = self.stack[-1]
+            parent.add_child(item.gap, node, layout)
+            if parent.counts is not None:
+                parent.counts[item.tag] = item.index
+            parent.cursor = after
+        else:
+            self.top.append(node)
+            self.root_end = after
+        if self.session.inline_includes and isinstance(node, Include):
+            if not node.file:
+                raise MjcfIncludeError(
+                    "<include> needs a 'file' attribute",
+                    file=self.filename,
+                    line=item.line,
+                    path=self.path_to(item),
+                )
+            context = self.stack[-1].context if self.stack else None
+            self.includes.append(
+                PendingInclude(
+                    node, self.filename, item.line, self.path_to(item), context or "mujoco"
+                )
+            )
+
+    def comment(self, text: str) -> None:
+        """Keep a comment as a child, with its exact text (expat's handler)."""
+        node = Comment(text=text)
+        if not self.stack:
+            self.top.append(node)  # its text is kept in the root's document text
+            return
+        parent = self.stack[-1]
+        begin = self.parser.CurrentByteIndex
+        after = self.raw.index(b"-->", begin + 4) + 3
+        if b"\r" in self.raw[begin:after]:  # expat gives the text with line feeds only
+            if parent.comments is None:
+                parent.comments = {}
+            parent.comments[len(parent.children)] = self.source(begin, after)
+        parent.add_child(self.source(parent.cursor, begin), node, node)
+        parent.cursor = after
+
+    def characters(self, data: str) -> None:
+        """Note character data of the innermost open element (expat's handler)."""
+        if self.stack:
+            item = self.stack[-1]
+            if item.text is None:
+                item.text = [data]
+            else:
+                item.text.append(data)
+
+    # -- driver -------------------------------------------------------------------
+
+    def parse(self, data: str | bytes) -> list[Node]:
+        """Read one document; text MuJoCo's lenient parser reads is repaired first."""
+        raw = data.encode("utf-8", "surrogatepass") if isinstance(data, str) else data
+        if raw.startswith((b"\xff\xfe", b"\xfe\xff")):
+            # expat follows a UTF-16 byte order mark; read as UTF-8, offsets are text offsets
+            try:
+                raw = raw.decode("utf-16").encode("utf-8", "surrogatepass")
+            except UnicodeDecodeError as error:
+                raise MjcfSyntaxError(
+                    f"malformed UTF-16 after a byte order mark: {error.reason}; save the file"
+                    " as UTF-8, which MuJoCo reads",
+                    file=self.filename,
+                ) from None
+        try:
+            self.raw = raw
+            if raw.isascii():
+                self.ascii = raw.decode("ascii")
+            self.parser.Parse(raw, True)
+            self.record_document(len(raw))
+        except expat.ExpatError as error:
+            if self.completed_root(raw):
+                # MuJoCo reads the first root element and ignores what follows
+                self.record_document(epilog_end(raw, self.root_end, self.parser.ErrorByteIndex))
+                return self.top
+            blanked = blank_text_before_root(raw)
+            repaired = escape_stray_markup(blanked or raw) or blanked
+            if repaired is not None:
+                retry = Reader(self.filename, self.session, self.include_context)
+                try:
+                    top = retry.parse(repaired)
+                except MjcfSyntaxError:
+                    pass
+                else:
+                    self.includes = retry.includes
+                    return top
+            raise self.syntax_error(error, raw) from None
+        finally:
+            self.release()
+        return self.top
+
+    def release(self) -> None:
+        """Let go of the parser and the text: the parser holds this reader's handlers.
+
+        Without this, each reader would be a reference cycle that keeps the file's
+        text alive until the cyclic garbage collector runs.
+        """
+        parser = self.parser
+        parser.StartElementHandler = parser.EndElementHandler = None
+        parser.CommentHandler = parser.CharacterDataHandler = None
+        parser.StartDoctypeDeclHandler = parser.EntityDeclHandler = None
+        parser.ExternalEntityRefHandler = None
+        self.raw, self.ascii, self.closing = b"", None, None
+
+    def record_document(self, stop: int) -> None:
+        """Give the root's layout the text around the root, up to byte ``stop``."""
+        comments = [n for n in self.top if isinstance(n, Comment)]
+        root = next((n for n in self.top if not isinstance(n, Comment)), None)
+        if not isinstance(root, (TypedElement, GenericElement)) or root.layout is None:
+            return
+        count = self.top.index(root)
+        root.layout.document = DocumentText(
+            self.source(0, self.root_begin),
+            self.source(self.root_end, stop),
+            tuple(comments[:count]),
+            tuple(comments[count:]),
+        )
+
+    def completed_root(self, raw: bytes) -> bool:
+        """Whether expat stopped at markup after a complete root, which MuJoCo ignores."""
+        if self.stack or not any(not isinstance(n, Comment) for n in self.top):
+            return False
+        index = self.parser.ErrorByteIndex  # at the "<" or just after it
+        start = index if raw[index : index + 1] == b"<" else index - 1
+        return raw[start : start + 1] == b"<" and start + 1 < len(raw)
+
+    def syntax_error(self, error: expat.ExpatError, raw: bytes) -> MjcfSyntaxError:
+        """The error to raise for what expat refused, located and explained."""
+        path = self.path_to(None) if self.stack else None
+        message = expat.errors.messages[error.code] if error.code else str(error)
+        detail = f"malformed XML: {message} (column {error.offset + 1})"
+        index = self.parser.ErrorByteIndex
+        if index >= 0:
+            detail += character_hint(raw[index : index + 4])
+        return MjcfSyntaxError(detail, file=self.filename, line=error.lineno, path=path)
+
+
+def _start_tag_end(raw: bytes, index: int) -> int:
+    """The offset after the ``>`` that ends the start tag at ``index`` (expat read it whole)."""
+    while True:
+        mark = _TAG_END_MARK.search(raw, index)
+        assert mark is not None
+        position = mark.start()
+        if raw[position] == ord(">"):
+            return position + 1
+        index = raw.index(raw[position : position + 1], position + 1) + 1
+
+
+#: The gaps of an element with nothing inside (shared: most elements).
+_NO_GAPS = ("",)
+#: What ends a start tag, or opens a value that may hold a ``>``.
+_TAG_END_MARK = re.compile(b"[\"'>]")

@@ -1,0 +1,301 @@
+r"""The format-keeping writer: a loaded model written as it was read.
+
+Each element that carries a :class:`~mjcf_model.layout.Layout` is written as its
+source text, with only what changed edited in place (a changed value inside its
+quotes, a removed attribute or child with the white space before it); an element
+added in code is written in the canonical form (:mod:`serializers.canonical`),
+indented as its siblings.
+
+>>> from serializers import loads
+>>> out: list[str] = []
+>>> write_kept(loads("<mujoco>\n\t<option timestep='2e-3'/>\n</mujoco>"), out)
+>>> "".join(out)
+"<mujoco>\n\t<option timestep='2e-3'/>\n</mujoco>"
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any
+
+from mjcf_model.base import AnyElement, Comment, Node, attribute_items
+from mjcf_model.layout import Layout
+from mjcf_model.values import Value, format_value
+from serializers.canonical import (
+    ATTRIBUTE_ESCAPES,
+    TEXT_ESCAPES,
+    checked_element,
+    write_canonical,
+)
+
+__all__ = ["write_kept"]
+
+
+_WHITE_SPACE = " \t\r\n"
+#: The recorded value of an attribute the reader did not find (equal to no value).
+_NOT_READ = object()
+#: How far back the writer looks for the line an element starts on (bounded: linear).
+_INDENT_LOOKBACK = 64
+
+
+class _Style:
+    """The line break and indentation unit of a file, for the elements added to it.
+
+    Read from the root's gaps: the first one that breaks the line gives both; a
+    root written on one line gives none (added elements stay on the line).
+    """
+
+    __slots__ = ("newline", "unit")
+
+    def __init__(self, root: Layout) -> None:
+        #: The file's line break.
+        self.newline = "\n"
+        #: One level of indentation.
+        self.unit = "  "
+        if not any("\n" in gap for gap in root.gaps):
+            self.newline = self.unit = ""
+            return
+        document = root.document
+        margin = _indent_after(document.before) if document is not None else ""
+        for gap in root.gaps[:-1]:
+            line = _line_start(gap)
+            if line is not None:
+                self.newline = "\r\n" if line.startswith("\r") else "\n"
+                indent = line.lstrip("\r\n")
+                if indent.startswith(margin):
+                    self.unit = indent[len(margin) :]
+                break
+
+
+def _line_start(gap: str) -> str | None:
+    """The last line break of ``gap`` and the white space after it, or ``None``."""
+    index = gap.rfind("\n")
+    if index < 0:
+        return None
+    return ("\r\n" if index and gap[index - 1] == "\r" else "\n") + _indent_after(gap)
+
+
+def _indent_after(text: str) -> str:
+    """The white space that starts the last line of ``text``."""
+    rest = text[text.rfind("\n") + 1 :]
+    return rest[: len(rest) - len(rest.lstrip(" \t"))]
+
+
+def _current_indent(out: list[str]) -> str:
+    """The indentation of the line being written (looked for a bounded way back)."""
+    for piece in out[: -_INDENT_LOOKBACK - 1 : -1]:
+        if "\n" in piece:
+            return _indent_after(piece)
+    return ""
+
+
+def write_kept(root: AnyElement, out: list[str]) -> None:
+    """Append the text of ``root`` (it has a layout), the source text of what is unchanged.
+
+    An explicit stack of pieces (text, or a node still to write), so any depth is written.
+    """
+    layout = root.layout
+    assert layout is not None
+    style = _Style(layout)
+    children = root.children
+    before, after = "", style.newline
+    document = layout.document
+    if document is not None:
+        lead, trail = document.before_comments, document.after_comments
+        inner = len(children) - len(trail)
+        if (
+            inner >= len(lead)
+            and all(a is b for a, b in zip(children, lead, strict=False))
+            and all(a is b for a, b in zip(children[inner:], trail, strict=True))
+        ):
+            before, after = document.before, document.after
+            children = children[len(lead) : inner]
+    out.append(before)
+    stack: list[Any] = [after]
+    if root.tag == layout.tag:
+        _open(root, layout, children, out, stack, style)
+    else:
+        stack.append(root)
+    while stack:
+        item = stack.pop()
+        if type(item) is str:
+            out.append(item)
+        elif isinstance(item, Comment):
+            out.append(f"<!--{item.text}-->")
+        else:
+            element = checked_element(item)
+            kept = element.layout
+            if kept is not None and element.tag == kept.tag:
+                _open(element, kept, element.children, out, stack, style)
+            else:
+                margin = _current_indent(out)
+                block: list[str] = []
+                write_canonical(element, style.unit, block, margin, style.newline)
+                text = "".join(block)
+                out.append(text[len(margin) : len(text) - len(style.newline)])
+
+
+def _open(
+    element: AnyElement,
+    layout: Layout,
+    children: tuple[Node, ...],
+    out: list[str],
+    stack: list[Any],
+    style: _Style,
+) -> None:
+    """Write ``element``'s start tag to ``out``; push its gaps, children and end tag."""
+    sources = layout.sources
+    count = len(sources)
+    if (element.text is layout.text or element.text == layout.text) and len(children) == count:
+        for child, source in zip(children, sources, strict=True):
+            if getattr(child, "layout", child) is not source:
+                break
+        else:
+            out.append(_start_tag(element, layout))
+            gaps = layout.gaps
+            comments = layout.comments or {}
+            stack.append(layout.end)
+            stack.append(gaps[count])
+            for index in range(count - 1, -1, -1):
+                child = children[index]
+                if isinstance(child, Comment):
+                    stack.append(comments.get(index) or f"<!--{child.text}-->")
+                else:
+                    stack.append(child)
+                stack.append(gaps[index])
+            return
+    pieces = _changed_content(element, layout, children, _current_indent(out), style)
+    start, end = _start_tag(element, layout), layout.end
+    if not end and len(pieces) > 1:  # an empty-element tag now holds something
+        start, end = start[:-2].rstrip() + ">", f"</{element.tag}>"
+    out.append(start)
+    stack.append(end)
+    stack.extend(reversed(pieces))
+
+
+def _changed_content(
+    element: AnyElement, layout: Layout, children: tuple[Node, ...], indent: str, style: _Style
+) -> list[Any]:
+    """The gaps and children of an element whose children or text changed, in order.
+
+    Kept children keep the gap before them (of the gaps left where children were
+    removed, the one with the most line breaks: no blank line is lost); an added
+    child gets a line of its own, indented as its siblings.
+    """
+    gaps = list(layout.gaps)
+    text = element.text
+    if not (text is layout.text or text == layout.text):
+        gaps = [gap[len(gap.rstrip()) :] for gap in gaps]  # the old text goes
+        if text is not None:
+            gaps[0] = text.translate(TEXT_ESCAPES) + gaps[0]
+    sources = layout.sources
+    count = len(sources)
+    slots = {id(source): index for index, source in enumerate(sources)}
+    comments = layout.comments or {}
+    added = _added_gap(gaps, count, indent, style)
+    pieces: list[Any] = []
+    last = -1
+    for child in children:
+        token = getattr(child, "layout", child)
+        index = slots.get(id(token), -1) if token is not None else -1
+        if index > last:
+            if last < 0 or index == last + 1:
+                gap = gaps[0] if last < 0 else gaps[index]
+            else:
+                gap = max(reversed(gaps[last + 1 : index + 1]), key=lambda g: g.count("\n"))
+            last = index
+            kept = comments.get(index) if isinstance(child, Comment) else None
+            pieces += (gap, kept or child)
+        else:
+            pieces += (added, child)
+    if count:
+        pieces.append(gaps[count])
+    elif children:
+        pieces.append(gaps[0] if "\n" in gaps[0] else style.newline + indent)
+    else:
+        pieces.append(gaps[0])
+    return pieces
+
+
+def _added_gap(gaps: list[str], count: int, indent: str, style: _Style) -> str:
+    """The gap before a child added among ``count`` children: a line like its siblings'."""
+    for gap in gaps[:count]:
+        line = _line_start(gap)
+        if line is not None:
+            return line
+    if count:  # siblings on one line: one more there, separated as they are
+        return gaps[1] if count > 1 else ""
+    return style.newline + indent + style.unit
+
+
+def _start_tag(element: AnyElement, layout: Layout) -> str:
+    """The recorded start tag, with the attributes changed since edited in place."""
+    getter = layout.getter
+    if (
+        getter is not None
+        and len(element.__dict__) == layout.size
+        and getter(element) == layout.values
+    ):
+        return layout.start  # the fields stored and their values are the ones read
+    items = attribute_items(element)
+    names, values = layout.names, layout.values
+    if len(items) == len(names):
+        for (name, value), recorded_name, recorded in zip(items, names, values, strict=True):
+            if name != recorded_name or (value is not recorded and value != recorded):
+                break
+        else:
+            return layout.start
+    return _edited_start(layout, items)
+
+
+def _attribute_spans(start: str, position: int) -> Iterator[tuple[int, str, int, int]]:
+    """Each attribute of a start tag from ``position`` on, as offsets into ``start``.
+
+    Yields where the white space before the attribute begins, its name, and
+    where its value begins and ends (the closing quote's offset).
+    """
+    while True:
+        begin = position
+        while position < len(start) and start[position] in _WHITE_SPACE:
+            position += 1
+        equals = start.find("=", position)
+        if position == begin or equals < 0:
+            return
+        name = start[position:equals].rstrip(_WHITE_SPACE)
+        quote = equals + 1
+        while start[quote] in _WHITE_SPACE:
+            quote += 1
+        close = start.find(start[quote], quote + 1)
+        yield begin, name, quote + 1, close
+        position = close + 1
+
+
+def _edited_start(layout: Layout, items: list[tuple[str, Value]]) -> str:
+    """The recorded start tag with ``items`` as its attributes.
+
+    A changed value is replaced inside its quotes (the quote kept), a removed
+    attribute goes with the white space before it, and an added one is written
+    after the last attribute, as in the canonical form.
+    """
+    start = layout.start
+    current = dict(items)
+    recorded = dict(zip(layout.names, layout.values, strict=True))
+    position = 1 + len(layout.tag)
+    pieces = [start[:position]]
+    for begin, name, value_start, value_end in _attribute_spans(start, position):
+        position = value_end + 1
+        if name not in current:
+            continue  # removed, with the white space before it
+        value = current.pop(name)
+        old = recorded.get(name, _NOT_READ)
+        if value is old or value == old:
+            pieces.append(start[begin:position])
+            continue
+        text = format_value(value).translate(ATTRIBUTE_ESCAPES)
+        if start[value_end] == "'":
+            text = text.replace("'", "&apos;")
+        pieces += (start[begin:value_start], text, start[value_end])
+    for name, value in current.items():
+        pieces.append(f' {name}="{format_value(value).translate(ATTRIBUTE_ESCAPES)}"')
+    pieces.append(start[position:])
+    return "".join(pieces)

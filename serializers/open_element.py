@@ -1,0 +1,94 @@
+"""An element the text reader has begun and not yet closed.
+
+:class:`OpenElement` holds what :class:`serializers.expat_reading.Reader` gathers
+between an element's start tag and its end tag: its attributes, its children and
+the source text around them.
+
+>>> item = OpenElement("geom", [("size", "0.1")], ("size",), "geom", None, 1, 1, "<geom>", 6, "")
+>>> item.children, item.start
+([], '<geom>')
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from mjcf_model.base import Node
+
+__all__ = ["OpenElement"]
+
+
+class OpenElement:
+    """An element whose start tag was read and whose end tag was not yet."""
+
+    __slots__ = (
+        "attributes",
+        "children",
+        "comments",
+        "context",
+        "counts",
+        "cursor",
+        "gap",
+        "gaps",
+        "index",
+        "key",
+        "line",
+        "names",
+        "sources",
+        "start",
+        "tag",
+        "text",
+    )
+
+    def __init__(
+        self,
+        tag: str,
+        attributes: list[tuple[str, str]],
+        names: tuple[str, ...],
+        key: str | None,
+        context: str | None,
+        line: int,
+        index: int,
+        start: str,
+        cursor: int,
+        gap: str,
+    ) -> None:
+        self.tag = tag
+        self.attributes = attributes
+        #: The attribute names in source order.
+        self.names = names
+        self.key = key
+        self.context = context
+        self.line = line
+        #: 1-based position among the parent's children with the same tag.
+        self.index = index
+        #: The start tag's source text.
+        self.start = start
+        #: The byte offset where the text not yet given to a gap or a child begins.
+        self.cursor = cursor
+        #: The source text between the previous sibling (or the parent's start tag) and this.
+        self.gap = gap
+        #: The character data read, or ``None`` before any.
+        self.text: list[str] | None = None
+        #: What the children need, made at the first child (most elements have none):
+        #: the children, the count of each tag among them, the source text before each
+        #: child, and each child's layout or the comment node (:attr:`Layout.sources`).
+        self.children: list[Node] = _NO_CHILDREN
+        self.counts: dict[str, int] | None = None
+        self.gaps: list[str] = _NO_CHILDREN
+        self.sources: list[Any] = _NO_CHILDREN
+        #: The exact text of comment children that ``<!--text-->`` would not give back.
+        self.comments: dict[int, str] | None = None
+
+    def add_child(self, gap: str, child: Node, source: Any) -> None:
+        """Note a child and the source text before it."""
+        if self.counts is None:
+            self.counts = {}
+            self.children, self.gaps, self.sources = [], [], []
+        self.gaps.append(gap)
+        self.children.append(child)
+        self.sources.append(source)
+
+
+#: What an element without children holds as its children (never appended to).
+_NO_CHILDREN: list[Any] = []
