@@ -419,6 +419,10 @@ def field_table(cls: type[TypedElement]) -> dict[str, str]:
     return cls.__node_info__.table
 
 
+def _first_item(pair: tuple[Any, Any]) -> Any:
+    return pair[0]
+
+
 def attribute_items(element: AnyElement) -> list[tuple[str, Value]]:
     """The element's written attributes as ``(xml name, value)``, in source order.
 
@@ -434,11 +438,15 @@ def attribute_items(element: AnyElement) -> list[tuple[str, Value]]:
     if isinstance(element, GenericElement):
         return list(element.attributes.items())
     info = type(element).__node_info__
-    values: dict[str, Value] = {
-        xml: value
-        for xml, value in zip(info.names, info.getter(element), strict=True)
-        if value is not None
-    }
+    rank = info.rank
+    present = [
+        (rank[field], value)
+        for field, value in element.__dict__.items()
+        if value is not None and field in rank
+    ]  # only the fields the node stores: a few, not every field of the class
+    present.sort(key=_first_item)
+    names = info.names
+    values: dict[str, Value] = {names[index]: value for index, value in present}
     if element.extra:
         values.update(element.extra)
     if not element.attribute_order:

@@ -89,7 +89,7 @@ from mjcf_model.rotations import (
     orientation_radians,
     quat_distance,
 )
-from mjcf_model.scaling_rules import numbers
+from mjcf_model.scaling_context import numbers
 from mjcf_model.traversal import keyed_walk, map_elements, refuse_opaque, with_children
 from mjcf_model.values import Value
 

@@ -104,6 +104,7 @@ class NodeInfo:
         "getter",
         "keys",
         "names",
+        "rank",
         "required",
         "shallow",
         "table",
@@ -144,6 +145,8 @@ class NodeInfo:
         self.table: dict[str, str] = table
         #: The MJCF names of ``table``, in the same order as ``getter``'s values.
         self.names: tuple[str, ...] = tuple(table)
+        #: Each attribute field's position in ``names``.
+        self.rank: dict[str, int] = {field: index for index, field in enumerate(table.values())}
         #: Reads every attribute field at once, as a tuple in ``names`` order.
         self.getter: Callable[[Any], tuple[Any, ...]] = _tuple_getter(tuple(table.values()))
         #: Reads what ``==`` compares on the node itself, its children left out.

@@ -21,6 +21,7 @@ from typing import Any
 
 import attrs
 
+from mjcf_model.ancestry import Ancestors
 from mjcf_model.base import (
     AnyElement,
     GenericElement,
@@ -29,7 +30,6 @@ from mjcf_model.base import (
     get_attribute,
 )
 from mjcf_model.queries import attribute_values
-from mjcf_model.traversal import Ancestors
 from mjcf_model.values import Value
 
 __all__ = ["MAIN", "DefaultClasses"]

@@ -1,7 +1,7 @@
 """Scaling a model: every length multiplied, angles and unitless values untouched.
 
 :func:`scaled` walks the tree once and asks the rule of each element's schema key
-(:data:`mjcf_model.scaling_rules.RULES`) which attributes change. Every key of the
+(:data:`mjcf_model.scaling_table.RULES`) which attributes change. Every key of the
 namespace table has a rule, even if it is "no lengths", so an element type MuJoCo
 adds fails a test until someone decides how it scales.
 
@@ -33,8 +33,9 @@ import numpy.typing as npt
 from mjcf_model.base import AnyElement, with_attributes
 from mjcf_model.defaults import DefaultClasses
 from mjcf_model.errors import MjcfValueError
+from mjcf_model.scaling_context import ScaleContext
 from mjcf_model.scaling_plugins import SDF_SETTINGS_KEYS, with_sdf_settings
-from mjcf_model.scaling_rules import NO_LENGTHS, ScaleContext
+from mjcf_model.scaling_rules import NO_LENGTHS
 from mjcf_model.scaling_table import RULES
 from mjcf_model.traversal import GUESS, map_elements, refuse_opaque
 

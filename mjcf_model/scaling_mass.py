@@ -10,7 +10,7 @@ body mixing written masses and densities keeps its mass and its centre of mass
 moves with its geoms.
 
 >>> from mjcf_model import Geom
->>> from mjcf_model.scaling_rules import ScaleContext
+>>> from mjcf_model.scaling_context import ScaleContext
 >>> geom_density(Geom(size=[0.1]), (), ScaleContext(factors=(2.0, 2.0, 2.0)))
 {'density': 125.0}
 """
@@ -21,7 +21,8 @@ from collections.abc import Sequence
 
 from mjcf_model.base import AnyElement, get_attribute
 from mjcf_model.provenance import file_stem
-from mjcf_model.scaling_rules import Changes, ScaleContext, builtin_default, numbers
+from mjcf_model.scaling_context import ScaleContext, numbers
+from mjcf_model.scaling_rules import Changes, builtin_default
 
 __all__ = ["geom_density", "is_shell"]
 
@@ -63,7 +64,7 @@ def is_shell(geom: AnyElement, ancestors: Sequence[AnyElement], context: ScaleCo
 
     Example:
         >>> from mjcf_model import Geom
-        >>> from mjcf_model.scaling_rules import ScaleContext
+        >>> from mjcf_model.scaling_context import ScaleContext
         >>> context = ScaleContext(factors=(2.0, 2.0, 2.0))
         >>> is_shell(Geom(type="box", shellinertia=True), (), context)
         True
@@ -110,7 +111,7 @@ def geom_density(
 
     Example:
         >>> from mjcf_model import Geom
-        >>> from mjcf_model.scaling_rules import ScaleContext
+        >>> from mjcf_model.scaling_context import ScaleContext
         >>> context = ScaleContext(factors=(2.0, 2.0, 2.0))
         >>> geom_density(Geom(type="box", shellinertia=True, density=100), (), context)
         {'density': 25.0}

@@ -23,7 +23,8 @@ from types import MappingProxyType
 from mjcf_model.base import AnyElement, get_attribute
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.plugin import PluginConfig
-from mjcf_model.scaling_rules import Changes, ScaleContext, numbers, times
+from mjcf_model.scaling_context import ScaleContext, numbers, times
+from mjcf_model.scaling_rules import Changes
 from mjcf_model.traversal import keyed_walk, with_children
 from mjcf_model.values import format_value
 
@@ -95,7 +96,7 @@ def sdf_config(
 
     Example:
         >>> from mjcf_model import ExtensionPlugin, PluginInstance
-        >>> from mjcf_model.scaling_rules import ScaleContext
+        >>> from mjcf_model.scaling_context import ScaleContext
         >>> owners = (ExtensionPlugin(plugin="mujoco.sdf.torus"), PluginInstance(name="t"))
         >>> config = PluginConfig(key="radius1", value="0.2")
         >>> sdf_config(config, owners, ScaleContext(factors=(2.0, 2.0, 2.0)))
@@ -122,7 +123,7 @@ def with_sdf_settings(
 
     Example:
         >>> from mjcf_model import ExtensionPlugin, PluginInstance
-        >>> from mjcf_model.scaling_rules import ScaleContext
+        >>> from mjcf_model.scaling_context import ScaleContext
         >>> owners = (ExtensionPlugin(plugin="mujoco.sdf.torus"),)
         >>> done = with_sdf_settings(PluginInstance(name="t"), "extension/plugin/instance",
         ...                          owners, ScaleContext(factors=(2.0, 2.0, 2.0)))
@@ -161,7 +162,7 @@ def sdf_mesh_scale(
 
     Example:
         >>> from mjcf_model import Mesh, Plugin
-        >>> from mjcf_model.scaling_rules import ScaleContext
+        >>> from mjcf_model.scaling_context import ScaleContext
         >>> mesh = Mesh(children=[Plugin(instance="t")])
         >>> sdf_mesh_scale(mesh, (), ScaleContext(factors=(2.0, 2.0, 2.0)))
         {}

@@ -1,7 +1,7 @@
 """The scaling rule of every schema key, built from :mod:`mjcf_model.scaling_rules`.
 
 >>> from mjcf_model import Site
->>> from mjcf_model.scaling_rules import ScaleContext
+>>> from mjcf_model.scaling_context import ScaleContext
 >>> RULES["body/site"](Site(pos=[1, 0, 0]), (), ScaleContext(factors=(2.0, 2.0, 2.0)))
 {'pos': (2.0, 0.0, 0.0), 'size': (0.01, 0.01, 0.01)}
 """
@@ -18,23 +18,21 @@ from mjcf_model.base import AnyElement, get_attribute
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.namespaces import SCHEMA
 from mjcf_model.queries import attribute_values
+from mjcf_model.scaling_context import ScaleContext, numbers, times
 from mjcf_model.scaling_mass import geom_density
 from mjcf_model.scaling_plugins import makes_sdf, sdf_config, sdf_mesh_scale
 from mjcf_model.scaling_rules import (
     NO_LENGTHS,
     Changes,
     Rule,
-    ScaleContext,
     ValueRule,
     builtin_default,
     combine,
     inertias,
     lengths,
     masses,
-    numbers,
     parts,
     points,
-    times,
     with_builtin,
 )
 from mjcf_model.values import Value, format_value
