@@ -39,6 +39,15 @@ from serializers.repairs import (
 __all__ = ["Reader"]
 
 
+#: The first two bytes by which expat recognises UTF-16, and the codec that reads it.
+_UTF16_STARTS = {
+    b"\xff\xfe": "utf-16",
+    b"\xfe\xff": "utf-16",
+    b"<\x00": "utf-16-le",
+    b"\x00<": "utf-16-be",
+}
+
+
 class Reader:
     """Builds nodes from expat events for one document."""
 
@@ -271,14 +280,15 @@ class Reader:
     def parse(self, data: str | bytes) -> list[Node]:
         """Read one document; text MuJoCo's lenient parser reads is repaired first."""
         raw = data.encode("utf-8", "surrogatepass") if isinstance(data, str) else data
-        if raw.startswith((b"\xff\xfe", b"\xfe\xff")):
-            # expat follows a UTF-16 byte order mark; read as UTF-8, offsets are text offsets
+        utf16 = _UTF16_STARTS.get(raw[:2])
+        if utf16 is not None:
+            # expat follows a UTF-16 byte order mark, and detects UTF-16 from a first
+            # "<" without one; read as UTF-8, so that byte offsets are text offsets
             try:
-                raw = raw.decode("utf-16").encode("utf-8", "surrogatepass")
+                raw = raw.decode(utf16).encode("utf-8", "surrogatepass")
             except UnicodeDecodeError as error:
                 raise MjcfSyntaxError(
-                    f"malformed UTF-16 after a byte order mark: {error.reason}; save the file"
-                    " as UTF-8, which MuJoCo reads",
+                    f"malformed UTF-16: {error.reason}; save the file as UTF-8, which MuJoCo reads",
                     file=self.filename,
                 ) from None
         try:
