@@ -23,12 +23,13 @@ from typing import Literal
 
 import attrs
 
+from mjcf_model.ancestry import Ancestors
 from mjcf_model.base import AnyElement, Node, get_attribute, with_attributes
 from mjcf_model.defaults import DefaultClasses
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.body import Frame
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.traversal import Ancestors, keyed_walk, with_children
+from mjcf_model.traversal import keyed_walk, with_children
 from mjcf_model.values import Value, to_vec3, to_vec4
 
 __all__ = ["AttachKind", "AttachPoint", "Where", "attach_point", "placement_frame", "wrapped"]

@@ -41,7 +41,7 @@ Includes are inlined first; asset ``<model>`` elements are removed at the end.
 >>> _ = (folder / "table.xml").write_text('<mujoco><asset><model file="cup.xml"/></asset>'
 ...     '<worldbody><body name="table"><attach model="cup" body="cup" prefix="a_"/>'
 ...     '</body></worldbody></mujoco>')
->>> print(dumps(inlined_attachments(load(folder / "table.xml")).worldbody), end="")
+>>> print(dumps(inlined_attachments(load(folder / "table.xml")).worldbody, canonical=True), end="")
 <worldbody>
   <body name="table">
     <body name="a_cup">

@@ -20,6 +20,7 @@ both, which are kept once.
 from __future__ import annotations
 
 from collections.abc import Collection, Iterable, Mapping
+from typing import cast
 
 import attrs
 
@@ -39,6 +40,7 @@ from mjcf_model.base import (
 from mjcf_model.composition_defaults import classed, merged_settings, sets_values
 from mjcf_model.composition_keys import keys_of, merged_keyframes
 from mjcf_model.composition_main import CLASSED_SECTIONS, with_main_as_class
+from mjcf_model.composition_prefix import RepeatedPrefixing
 from mjcf_model.conventions import in_conventions
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.naming import declarations, declared_names, prefixed_declared
@@ -51,6 +53,8 @@ from mjcf_model.traversal import keyed_walk, refuse_opaque, replaced_at, walk, w
 
 __all__ = ["AttachKind", "attach", "attach_all", "attach_in_frame"]
 
+#: No names.
+_NONE: frozenset[str] = frozenset()
 #: Sections whose settings the parent keeps; a parent without one adopts the child's.
 #: (Not ``<compiler>``: the child is converted into the parent's, see ``_in_parent_terms``.)
 _SETTINGS = ("option", "size", "statistic", "visual")
@@ -68,16 +72,19 @@ _LISTS = (
 )
 
 
-def _sections(model: Mujoco, tag: str) -> list[AnyElement]:
-    return [c for c in model.elements if c.tag == tag]
-
-
-def _section_children(model: Mujoco, tag: str) -> list[Node]:
-    return [child for section in _sections(model, tag) for child in section.children]
+def _by_tag(model: Mujoco) -> dict[str, list[AnyElement]]:
+    """The model's sections by tag, in order."""
+    found: dict[str, list[AnyElement]] = {}
+    for section in model.children:
+        if isinstance(section, (TypedElement, GenericElement)):
+            found.setdefault(section.tag, []).append(section)
+    return found
 
 
 def _check_collisions(declared: dict[str, set[str]], theirs: Mapping[str, Collection[str]]) -> None:
     """Raise when the child's names ``theirs`` meet the parent's ``declared`` ones."""
+    if all(declared.get(namespace, _NONE).isdisjoint(names) for namespace, names in theirs.items()):
+        return
     clashes = {
         namespace: sorted(set(names) & declared.get(namespace, set()))
         for namespace, names in theirs.items()
@@ -256,50 +263,64 @@ class _Composer:
         if (demoted := with_main_as_class(parent, main)) is not parent:
             parent = demoted
             self.declared.setdefault("class", set()).add(main)
-        self.parent = parent
-        self.sections: list[Node] = list(parent.children)
-        self.assets: set[AnyElement] = {
-            e for section in _sections(parent, "asset") for e in section.elements
+        self._set_parent(parent)
+        #: Every asset so far, with the number of the model that brought it (0: the parent).
+        self.assets: dict[AnyElement, int] = {
+            e: 0 for section in _by_tag(parent).get("asset", ()) for e in section.elements
         }
+        #: How many children were added.
+        self.added = 0
         self.pending: dict[str, list[Node]] = {}
-        self.names: dict[int, tuple[Mujoco, Mujoco, dict[str, frozenset[str]]]] = {}
+        self.names: dict[int, tuple[Mujoco, RepeatedPrefixing, dict[str, frozenset[str]]]] = {}
         self.world: list[Node] = []
         self.keys: list[Node] | None = None
         self.where = where
         self.point = attach_point(parent, where)
 
     def add(self, child: Mujoco, prefix: str) -> None:
-        child, names = self._prepared(child)
-        if prefix:
-            child = prefixed_declared(child, prefix, names)  # type: ignore[assignment]
-            names = {ns: frozenset(prefix + n for n in found) for ns, found in names.items()}
-        child_assets = [e for section in _sections(child, "asset") for e in section.elements]
-        shared = {e for e in child_assets if e in self.assets}
-        theirs = {ns: set(found) for ns, found in names.items()}
+        copies, names = self._prepared(child)
+        child = cast(Mujoco, copies.prefixed(prefix) if prefix else copies.model)
+        theirs = {ns: {prefix + n for n in found} for ns, found in names.items()}
+        sections = _by_tag(child)
+        child_assets = [e for section in sections.get("asset", ()) for e in section.elements]
+        self.added += 1
+        shared: list[AnyElement] = []
+        for asset in child_assets:  # kept once when an earlier model has it (one hash each)
+            if self.assets.setdefault(asset, self.added) != self.added:
+                shared.append(asset)
         for asset in shared:
             for _, namespace, name in declarations(asset, f"asset/{asset.tag}"):
                 theirs.get(namespace, set()).discard(name)
         _check_collisions(self.declared, theirs)
         for namespace, found in theirs.items():
             self.declared.setdefault(namespace, set()).update(found)
-        self.assets.update(child_assets)
-        if keys_of(self.parent) or keys_of(child):
+        if self.parent_keys or "keyframe" in sections:
             self._merge_keys(child)
-        main = self._add_defaults(child, prefix)
+        main = self._add_defaults(sections.get("default", []), prefix)
         for tag in _SETTINGS:
-            if not _sections(self.parent, tag) and not self.pending.get(tag):
-                self.pending[tag] = list(_sections(child, tag))
+            if tag not in self.parent_tags and not self.pending.get(tag):
+                self.pending[tag] = list(sections.get(tag, ()))
+        kept = {id(asset) for asset in shared}
         for tag in _LISTS:
-            nodes = _section_children(child, tag)
-            if tag == "asset":
-                nodes = [n for n in nodes if n not in shared]
+            nodes = [node for section in sections.get(tag, ()) for node in section.children]
+            if kept and tag == "asset":
+                nodes = [n for n in nodes if id(n) not in kept]
             if main is not None and tag in CLASSED_SECTIONS:
                 nodes = classed(nodes, main, tag)
             self.pending.setdefault(tag, []).extend(nodes)
-        world = _section_children(child, "worldbody")
+        world = [node for section in sections.get("worldbody", ()) for node in section.children]
         if main is not None:
             world = classed(world, main, "body")
         self.world.extend(world)
+
+    def _set_parent(self, parent: Mujoco) -> None:
+        """Compose onto ``parent``: its sections, and what :meth:`add` asks of them."""
+        self.parent = parent
+        self.sections: list[Node] = list(parent.children)
+        #: The tags of the parent's sections.
+        self.parent_tags = set(_by_tag(parent))
+        #: Whether the parent has keyframes (then every child is merged key by key).
+        self.parent_keys = bool(keys_of(parent))
 
     def _in_parent_terms(self, child: Mujoco) -> Mujoco:
         """The child with its paths and values meaning under the parent's ``<compiler>``.
@@ -311,13 +332,14 @@ class _Composer:
         child = relocated(child, self.parent.base_dir, Folders.of(self.parent))
         return in_conventions(child, self.parent)
 
-    def _prepared(self, child: Mujoco) -> tuple[Mujoco, dict[str, frozenset[str]]]:
+    def _prepared(self, child: Mujoco) -> tuple[RepeatedPrefixing, dict[str, frozenset[str]]]:
         """The child ready to be renamed, and the names it declares; once per child model.
 
         Includes are refused. Skins read from ``.skn`` files name their bodies inside
         the file, so renaming would lose them: they are written inline first, from
         the child's folder. Then the child is put in the parent's terms (the same
-        for every copy of it, so attaching one model N times converts it once).
+        for every copy of it, so attaching one model N times converts it once, and
+        plans its prefixing once: :class:`~mjcf_model.composition_prefix.RepeatedPrefixing`).
         """
         cached = self.names.get(id(child))
         if cached is None or cached[0] is not child:
@@ -326,12 +348,15 @@ class _Composer:
             from serializers.skins import with_file_skins_inline
 
             ready = self._in_parent_terms(with_file_skins_inline(child))  # type: ignore[arg-type]
-            cached = self.names[id(child)] = (child, ready, declared_names(ready))
+            names = declared_names(ready)
+            copies = RepeatedPrefixing(
+                ready, lambda node, prefix: prefixed_declared(node, prefix, names)
+            )
+            cached = self.names[id(child)] = (child, copies, names)
         return cached[1], cached[2]
 
-    def _add_defaults(self, child: Mujoco, prefix: str) -> Default | None:
+    def _add_defaults(self, defaults: list[AnyElement], prefix: str) -> Default | None:
         """Add the child's defaults; return the class its top-level settings became, if any."""
-        defaults = _sections(child, "default")
         added: list[Node] = [n for d in defaults for n in d.children]
         main = None
         if any(sets_values(default) for default in defaults):
@@ -357,7 +382,7 @@ class _Composer:
         self.point = attach_point(so_far, self.where)
         holder = None if self.point is None else self.point.holder
         self.keys = merged_keyframes(so_far, child, holder)
-        self.parent, self.sections = so_far, list(so_far.children)
+        self._set_parent(so_far)
         self.pending, self.world = {}, []
 
     def result(self) -> Mujoco:

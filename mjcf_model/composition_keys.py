@@ -33,7 +33,7 @@ from mjcf_model.base import (
 from mjcf_model.defaults import DefaultClasses
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.scaling_rules import joint_type, numbers
+from mjcf_model.scaling_context import joint_type, numbers
 from mjcf_model.traversal import keyed_walk
 
 __all__ = ["keys_of", "merged_keyframes"]

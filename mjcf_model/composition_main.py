@@ -13,7 +13,7 @@ as before.
 >>> from serializers import dumps, loads
 >>> model = loads('<mujoco><default><geom rgba="1 0 0 1"/></default>'
 ...               '<worldbody><body><geom size="1"/></body></worldbody></mujoco>')
->>> print(dumps(with_main_as_class(model, "parent_main")), end="")
+>>> print(dumps(with_main_as_class(model, "parent_main"), canonical=True), end="")
 <mujoco>
   <default>
     <default class="parent_main">

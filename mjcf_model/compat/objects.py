@@ -24,9 +24,18 @@ on nodes in :mod:`~mjcf_model.compat.objects_quirks` and
 call it. Attribute text is kept exactly (nodes are generic elements), because
 robosuite passes it on unchanged.
 
+**Made again and again.** Environments make the same objects at every reset,
+and nodes never change, so what an object computes from its input alone is
+remembered (:mod:`~mjcf_model.compat.objects_memo`): a file is read once per
+modification, an XML object's geom split once per file and choice of joints,
+and where the name prefix goes and which names robosuite records once per
+*naming skeleton* (:mod:`~mjcf_model.compat.objects_naming`), which objects of
+one kind share whatever their sizes; each new object then only writes its
+prefix.
+
 **What** ``get_obj()``, ``asset``, ``root``... **return.** Live ElementTree
-elements of one view of the model, built once and then patched in place
-whenever the model changes (:class:`~mjcf_model.compat.objects_etree.EtreeView`):
+elements of one view of the model, built when first read and then patched in
+place whenever the model changes (:class:`~mjcf_model.compat.objects_etree.EtreeView`):
 ``get_obj()`` is the same element on every call, ``set_pos`` or
 ``set_scale`` after ``task.worldbody.append(obj.get_obj())`` shows in the
 task, and ``get_obj()`` of an XML object is the very element inside ``root``,

@@ -25,10 +25,10 @@ from mjcf_model.base import AnyElement, GenericElement
 from mjcf_model.compat.objects_bridge import RobosuiteCompatible
 from mjcf_model.compat.objects_document import ModelBacked, as_node
 from mjcf_model.compat.objects_etree import EtreeView
-from mjcf_model.compat.objects_quirks import attribute, robosuite_prefixed, robosuite_scaled
+from mjcf_model.compat.objects_naming import robosuite_prefixed, skeleton_memo
+from mjcf_model.compat.objects_quirks import attribute, robosuite_scaled
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.queries import categorized
-from mjcf_model.traversal import with_children
 
 __all__ = [
     "GEOMTYPE2GROUP",
@@ -49,6 +49,11 @@ GEOM_GROUPS = GEOMTYPE2GROUP.keys()
 _CATEGORIES = ("bodies", "joints", "actuators", "sites", "sensors", "contact_geoms", "visual_geoms")
 
 Vector = npt.NDArray[Any]
+
+#: The document of an object before its body is built (immutable, so shared by all).
+_EMPTY_DOCUMENT = GenericElement(
+    tag="mujoco", children=[GenericElement(tag="asset"), GenericElement(tag="worldbody")]
+)
 
 
 def check_obj_type(obj_type: str) -> None:
@@ -163,11 +168,7 @@ class MujocoObject(ModelBacked, MujocoModel):
         self._pending_scale = scale
         self._name: str | None = None
         self._raw: dict[str, Any] = {"root_body": None}
-        document = GenericElement(
-            tag="mujoco",
-            children=[GenericElement(tag="asset"), GenericElement(tag="worldbody")],
-        )
-        self._init_document(document, {"asset": (0,), "worldbody": (1,)})
+        self._init_document(_EMPTY_DOCUMENT, {"asset": (0,), "worldbody": (1,)})
 
     # -- the object body ----------------------------------------------------------
 
@@ -183,9 +184,7 @@ class MujocoObject(ModelBacked, MujocoModel):
         if "obj" in self._paths:
             self._replace("obj", body)
             return
-        world = self._node("worldbody")
-        self._replace("worldbody", with_children(world, [*world.children, body]))
-        self._paths["obj"] = (*self._paths["worldbody"], len(world.children))
+        self._append("worldbody", "obj", body)
 
     def get_obj(self) -> ET.Element:
         """The object body, as the live ElementTree element robosuite's tasks append.
@@ -225,7 +224,14 @@ class MujocoObject(ModelBacked, MujocoModel):
         self._prefix_names()
 
     def _record_names(self) -> None:
-        self._raw = recorded_names(self.obj_node)[1]
+        body = self.obj_node
+        memo = skeleton_memo(body)  # the names are read from the naming skeleton alone
+        if memo is None:
+            self._raw = recorded_names(body)[1]
+            return
+        if "recorded names" not in memo:
+            memo["recorded names"] = recorded_names(body)[1]
+        self._raw = dict(memo["recorded names"])
 
     def _prefix_names(self) -> None:
         self._change(

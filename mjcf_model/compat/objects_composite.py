@@ -34,11 +34,15 @@ from mjcf_model.traversal import with_children
 
 __all__ = ["CompositeObject"]
 
+#: The body of a composite, before its children: robosuite's ``new_body(name="root")``.
+_ROOT_BODY = rs_body(name="root")
 #: robosuite's friction for composite geoms without one (a numpy array, so ``"1.0 ..."``).
 _DEFAULT_FRICTION = np.array([1.0, 0.005, 0.0001])
 
 
 def _is_number(value: Any) -> bool:
+    if type(value) in (float, int):  # the usual case, before the slower check
+        return True
     return isinstance(value, Real) and not isinstance(value, bool)
 
 
@@ -154,7 +158,7 @@ class CompositeObject(MujocoGeneratedObject):
         )
         for index, row in enumerate(rows):
             children.extend(self._geoms(index, *row))
-        return with_children(rs_body(name="root"), children)
+        return with_children(_ROOT_BODY, children)
 
     def _geoms(
         self,
@@ -188,7 +192,7 @@ class CompositeObject(MujocoGeneratedObject):
             base["quat"] = array_to_string(quat)
         geoms: list[AnyElement] = []
         if obj_type in {"collision", "all"}:
-            collision = deepcopy(base)
+            collision = dict(base)  # robosuite deep-copies; nothing below is changed in place
             collision.update(self.get_collision_attrib_template())
             if density is not None:
                 collision["density"] = str(density)
@@ -202,7 +206,7 @@ class CompositeObject(MujocoGeneratedObject):
                 collision["condim"] = str(condim)
             geoms.append(rs_geom(**collision))
         if obj_type in {"visual", "all"}:
-            visual = deepcopy(base)
+            visual = dict(base)
             visual.update(self.get_visual_attrib_template())
             visual["name"] += "_vis"
             if material is not None:

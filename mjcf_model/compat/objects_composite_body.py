@@ -30,10 +30,10 @@ from mjcf_model.compat.objects_composite import _name_unnamed as name_unnamed
 from mjcf_model.compat.objects_document import as_node
 from mjcf_model.compat.objects_etree import replaced_at, subtree_at
 from mjcf_model.compat.objects_generated import MujocoGeneratedObject
+from mjcf_model.compat.objects_naming import robosuite_prefixed
 from mjcf_model.compat.objects_primitives import BoxObject, CylinderObject
 from mjcf_model.compat.objects_quirks import (
     attribute,
-    robosuite_prefixed,
     rs_body,
     rs_joint,
     rs_site,

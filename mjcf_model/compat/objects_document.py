@@ -57,6 +57,10 @@ class ModelBacked:
 
     _view: EtreeView
     _paths: dict[str, Path]
+    #: A node appended by :meth:`_append` and not written into the document yet, with
+    #: its place: changes to it alone (an object body prefixed once built) do not
+    #: rebuild the document each time.
+    _appended: tuple[str, AnyElement] | None = None
 
     def _init_document(self, document: AnyElement, paths: dict[str, Path]) -> None:
         self._view = EtreeView(document)
@@ -65,22 +69,48 @@ class ModelBacked:
     @property
     def mjcf(self) -> AnyElement:
         """The whole state: an immutable ``<mujoco>`` node (the library's own model)."""
+        if self._appended is not None:
+            self._write_appended()
         return self._view.node
 
     def _set_mjcf(self, document: AnyElement) -> None:
+        if self._appended is not None:
+            self._write_appended()
         self._view.update(document)
 
+    def _append(self, parent: str, place: str, node: AnyElement) -> None:
+        """Add ``node`` after the children of the element at ``parent``, as the place ``place``."""
+        self._paths[place] = (*self._paths[parent], len(self._node(parent).children))
+        self._appended = (place, node)
+
+    def _write_appended(self) -> None:
+        assert self._appended is not None
+        place, node = self._appended
+        self._appended = None
+        document, path = self._view.node, self._paths[place][:-1]
+        parent = subtree_at(document, path)
+        grown = with_children(parent, [*parent.children, node])
+        self._view.update(replaced_at(document, path, grown))
+
     def _node(self, place: str) -> AnyElement:
+        if self._appended is not None and self._appended[0] == place:
+            return self._appended[1]
         return subtree_at(self.mjcf, self._paths[place])
 
     def _replace(self, place: str, new: AnyElement) -> None:
+        if self._appended is not None and self._appended[0] == place:
+            self._appended = (place, new)
+            return
         self._set_mjcf(replaced_at(self.mjcf, self._paths[place], new))
 
     def _change(self, place: str, change: Callable[[AnyElement], AnyElement]) -> None:
         self._replace(place, change(self._node(place)))
 
-    def _live(self, place: str) -> ET.Element:
-        return self._view.at(self._paths[place])
+    def _live(self, place: str | None = None) -> ET.Element:
+        """The live ElementTree element of ``place`` (of the whole document for ``None``)."""
+        if self._appended is not None:
+            self._write_appended()
+        return self._view.at(() if place is None else self._paths[place])
 
     @property
     def asset(self) -> ET.Element:

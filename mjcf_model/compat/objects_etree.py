@@ -6,7 +6,9 @@ and expects later changes made through the object (``set_pos``, ``set_scale``)
 to show in the elements it already holds, as they do in robosuite, where the
 object *is* its ElementTree. A fresh tree per call would break both.
 
-:class:`EtreeView` keeps one ElementTree for one model. When the model is
+:class:`EtreeView` keeps one ElementTree for one model, built when it is
+first read (a model changed several times before anyone reads it, as an
+object is while it is made, is converted once). When the model is
 replaced by a changed copy, :meth:`EtreeView.update` walks the old and new
 nodes side by side and touches only what differs: subtrees shared by identity
 (the pure transforms share every unchanged subtree) are skipped, changed
@@ -88,7 +90,9 @@ class EtreeView:
         self._node = node
         #: The elements built for each element's children, in model order.
         self._kids: dict[ET.Element, list[ET.Element]] = {}
-        self._element = self._build(node) if element is None else self._record(node, element)
+        #: The root element; built on first use, so a model changed several times
+        #: before anyone reads its ElementTree is converted once, at the end.
+        self._element = None if element is None else self._record(node, element)
 
     @classmethod
     def adopt(cls, element: ET.Element) -> EtreeView:
@@ -113,6 +117,8 @@ class EtreeView:
     @property
     def element(self) -> ET.Element:
         """The root ElementTree element (the same object for the view's whole life)."""
+        if self._element is None:
+            self._element = self._build(self._node)
         return self._element
 
     def at(self, path: Path) -> ET.Element:
@@ -125,7 +131,7 @@ class EtreeView:
             'b'
 
         """
-        element = self._element
+        element = self.element
         for index in path:
             element = self._kids[element][index]
         return element
@@ -133,21 +139,35 @@ class EtreeView:
     def update(self, node: AnyElement) -> None:
         """Make the ElementTree show ``node``, editing the existing elements in place."""
         if node is not self._node:
-            self._patch(self._node, node, self._element)
+            if self._element is not None:
+                self._patch(self._node, node, self._element)
             self._node = node
 
     # -- building -----------------------------------------------------------------
 
-    def _build(self, node: Node) -> ET.Element:
-        if isinstance(node, Comment):
+    def _build(self, node: Node, parent: ET.Element | None = None) -> ET.Element:
+        """The element of ``node`` (and its subtree), appended to ``parent`` if given."""
+        if isinstance(node, GenericElement):
+            texts = node.attributes
+            attributes = {name: texts[name] for name in texts}
+        elif isinstance(node, Comment):
             comment: ET.Element = ET.Comment(node.text)  # type: ignore[assignment]
+            if parent is not None:
+                parent.append(comment)
             return comment
-        assert isinstance(node, (TypedElement, GenericElement))
-        element = ET.Element(node.tag, dict(attribute_texts(node)))
-        element.text = node.text
-        kids = [self._build(child) for child in node.children]
-        element.extend(kids)
-        self._kids[element] = kids
+        else:
+            assert isinstance(node, TypedElement)
+            attributes = dict(attribute_texts(node))
+        if parent is None:
+            element = ET.Element(node.tag, attributes)
+        else:
+            element = ET.SubElement(parent, node.tag, attributes)
+        if node.text is not None:
+            element.text = node.text
+        if node.children:
+            for child in node.children:
+                self._build(child, element)
+            self._kids[element] = list(element)
         return element
 
     def _record(self, node: AnyElement, element: ET.Element) -> ET.Element:
@@ -177,7 +197,7 @@ class EtreeView:
             self._patch_children(old, new, element)
 
     def _patch_children(self, old: AnyElement, new: AnyElement, element: ET.Element) -> None:
-        kids = self._kids[element]
+        kids = self._kids.get(element, [])
         pairs = list(zip(old.children, new.children, strict=False))
         if len(old.children) == len(new.children) and all(
             _same_tag(a, b) for a, b in pairs

@@ -13,16 +13,15 @@ their own when these classes stand in for robosuite's.
 
 from __future__ import annotations
 
-from copy import deepcopy
 from typing import Any
 
 import numpy as np
 
 from mjcf_model.base import AnyElement, GenericElement
 from mjcf_model.compat.objects_base import MujocoObject, Vector, joint_specs
+from mjcf_model.compat.objects_naming import robosuite_prefixed
 from mjcf_model.compat.objects_quirks import (
     OBJECT_COLLISION_COLOR,
-    robosuite_prefixed,
     rs_body,
     rs_geom,
     rs_joint,
@@ -35,6 +34,9 @@ from mjcf_model.materials import CustomMaterial
 from mjcf_model.traversal import with_children
 
 __all__ = ["MujocoGeneratedObject", "PrimitiveObject", "material_parts"]
+
+#: The body of a primitive, before its children: robosuite's ``new_body(name="main")``.
+_MAIN_BODY = rs_body(name="main")
 
 
 def material_parts(material: Any) -> tuple[str, str, bool, AnyElement, AnyElement]:
@@ -199,7 +201,7 @@ class PrimitiveObject(MujocoGeneratedObject):
         children: list[AnyElement] = []
         base = {"name": "g0", "type": ob_type, "size": array_to_string(self.size)}
         if self.obj_type in {"collision", "all"}:
-            collision: dict[str, Any] = deepcopy(base)
+            collision: dict[str, Any] = dict(base)  # robosuite deep-copies: all text
             collision.update(self.get_collision_attrib_template())
             collision["density"] = str(self.density)
             collision["friction"] = array_to_string(self.friction)
@@ -207,7 +209,7 @@ class PrimitiveObject(MujocoGeneratedObject):
             collision["solimp"] = array_to_string(self.solimp)
             children.append(rs_geom(**collision))
         if self.obj_type in {"visual", "all"}:
-            visual: dict[str, Any] = deepcopy(base)
+            visual: dict[str, Any] = dict(base)
             visual.update(self.get_visual_attrib_template())
             visual["name"] += "_vis"
             if isinstance(self.material, str) and self.material == "default":
@@ -220,5 +222,4 @@ class PrimitiveObject(MujocoGeneratedObject):
             children.append(rs_geom(**visual))
         children.extend(rs_joint(**spec) for spec in self.joint_specs)
         children.append(rs_site(**self._default_site()))
-        body = rs_body(name="main")
-        return with_children(body, children)
+        return with_children(_MAIN_BODY, children)

@@ -14,8 +14,7 @@ objects call a function of ``mjcf_utils``, the compatible one
   :mod:`~mjcf_model.compat.utils_builders`), as generic elements holding that
   exact text;
 * prefixing that skips values already starting with the prefix
-  (:func:`robosuite_prefixed`: robosuite's ``already_prefixed`` test on top of
-  the exact :func:`mjcf_model.prefixed`);
+  (:func:`~mjcf_model.compat.objects_naming.robosuite_prefixed`);
 * scaling of only the attributes robosuite scales (:func:`robosuite_scaled`,
   with the rules of :mod:`~mjcf_model.compat.utils_scaling`);
 * default classes written inline (:func:`inline_defaults`) and the geom split
@@ -34,7 +33,6 @@ import numpy as np
 import numpy.typing as npt
 
 from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement
-from mjcf_model.base import with_attributes as _with_attributes
 from mjcf_model.compat import utils_constants
 from mjcf_model.compat.utils_bridge import attribute
 from mjcf_model.compat.utils_builders import (
@@ -44,7 +42,6 @@ from mjcf_model.compat.utils_builders import (
     joint_node,
     site_node,
 )
-from mjcf_model.compat.utils_naming import already_prefixed
 from mjcf_model.compat.utils_scaling import (
     scaled_body,
     scaled_geom,
@@ -53,15 +50,14 @@ from mjcf_model.compat.utils_scaling import (
     scaled_site,
 )
 from mjcf_model.compat.utils_text import array_to_string, text_of, three_factors
+from mjcf_model.composition_prefix import with_texts as checked_texts
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.naming import prefixed
 from mjcf_model.scaling import _factors as checked_factors
 from mjcf_model.traversal import with_children
 
 __all__ = [
     "OBJECT_COLLISION_COLOR",
     "attribute",
-    "robosuite_prefixed",
     "robosuite_scaled",
     "rs_body",
     "rs_element",
@@ -103,6 +99,8 @@ def value_text(value: Any) -> str:
         ('true', '1e-08', '0.5', 'True')
 
     """
+    if type(value) is str:  # most values are text already
+        return value
     text = text_of(value, exact=False)
     if text is None:
         raise MjcfValueError(f"unsupported attribute value type: got {type(value)} ({value!r})")
@@ -118,7 +116,7 @@ def with_texts(element: AnyElement, changes: Mapping[str, str | None]) -> AnyEle
         {'a': '3', 'c': '4'}
 
     """
-    return _with_attributes(element, dict(changes))
+    return checked_texts(element, changes)
 
 
 def rs_element(
@@ -199,41 +197,6 @@ def rs_body(name: str | None = None, pos: Any = (0, 0, 0), **extra: Any) -> Gene
 
     """
     return body_node(name, pos, extra, value_text)
-
-
-def robosuite_prefixed(
-    node: AnyElement, prefix: str, exclude: Callable[[str], bool] | None = None
-) -> AnyElement:
-    """Like robosuite's ``add_prefix``: names and references get ``prefix`` unless they have it.
-
-    Built on :func:`mjcf_model.prefixed` with every reference prefixed (also to
-    names the subtree does not declare, as robosuite does) and, as ``exclude``,
-    robosuite's test (:func:`~mjcf_model.compat.utils_naming.already_prefixed`)
-    or the caller's predicate. The namespace table decides which attributes
-    are names, so a few differ from robosuite's fixed attribute list, on
-    purpose: equality ``site1``/``site2``, actuator ``refsite`` and sensor
-    ``refname`` are prefixed too (robosuite leaves them and MuJoCo then cannot
-    find them), and a file asset without a ``name`` gets one (its file stem,
-    prefixed) so references to it still work. The compatible
-    ``mjcf_utils.add_prefix`` (:mod:`~mjcf_model.compat.utils_naming`) keeps
-    robosuite's attribute list exactly, because its callers expect robosuite's
-    text; the objects want a model MuJoCo loads.
-
-    Example:
-        >>> body = GenericElement(tag="body", attributes={"name": "main"}, children=[
-        ...     GenericElement(tag="geom", attributes={"mesh": "can_mesh", "material": "m"})])
-        >>> new = robosuite_prefixed(body, "can_")
-        >>> new.attributes["name"], dict(new.children[0].attributes)
-        ('can_main', {'mesh': 'can_mesh', 'material': 'can_m'})
-
-    """
-    if not prefix:
-        return node
-
-    def skip(name: str) -> bool:
-        return already_prefixed(name, prefix) or (exclude is not None and bool(exclude(name)))
-
-    return prefixed(node, prefix, undeclared=True, exclude=skip)
 
 
 def scale_factors(scale: Any) -> npt.NDArray[Any]:

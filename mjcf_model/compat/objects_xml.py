@@ -36,9 +36,10 @@ from mjcf_model.compat.objects_base import (
 from mjcf_model.compat.objects_bridge import RobosuiteCompatible
 from mjcf_model.compat.objects_document import ModelBacked
 from mjcf_model.compat.objects_etree import replaced_at, subtree_at
+from mjcf_model.compat.objects_memo import Memo
+from mjcf_model.compat.objects_naming import robosuite_prefixed
 from mjcf_model.compat.objects_quirks import (
     attribute,
-    robosuite_prefixed,
     robosuite_scaled,
     rs_joint,
     with_texts,
@@ -55,6 +56,14 @@ from mjcf_model.traversal import Path, walk, with_children
 from serializers import from_etree, to_etree
 
 __all__ = ["MujocoXML", "MujocoXMLObject", "section_children"]
+
+#: Prepared documents, by the document read and the choices that shape the object.
+_PREPARED: Memo[AnyElement] = Memo(32)
+
+
+def _typed(attributes: dict[str, Any]) -> tuple[tuple[str, type, Any], ...]:
+    """Attributes as a key, each value with its type (``1``, ``1.0``, ``True`` write apart)."""
+    return tuple((key, type(value), value) for key, value in attributes.items())
 
 
 def section_children(model: Any, section: str) -> list[AnyElement]:
@@ -88,16 +97,18 @@ class MujocoXML(ModelBacked, RobosuiteCompatible):
         self.folder = os.path.dirname(fname)
         document, paths = read_like_robosuite(fname)
         self._init_document(document, paths)
-        self._tree = ET.ElementTree(self._view.element)
+        self._tree: ET.ElementTree | None = None
 
     @property
     def root(self) -> ET.Element:
         """The ``<mujoco>`` element (live)."""
-        return self._view.element
+        return self._live()
 
     @property
     def tree(self) -> ET.ElementTree:
-        """An ElementTree around :attr:`root`."""
+        """An ElementTree around :attr:`root` (the same object on every call)."""
+        if self._tree is None:
+            self._tree = ET.ElementTree(self.root)
         return self._tree
 
     worldbody = property(lambda self: self._live("worldbody"), doc="``<worldbody>`` (live).")
@@ -250,7 +261,7 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
         self._raw = {"root_body": None}
         self.joint_specs = joint_specs(joints, [self.get_joint_attrib_template()])
         self._paths["obj"] = self._object_path()
-        self._change("obj", self._prepared)
+        self._set_mjcf(self._prepared_document())
         if scale is not None:
             self.set_scale(scale)
         self._get_object_properties()
@@ -271,6 +282,33 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
             f"{self.file}: no <body name='object'> inside a top-level body of <worldbody>; "
             "an XML object is worldbody/body/body[@name='object']"
         )
+
+    def _prepared_document(self) -> AnyElement:
+        """The document with the object body prepared (:meth:`_prepared`).
+
+        The same document read again, with the same geom kinds, joints and site,
+        is prepared the same way: that result is remembered.
+        """
+        document, place = self.mjcf, self._paths["obj"]
+
+        def prepared() -> AnyElement:
+            return replaced_at(document, place, self._prepared(subtree_at(document, place)))
+
+        choices = (
+            type(self),
+            place,
+            self.obj_type,
+            self.duplicate_collision_geoms,
+            tuple(_typed(spec) for spec in self.joint_specs),
+            _typed(self._default_site(hidden=True)),
+        )
+        if type(self)._prepared is not MujocoXMLObject._prepared:
+            return prepared()  # a subclass prepares its own way, from what it knows
+        try:
+            hash(choices)
+        except TypeError:  # a joint given by unhashable values (arrays...)
+            return prepared()
+        return _PREPARED.of(document, prepared, choices)
 
     def _prepared(self, obj: AnyElement) -> AnyElement:
         obj = with_texts(obj, {"name": "main"})

@@ -25,6 +25,7 @@ import xml.etree.ElementTree as ET
 from typing import Any
 
 from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement
+from mjcf_model.compat.objects_memo import Memo
 from mjcf_model.compat.objects_quirks import OBJECT_COLLISION_COLOR, attribute, with_texts
 from mjcf_model.defaults import MAIN, DefaultClasses
 from mjcf_model.errors import MjcfLookupError
@@ -58,10 +59,28 @@ def read_like_robosuite(fname: str) -> tuple[AnyElement, dict[str, Path]]:
     4. the ``file`` of each element of the first ``<asset>`` is joined to the
        file's absolute directory (not normalised: ``.../objects/../textures/x.png``).
 
+    The node is immutable, so a file read again unchanged (same path,
+    modification time and size) gives the node read before, as robosuite's
+    objects read the same few files over and over.
+
     Returns:
         The root node and the path of each section (and of ``worldbody``).
 
     """
+    try:
+        stat = os.stat(fname)
+    except OSError:
+        return _read(fname)  # raises as ElementTree does
+    key = (os.path.abspath(fname), stat.st_mtime_ns, stat.st_size)
+    document, paths = _READ.get(key, lambda: _read(fname))
+    return document, dict(paths)
+
+
+#: The documents :func:`read_like_robosuite` read, by path, modification time and size.
+_READ: Memo[tuple[AnyElement, dict[str, Path]]] = Memo(32)
+
+
+def _read(fname: str) -> tuple[AnyElement, dict[str, Path]]:
     element = ET.parse(fname).getroot()
     root = from_etree(element, typed=False)
     assert isinstance(root, (TypedElement, GenericElement))

@@ -22,10 +22,9 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterable, Mapping
 from typing import Any
 
-from mjcf_model.base import AttributeMap, GenericElement
+from mjcf_model.base import AttributeMap, GenericElement, build_node
 from mjcf_model.compat.utils_constants import RED
 from mjcf_model.compat.utils_text import convert_to_string
-from mjcf_model.errors import MjcfValueError
 from serializers import to_etree
 
 __all__ = [
@@ -62,11 +61,9 @@ def element_node(
 
     """
     values = {key: text(value) for key, value in attributes if value is not None}
-    try:
-        return GenericElement(tag=tag, attributes=values)
-    except MjcfValueError:
-        # robosuite's ElementTree takes text XML cannot carry, and so does this layer.
-        return GenericElement(tag=tag, attributes=AttributeMap.unchecked(values))
+    # robosuite's ElementTree takes text XML cannot carry, and so does this layer:
+    # the text is kept as it is, unchecked.
+    return build_node(GenericElement, {"tag": tag, "attributes": AttributeMap.unchecked(values)})
 
 
 def joint_node(

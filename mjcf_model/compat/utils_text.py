@@ -160,6 +160,8 @@ def text_of(value: Any, *, exact: bool) -> str | None:
         (None, '0.5')
 
     """
+    if type(value) is str:  # the common case, first
+        return value
 
     def kind(*types: type) -> bool:
         return type(value) in types if exact else isinstance(value, types)
@@ -230,8 +232,6 @@ def get_size(
         array([1, 2])
 
     """
-    if rng is None:
-        rng = np.random.default_rng()
     if len(default_max) != len(default_min):
         raise ValueError(
             f"default_max = {default_max!s} and default_min = {default_min!s}"
@@ -247,6 +247,8 @@ def get_size(
             size_max = default_max
         if size_min is None:
             size_min = default_min
+        if rng is None:  # made only to draw (robosuite makes it in any case)
+            rng = np.random.default_rng()
         size = np.array([rng.uniform(size_min[i], size_max[i]) for i in range(len(default_max))])
     return np.array(size)
 
