@@ -16,8 +16,8 @@ equality: two elements that differ only in attribute order are equal).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Mapping
-from typing import TYPE_CHECKING, Any, ClassVar, TypeVar
+from collections.abc import ItemsView, Iterable, Iterator, KeysView, Mapping, ValuesView
+from typing import TYPE_CHECKING, Any, ClassVar, TypeVar, overload
 
 import attrs
 
@@ -95,6 +95,30 @@ class AttributeMap(Mapping[str, str]):
 
     def __len__(self) -> int:
         return len(self._data)
+
+    # The Mapping mixins work item by item in Python; these pass through to the dict.
+    def __contains__(self, key: object) -> bool:
+        return key in self._data
+
+    @overload
+    def get(self, key: str, /) -> str | None: ...
+    @overload
+    def get(self, key: str, /, default: str | _T) -> str | _T: ...
+    def get(self, key: str, /, default: object = None) -> object:
+        """The text of ``key``, or ``default`` when the element does not write it."""
+        return self._data.get(key, default)
+
+    def keys(self) -> KeysView[str]:
+        """The attribute names, in order."""
+        return self._data.keys()
+
+    def values(self) -> ValuesView[str]:
+        """The attribute texts, in order."""
+        return self._data.values()
+
+    def items(self) -> ItemsView[str, str]:
+        """The ``(name, text)`` pairs, in order."""
+        return self._data.items()
 
     def __hash__(self) -> int:
         if self._hash is None:

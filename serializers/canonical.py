@@ -77,6 +77,19 @@ def write_canonical(
     # Each entry is a node to write at a depth, or the closing tag of an element.
     stack: list[tuple[Node | str, int]] = [(root, 0)]
     pads: dict[int, str] = {}
+    # Copies share their value objects (1,000 attached cans hold ~60): each is
+    # formatted and escaped once per write. The value is kept with its text, so
+    # an id is never mistaken for a freed object's.
+    written: dict[int, tuple[object, str]] = {}
+
+    def escaped(value: object) -> str:
+        found = written.get(id(value))
+        if found is not None and found[0] is value:
+            return found[1]
+        text = format_value(value).translate(ATTRIBUTE_ESCAPES)  # type: ignore[arg-type]
+        written[id(value)] = (value, text)
+        return text
+
     while stack:
         node, depth = stack.pop()
         pad = pads.get(depth)
@@ -90,10 +103,12 @@ def write_canonical(
             continue
         element = checked_element(node)
         tag = element.tag
-        attributes = "".join(
-            f' {name}="{text.translate(ATTRIBUTE_ESCAPES)}"'
-            for name, text in attribute_texts(element)
+        pairs = (
+            element.attributes.items()
+            if isinstance(element, GenericElement)
+            else attribute_items(element)
         )
+        attributes = "".join([f' {name}="{escaped(value)}"' for name, value in pairs])
         text = None if element.text is None else element.text.translate(TEXT_ESCAPES)
         if not element.children:
             if text is None:
