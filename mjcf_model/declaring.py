@@ -188,6 +188,17 @@ def declared_classes() -> tuple[type, ...]:
     return tuple(_DECLARED)
 
 
+def _compared_as_is() -> frozenset[object]:
+    """The eq keys ``==`` of nodes honours without applying them (see ``Node.__eq__``).
+
+    ``float_key`` only makes NaN equal to NaN, which holding one NaN object already
+    does; ``Subtree`` is how children compare, which ``Node.__eq__`` does itself.
+    """
+    from mjcf_model.base import Subtree
+
+    return frozenset({float_key, Subtree})
+
+
 def _check_buildable(cls: type) -> None:
     """Refuse what the fast builder cannot honour: it sets ``__dict__`` and runs nothing else."""
     if hasattr(cls, "__attrs_post_init__") or hasattr(cls, "__attrs_pre_init__"):
@@ -198,6 +209,11 @@ def _check_buildable(cls: type) -> None:
     for field in attrs.fields(cls):
         if not field.init or field.on_setattr not in (None, attrs.setters.NO_OP):
             raise TypeError(f"{cls.__name__}.{field.name}: node fields are plain init fields")
+        if field.eq_key is not None and field.eq_key not in _compared_as_is():
+            raise TypeError(
+                f"{cls.__name__}.{field.name}: node fields compare by value; an eq= key is"
+                " not supported (convert the value instead)"
+            )
 
 
 def declare(cls: _C) -> _C:

@@ -148,7 +148,7 @@ class DefaultClasses:
         """
         memo = self._memo.get(("given", name, tag))
         if memo is not None:
-            known: dict[str, tuple[Value, str]] = memo
+            known: Mapping[str, tuple[Value, str]] = memo
             return known
         merged: dict[str, tuple[Value, str]] = {}
         for current in reversed(self.chain(name)):
@@ -156,8 +156,8 @@ class DefaultClasses:
             if setting is not None:
                 for attribute, value in attribute_items(setting):
                     merged[attribute] = (value, current)
-        self._memo[("given", name, tag)] = merged
-        return merged
+        shared = self._memo[("given", name, tag)] = MappingProxyType(merged)  # read-only
+        return shared
 
     def lookup(self, name: str, tag: str, attribute: str) -> tuple[Value, str] | None:
         """The value of ``attribute`` for ``tag`` elements in class ``name``, and its class.

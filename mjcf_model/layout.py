@@ -14,7 +14,7 @@ with the child that stood there (:attr:`Layout.sources`).
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Set
 from typing import Any
 
 __all__ = ["DocumentText", "Layout"]
@@ -67,9 +67,9 @@ class Layout:
         "gaps",
         "getter",
         "names",
-        "size",
         "sources",
         "start",
+        "stored",
         "tag",
         "text",
         "values",
@@ -114,10 +114,20 @@ class Layout:
         #: For a typed element whose attributes all have fields: reads the element's
         #: values for ``names`` at once (``None`` otherwise).
         self.getter: Callable[[Any], tuple[Any, ...]] | None = None
-        #: How many fields the element stored when it was read: with ``getter``, an
-        #: element whose stored fields are as many and whose values are still
-        #: ``values`` was not changed (the writer's fast check).
-        self.size = 0
+        #: The fields the element stored when it was read: with ``getter``, an element
+        #: that stores the same fields, with ``values`` for its attributes, is unchanged
+        #: (the writer's fast check).
+        self.stored: Set[str] = frozenset()
 
     def __repr__(self) -> str:
         return f"Layout({self.start!r}, ...)"
+
+    def __getstate__(self) -> dict[str, Any]:
+        """Pickle without ``getter`` (it may be a lambda): the writer then compares values."""
+        state = {name: getattr(self, name) for name in self.__slots__}
+        state["getter"] = None
+        return state
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        for name, value in state.items():
+            setattr(self, name, value)

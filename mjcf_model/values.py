@@ -531,6 +531,13 @@ def format_value(value: Value) -> str:
 
 
 def _format_items(values: Floats | Ints) -> str:
+    kinds = set(map(type, values))
+    if kinds == _ONLY_FLOATS:
+        # What format_float does, in C: repr is the shortest text, and an integral
+        # float below 1e16 is the only one whose repr ends in ".0", which goes.
+        return (" ".join(map(repr, values)) + " ").replace(".0 ", " ")[:-1]
+    if kinds == _ONLY_INTS:
+        return " ".join(map(str, values))
     return " ".join(format_float(v) if isinstance(v, float) else str(v) for v in values)
 
 

@@ -140,7 +140,7 @@ def build_element(
         if getter is None:
             return _with_values(node, table, attributes, layout, not extra)
         layout.values = getter(node)
-        layout.getter, layout.size = getter, len(node.__dict__)
+        layout.getter, layout.stored = getter, node.__dict__.keys() - LATER_FIELDS
         return node
     for name, value in attributes:  # only on the error path: find the values it cannot read
         field = table.get(name)
@@ -158,6 +158,8 @@ def build_element(
     return node if layout is None else _with_values(node, table, attributes, layout, not extra)
 
 
+#: Fields set on a node after it is read (the root's folder), left out of ``Layout.stored``.
+LATER_FIELDS = frozenset({"base_dir"})
 #: Per class and attribute names (all typed fields), a getter of their values as a tuple.
 _VALUE_GETTERS: dict[tuple[type, tuple[str, ...]], Callable[[Any], tuple[Any, ...]]] = {}
 #: Past this many, the getters are forgotten (hostile text could make any number).
@@ -196,5 +198,5 @@ def _with_values(
             getter = operator.attrgetter(*fields)
         _VALUE_GETTERS[key] = getter
     layout.values = getter(node)
-    layout.getter, layout.size = getter, len(node.__dict__)
+    layout.getter, layout.stored = getter, node.__dict__.keys() - LATER_FIELDS
     return node

@@ -21,6 +21,7 @@ from typing import Any
 from mjcf_model.base import AnyElement, Comment, Node, attribute_items
 from mjcf_model.layout import Layout
 from mjcf_model.values import Value, format_value
+from serializers.building import LATER_FIELDS
 from serializers.canonical import (
     ATTRIBUTE_ESCAPES,
     TEXT_ESCAPES,
@@ -233,7 +234,7 @@ def _start_tag(element: AnyElement, layout: Layout) -> str:
     getter = layout.getter
     if (
         getter is not None
-        and len(element.__dict__) == layout.size
+        and element.__dict__.keys() - LATER_FIELDS == layout.stored
         and getter(element) == layout.values
     ):
         return layout.start  # the fields stored and their values are the ones read

@@ -80,10 +80,17 @@ def read_skin(path: str | os.PathLike[str]) -> Skin:
 
     The float32 values of the file are kept exactly, so MuJoCo compiles the same skin.
     A file read before and unchanged since (same size and modification time) is
-    not read again: renaming a model's bodies reads its skins each time.
+    not read again (same file, size and times): renaming a model's bodies reads its
+    skins each time.
     """
     found = Path(path).stat()
-    key = (os.fspath(path), found.st_size, found.st_mtime_ns)
+    key = (
+        os.path.abspath(path),
+        found.st_ino,
+        found.st_size,
+        found.st_mtime_ns,
+        found.st_ctime_ns,
+    )
     skin = _READ.get(key)
     if skin is None:
         if len(_READ) >= _MAX_READ:
@@ -93,7 +100,7 @@ def read_skin(path: str | os.PathLike[str]) -> Skin:
 
 
 #: Skins read, by path, size and modification time (a few: scenes hold few skin files).
-_READ: dict[tuple[str, int, int], Skin] = {}
+_READ: dict[tuple[str, int, int, int, int], Skin] = {}
 _MAX_READ = 16
 
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import difflib
 import json
+import pickle
 import re
 import xml.etree.ElementTree as ET
 from collections.abc import Callable
@@ -18,7 +19,7 @@ import pytest
 from hypothesis import given
 
 from mjcf_model import Body, Geom, Mujoco, Site, prefixed, scaled
-from mjcf_model.base import AnyElement, Node, get_attribute, with_attributes
+from mjcf_model.base import AnyElement, Node, build_node, get_attribute, with_attributes
 from mjcf_model.compare import compile_text_beside, model_differences, path_fields
 from mjcf_model.strategies import models
 from mjcf_model.traversal import map_tree, with_children
@@ -333,3 +334,32 @@ def test_code_models_round_trip_through_kept_text(model: Mujoco) -> None:
     again = loads(text)
     assert again == model
     assert dumps(again) == text
+
+
+def test_a_loaded_model_pickles_and_its_copy_writes_the_same_text() -> None:
+    """Pickling keeps a loaded model's layouts: the copy is equal and dumps the same bytes."""
+    text = (
+        '<mujoco>\n  <worldbody>\n    <geom size="1.0"/>\n    <site name="s"\n'
+        '      pos="0 0 1"/>\n  </worldbody>\n</mujoco>\n'
+    )
+    model = loads(text)
+    copied = pickle.loads(pickle.dumps(model))
+    assert copied == model and dumps(copied) == text
+    edited = map_tree(
+        lambda n: with_attributes(n, {"pos": (0, 0, 2)}) if isinstance(n, Site) else n, copied
+    )
+    assert dumps(edited) == text.replace('pos="0 0 1"', 'pos="0 0 2"')
+
+
+def test_an_attribute_added_while_text_is_removed_is_written() -> None:
+    """The writer's check for an untouched element compares the fields stored, not their count."""
+    text = (
+        '<mujoco>\n  <worldbody>\n    <geom name="a" size="1">junk</geom>\n'
+        "  </worldbody>\n</mujoco>\n"
+    )
+    model = loads(text)
+    geom = model.worldbody.geoms[0]
+    changed = build_node(Geom, {"text": None, "rgba": "1 0 0 1"}, geom)
+    written = dumps(map_tree(lambda n: changed if n is geom else n, model))
+    assert '<geom name="a" size="1" rgba="1 0 0 1">' in written
+    assert loads(written).worldbody.geoms[0].rgba == (1.0, 0.0, 0.0, 1.0)

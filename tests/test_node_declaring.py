@@ -19,30 +19,62 @@ from mjcf_model.strategies import element_values, elements
 TYPED_CLASSES = sorted(set(CLASS_BY_KEY.values()), key=lambda cls: cls.__name__)
 
 
+def _expected(cls: type[TypedElement], values: dict[str, Any], base: Any = None) -> dict[str, Any]:
+    """Every field's value by attrs' rules, computed without build_node or the constructor.
+
+    The field's converter on what is given; the base's value (or the default) for the rest.
+    """
+    expected: dict[str, Any] = {}
+    for field in attrs.fields(cls):
+        if field.name in values:
+            value = values[field.name]
+            expected[field.name] = value if field.converter is None else field.converter(value)
+        elif base is not None:
+            expected[field.name] = getattr(base, field.name)
+        else:
+            default = field.default
+            if field.converter is not None and default is not None:
+                default = field.converter(default)
+            expected[field.name] = default
+    return expected
+
+
 @pytest.mark.parametrize("cls", TYPED_CLASSES, ids=lambda cls: cls.__name__)
 @settings(max_examples=15)
 @given(data=st.data())
-def test_building_from_values_equals_the_attrs_constructor(
+def test_building_from_values_gives_what_attrs_converters_give(
     cls: type[TypedElement], data: st.DataObject
 ) -> None:
-    """build_node(cls, values) equals cls(**values), hashes alike and reads every field alike."""
+    """build_node and cls(**values) hold, field by field, what attrs' converters make."""
     values = data.draw(element_values(cls))
     built, constructed = build_node(cls, values), cls(**values)
-    assert built == constructed
-    assert hash(built) == hash(constructed)
-    assert all(getattr(built, f.name) == getattr(constructed, f.name) for f in attrs.fields(cls))
+    expected = _expected(cls, values)
+    assert attrs.asdict(built, recurse=False) == expected
+    assert attrs.asdict(constructed, recurse=False) == expected
+    assert built == constructed and hash(built) == hash(constructed)
 
 
 @pytest.mark.parametrize("cls", TYPED_CLASSES, ids=lambda cls: cls.__name__)
 @settings(max_examples=15)
 @given(data=st.data())
-def test_building_on_a_base_equals_attrs_evolve(
+def test_building_on_a_base_gives_what_attrs_evolve_means(
     cls: type[TypedElement], data: st.DataObject
 ) -> None:
-    """build_node(cls, values, base) equals attrs.evolve(base, **values), None included."""
+    """build_node on a base holds what attrs.evolve(base, **values) means, field by field."""
     base = data.draw(elements(cls))
     values = data.draw(element_values(cls))
-    assert build_node(cls, values, base) == attrs.evolve(base, **values)
+    expected = _expected(cls, values, base)
+    assert attrs.asdict(build_node(cls, values, base), recurse=False) == expected
+    assert attrs.asdict(attrs.evolve(base, **values), recurse=False) == expected
+
+
+def test_the_builder_contract_test_can_fail() -> None:
+    """A builder that skipped a converter would store text where the field holds numbers."""
+    values = {"size": "1 2"}
+    expected = _expected(Geom, values)
+    assert expected["size"] == (1.0, 2.0)
+    unconverted = {**expected, "size": "1 2"}
+    assert attrs.asdict(build_node(Geom, values), recurse=False) != unconverted
 
 
 def test_only_the_fields_given_are_stored() -> None:

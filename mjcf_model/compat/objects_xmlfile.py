@@ -71,7 +71,7 @@ def read_like_robosuite(fname: str) -> tuple[AnyElement, dict[str, Path]]:
         stat = os.stat(fname)
     except OSError:
         return _read(fname)  # raises as ElementTree does
-    key = (os.path.abspath(fname), stat.st_mtime_ns, stat.st_size)
+    key = (os.path.abspath(fname), stat.st_ino, stat.st_mtime_ns, stat.st_ctime_ns, stat.st_size)
     document, paths = _READ.get(key, lambda: _read(fname))
     return document, dict(paths)
 
