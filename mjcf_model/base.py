@@ -244,9 +244,22 @@ def _optional_text(_instance: Any, _attribute: Any, value: str | None) -> None:
         check_text(value, "element text")
 
 
-def _shallow(node: Node) -> tuple[Any, ...]:
-    """The values ``==`` compares on ``node`` itself, its children left out."""
-    return type(node).__node_info__.shallow(node)
+def _shallow(node: Node) -> dict[str, Any]:
+    """The fields ``==`` compares on ``node`` itself that differ from their default.
+
+    Read from the fields the node stores (a few), not from every field of its
+    class; children are left out (the caller walks them).
+    """
+    info = type(node).__node_info__
+    skip, defaults = info.not_compared, info.defaults
+    return {
+        name: value
+        for name, value in node.__dict__.items()
+        if name not in skip and value is not defaults.get(name, _ABSENT)
+    }
+
+
+_ABSENT = object()
 
 
 class Subtree:
@@ -290,7 +303,7 @@ class Subtree:
             forest = stack.pop()
             parts.append(len(forest))
             for item in forest:
-                parts.append(hash((type(item), _shallow(item))))
+                parts.append(hash((type(item), frozenset(_shallow(item).items()))))
                 if isinstance(item, Element):
                     stack.append(item.children)
         return hash(tuple(parts))

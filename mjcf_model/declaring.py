@@ -104,9 +104,9 @@ class NodeInfo:
         "getter",
         "keys",
         "names",
+        "not_compared",
         "rank",
         "required",
-        "shallow",
         "table",
         "tag",
         "validators",
@@ -149,9 +149,9 @@ class NodeInfo:
         self.rank: dict[str, int] = {field: index for index, field in enumerate(table.values())}
         #: Reads every attribute field at once, as a tuple in ``names`` order.
         self.getter: Callable[[Any], tuple[Any, ...]] = _tuple_getter(tuple(table.values()))
-        #: Reads what ``==`` compares on the node itself, its children left out.
-        self.shallow: Callable[[Any], tuple[Any, ...]] = _tuple_getter(
-            tuple(f.name for f in fields if f.eq and f.name != "children")
+        #: The fields ``==`` does not compare on the node itself (its children are walked).
+        self.not_compared: frozenset[str] = frozenset(
+            f.name for f in fields if not f.eq or f.name == "children"
         )
 
 
