@@ -61,6 +61,7 @@ __all__ = [
     "numbers",
     "reference",
     "text",
+    "tuple_getter",
     "vec1to2",
     "vec1to3",
     "vec1to5",
@@ -148,7 +149,7 @@ class NodeInfo:
         #: Each attribute field's position in ``names``.
         self.rank: dict[str, int] = {field: index for index, field in enumerate(table.values())}
         #: Reads every attribute field at once, as a tuple in ``names`` order.
-        self.getter: Callable[[Any], tuple[Any, ...]] = _tuple_getter(tuple(table.values()))
+        self.getter: Callable[[Any], tuple[Any, ...]] = tuple_getter(tuple(table.values()))
         #: The fields ``==`` does not compare on the node itself (its children are walked).
         self.not_compared: frozenset[str] = frozenset(
             f.name for f in fields if not f.eq or f.name == "children"
@@ -164,7 +165,15 @@ def _converted_default(field: attrs.Attribute[Any]) -> Any:
     return default
 
 
-def _tuple_getter(names: tuple[str, ...]) -> Callable[[Any], tuple[Any, ...]]:
+def tuple_getter(names: tuple[str, ...]) -> Callable[[Any], tuple[Any, ...]]:
+    """Read the fields ``names`` of an object at once, always as a tuple.
+
+    Example:
+        >>> from mjcf_model import Geom
+        >>> tuple_getter(("name",))(Geom(name="g"))
+        ('g',)
+
+    """
     if len(names) > 1:
         return operator.attrgetter(*names)
     if names:

@@ -10,7 +10,6 @@ element to :func:`build_element`, so the two cannot disagree.
 
 from __future__ import annotations
 
-import operator
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -22,6 +21,7 @@ from mjcf_model.base import (
     build_node,
     field_table,
 )
+from mjcf_model.declaring import tuple_getter
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.layout import Layout
 from mjcf_model.registry import CLASS_BY_KEY
@@ -190,13 +190,7 @@ def _with_values(
     if getter is None:
         if len(_VALUE_GETTERS) >= _MAX_VALUE_GETTERS:
             _VALUE_GETTERS.clear()
-        fields = [table[name] for name in layout.names]
-        if len(fields) == 1:
-            single = operator.attrgetter(fields[0])
-            getter = lambda element: (single(element),)  # noqa: E731
-        else:
-            getter = operator.attrgetter(*fields)
-        _VALUE_GETTERS[key] = getter
+        getter = _VALUE_GETTERS[key] = tuple_getter(tuple(table[n] for n in layout.names))
     layout.values = getter(node)
     layout.getter, layout.stored = getter, node.__dict__.keys() - LATER_FIELDS
     return node
