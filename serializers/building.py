@@ -21,13 +21,13 @@ from mjcf_model.base import (
     build_node,
     field_table,
 )
-from mjcf_model.declaring import tuple_getter
+from mjcf_model.declaring import NodeInfo, tuple_getter
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.layout import Layout
 from mjcf_model.registry import CLASS_BY_KEY
 from mjcf_model.values import Unparsed
 
-__all__ = ["build_element", "element_step", "element_text"]
+__all__ = ["ReadMemo", "build_element", "element_step", "element_text", "read_typed"]
 
 
 def element_text(chunks: Sequence[str | None], has_children: bool) -> str | None:
@@ -136,12 +136,7 @@ def build_element(
     else:
         if layout is None or not attributes:
             return node
-        getter = _VALUE_GETTERS.get((cls, layout.names)) if not extra else None
-        if getter is None:
-            return _with_values(node, table, attributes, layout, not extra)
-        layout.values = getter(node)
-        layout.getter, layout.stored = getter, node.__dict__.keys() - LATER_FIELDS
-        return node
+        return _with_values(node, table, attributes, layout, not extra)
     for name, value in attributes:  # only on the error path: find the values it cannot read
         field = table.get(name)
         if field is None:
@@ -158,10 +153,92 @@ def build_element(
     return node if layout is None else _with_values(node, table, attributes, layout, not extra)
 
 
+#: Per typed class, each ``(name, text)`` attribute read in one document, as its field
+#: and converted, validated value (see :func:`read_typed`).
+ReadMemo = dict[type, dict[tuple[str, str], tuple[str, Any]]]
+_new = object.__new__
+_set_dict = object.__setattr__
+
+
+def read_typed(
+    cls: type[TypedElement],
+    attributes: list[str],
+    children: Sequence[Node],
+    layout: Layout,
+    memo: ReadMemo,
+) -> TypedElement | None:
+    """The typed node of an element read from text, or ``None`` if :func:`build_element` must.
+
+    The text reader's fast path for an element without character data: each
+    ``(name, text)`` attribute is looked up in the document's ``memo`` (read
+    once, then shared), and the node is given its fields at once. It returns
+    ``None`` for an attribute without a field or a value its field cannot read,
+    which :func:`build_element` keeps and explains. The result is the node
+    :func:`build_element` builds (``tests/test_reading_paths.py`` checks it).
+
+    Args:
+        cls: The element's typed class.
+        attributes: Attribute names and texts, alternating, in source order.
+        children: The already built child nodes.
+        layout: The element's source text (its ``names`` are the attribute names).
+        memo: One per document.
+
+    Example:
+        >>> from mjcf_model import Geom
+        >>> layout = Layout("geom", '<geom size="1"/>', ("",), "", ("size",), (), (), None)
+        >>> read_typed(Geom, ["size", "1"], [], layout, {}) == Geom(size=[1.0])
+        True
+
+    """
+    known = memo.get(cls)
+    if known is None:
+        known = memo[cls] = {}
+    data: dict[str, Any] = {}
+    texts = iter(attributes)
+    for pair in zip(texts, texts, strict=True):
+        found = known.get(pair)
+        if found is None:
+            found = _read_value(cls.__node_info__, pair)
+            if found is None:
+                return None
+            known[pair] = found
+        data[found[0]] = found[1]
+    data["attribute_order"] = layout.names
+    if children:
+        data["children"] = tuple(children)
+    data["layout"] = layout
+    node = _new(cls)
+    _set_dict(node, "__dict__", data)
+    if attributes:
+        _record_values(node, cls.__node_info__.table, layout)
+    return node
+
+
+def _read_value(info: NodeInfo, pair: tuple[str, str]) -> tuple[str, Any] | None:
+    """The field and the value one attribute text gives, or ``None`` if it gives none."""
+    name, text = pair
+    field = info.table.get(name)
+    if field is None:
+        return None
+    converter = info.converters.get(field)
+    try:
+        value = text if converter is None else converter(text)
+        checks = info.validators.get(field)
+        if checks is not None:
+            checks[0](None, checks[1], value)
+    except MjcfValueError:
+        return None
+    return None if value is None else (field, value)
+
+
 #: Fields set on a node after it is read (the root's folder), left out of ``Layout.stored``.
 LATER_FIELDS = frozenset({"base_dir"})
-#: Per class and attribute names (all typed fields), a getter of their values as a tuple.
-_VALUE_GETTERS: dict[tuple[type, tuple[str, ...]], Callable[[Any], tuple[Any, ...]]] = {}
+#: Per class, attribute names (all typed fields) and kind of content: a getter of their
+#: values as a tuple, and the fields such an element stores.
+_VALUE_GETTERS: dict[
+    tuple[type, tuple[str, ...], bool, bool],
+    tuple[Callable[[Any], tuple[Any, ...]], frozenset[str]],
+] = {}
 #: Past this many, the getters are forgotten (hostile text could make any number).
 _MAX_VALUE_GETTERS = 4096
 
@@ -185,12 +262,29 @@ def _with_values(
             ]
         )
         return node
-    key = (type(node), layout.names)
-    getter = _VALUE_GETTERS.get(key)
-    if getter is None:
+    _record_values(node, table, layout)
+    return node
+
+
+def _record_values(node: TypedElement, table: dict[str, str], layout: Layout) -> None:
+    """Give ``layout`` the values ``node`` holds for its attributes, and what it stores.
+
+    Every attribute of the layout has a field (``table`` maps it). The getter and
+    the set of stored fields are made once per class, attribute names and kind of
+    content, and shared.
+    """
+    data = node.__dict__
+    key = (type(node), layout.names, "children" in data, "text" in data)
+    known = _VALUE_GETTERS.get(key)
+    if known is None:
         if len(_VALUE_GETTERS) >= _MAX_VALUE_GETTERS:
             _VALUE_GETTERS.clear()
-        getter = _VALUE_GETTERS[key] = tuple_getter(tuple(table[n] for n in layout.names))
+        known = _VALUE_GETTERS[key] = (
+            tuple_getter(tuple(table[n] for n in layout.names)),
+            frozenset(data.keys() - LATER_FIELDS),
+        )
+    getter, stored = known
     layout.values = getter(node)
-    layout.getter, layout.stored = getter, node.__dict__.keys() - LATER_FIELDS
-    return node
+    if stored != data.keys():  # a value read as None (not stored): not the usual fields
+        stored = frozenset(data.keys() - LATER_FIELDS)
+    layout.getter, layout.stored = getter, stored

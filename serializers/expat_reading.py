@@ -19,12 +19,13 @@ import re
 from typing import Any, NoReturn
 from xml.parsers import expat
 
-from mjcf_model.base import Comment, GenericElement, Node, TypedElement
+from mjcf_model.base import AnyElement, Comment, GenericElement, Node, TypedElement
 from mjcf_model.errors import MjcfError, MjcfIncludeError, MjcfSecurityError, MjcfSyntaxError
 from mjcf_model.layout import DocumentText, Layout
 from mjcf_model.namespaces import child_key, children_context
 from mjcf_model.nodes.root import Include
-from serializers.building import build_element, element_step, element_text
+from mjcf_model.registry import CLASS_BY_KEY
+from serializers.building import ReadMemo, build_element, element_step, element_text, read_typed
 from serializers.includes import PendingInclude, Session
 from serializers.open_element import OpenElement
 from serializers.repairs import (
@@ -66,6 +67,8 @@ class Reader:
         self.ascii: str | None = None
         #: Each attribute text's converted value, per field converter: converted once.
         self.memo: dict[tuple[Any, str], Any] = {}
+        #: Per typed class, each ``(name, text)`` attribute read, as its field and value.
+        self.known: ReadMemo = {}
         #: Where the root's start tag begins and its end tag ends, and where reading stopped.
         self.root_begin = self.root_end = 0
         #: The element being closed, for :meth:`locate`.
@@ -117,7 +120,11 @@ class Reader:
         elements on the stack are its ancestors.
         """
         chain = self.stack if item is None else [*self.stack, item]
-        return "".join(f"/{element_step(o.tag, o.attributes, o.index)}" for o in chain)
+        steps = [
+            element_step(o.tag, o.pairs(), 1 if index == 0 else chain[index - 1].index_of(o.tag))
+            for index, o in enumerate(chain)
+        ]
+        return "".join(f"/{step}" for step in steps)
 
     # -- events -------------------------------------------------------------------
 
@@ -132,51 +139,54 @@ class Reader:
         raw = self.raw
         begin = self.parser.CurrentByteIndex
         stop = raw.find(b">", begin) + 1  # the tag's end, unless a value holds a ">"
-        stack = self.stack
-        context = stack[-1].context if stack else None
-        names = flat[::2]
-        attributes = list(zip(names, flat[1::2], strict=True))
-        numeric = None
-        for name, value in attributes:
-            if ">" in value:
-                stop = _start_tag_end(raw, begin)
-            # expat turns a tab or line break in a value into a space; tinyxml2 keeps
-            # it. Only text fields care, and only values with a space can be affected.
-            if " " in value:
-                if numeric is None:
-                    numeric = NUMERIC_ATTRIBUTES[context][tag]
-                if name not in numeric:
-                    attributes = exact_attributes(raw, begin, attributes)
-                    stop = _start_tag_end(raw, begin)
-                    break
         text = self.ascii
-        if stack:
-            parent = stack[-1]
-            counts = parent.counts
-            index = 1 if counts is None else counts.get(tag, 0) + 1
+        start = text[begin:stop] if text is not None else self.source(begin, stop)
+        stack = self.stack
+        parent = stack[-1] if stack else None
+        context = parent.context if parent is not None else None
+        if flat:
+            joined = "".join(flat)  # attribute names hold neither ">" nor white space
+            if ">" in joined:
+                stop = _start_tag_end(raw, begin)
+                start = self.source(begin, stop)
+            # expat turns a tab or line break in a value into a space; tinyxml2 keeps
+            # it. Only a tag written over lines or with tabs can hold one.
+            if " " in joined and ("\n" in start or "\t" in start or "\r" in start):
+                exact = self.exact_attributes(tag, context, flat, begin)
+                if exact is not flat:
+                    flat = exact
+                    stop = _start_tag_end(raw, begin)
+                    start = self.source(begin, stop)
+        if parent is not None:
             cursor = parent.cursor
             gap = text[cursor:begin] if text is not None else self.source(cursor, begin)
         else:
-            index, gap = 1, ""
+            gap = ""
             self.root_begin = begin
-        key = child_key(context, tag)
-        inner = children_context(key, context)
-        if not stack and self.include_context is not None:
+        step = _STEPS.get((context, tag))
+        if step is None:
+            step = _step(context, tag)
+        key, inner, typed = step
+        if parent is None and self.include_context is not None:
             inner = self.include_context  # MuJoCo takes the root's children, whatever its tag
         stack.append(
             OpenElement(
-                tag,
-                attributes,
-                tuple(names),
-                key,
-                inner,
-                self.parser.CurrentLineNumber,
-                index,
-                text[begin:stop] if text is not None else self.source(begin, stop),
-                stop,
-                gap,
+                tag, flat, key, typed, inner, self.parser.CurrentLineNumber, start, stop, gap
             )
         )
+
+    def exact_attributes(
+        self, tag: str, context: str | None, flat: list[str], begin: int
+    ) -> list[str]:
+        """``flat`` with the tabs and line breaks of text values kept, or ``flat`` itself.
+
+        Numbers read the same either way; a text value with a space may have held one.
+        """
+        numeric = NUMERIC_ATTRIBUTES[context][tag]
+        pairs = list(zip(flat[::2], flat[1::2], strict=True))
+        if all(name in numeric or " " not in value for name, value in pairs):
+            return flat
+        return [part for pair in exact_attributes(self.raw, begin, pairs) for part in pair]
 
     def locate(self, error: MjcfError) -> MjcfError:
         """``error`` with the file, line and path of the element being closed."""
@@ -186,10 +196,12 @@ class Reader:
 
     def end(self, _tag: str) -> None:
         """Build the element being closed and give it to its parent (expat's handler)."""
-        item = self.stack.pop()
+        stack = self.stack
+        item = stack.pop()
         text = element_text(item.text, bool(item.children)) if item.text else None
+        names = tuple(item.attributes[::2])
         if item.start.endswith("/>"):
-            layout = Layout(item.tag, item.start, _NO_GAPS, "", item.names, (), (), text, None)
+            layout = Layout(item.tag, item.start, _NO_GAPS, "", names, (), (), text, None)
             after = item.cursor
         else:
             begin = self.parser.CurrentByteIndex
@@ -206,35 +218,31 @@ class Reader:
                 item.start,
                 (*item.gaps, last),
                 end_tag,
-                item.names,
+                names,
                 (),
                 tuple(item.sources),
                 text,
                 item.comments,
             )
         self.closing = item
-        try:
-            node = build_element(
-                item.key,
-                item.tag,
-                item.attributes,
-                item.children,
-                text,
-                self.locate,
-                layout,
-                self.memo,
-            )
-        except MjcfError as error:
-            raise self.locate(error) from None
-        if self.stack:
-            parent = self.stack[-1]
-            parent.add_child(item.gap, node, layout)
-            if parent.counts is not None:
-                parent.counts[item.tag] = item.index
-            parent.cursor = after
-        else:
-            self.top.append(node)
-            self.root_end = after
+        typed = item.typed
+        node: AnyElement | None = None
+        if typed is not None and text is None:
+            node = read_typed(typed, item.attributes, item.children, layout, self.known)
+        if node is None:
+            try:
+                node = build_element(
+                    item.key,
+                    item.tag,
+                    item.pairs(),
+                    item.children,
+                    text,
+                    self.locate,
+                    layout,
+                    self.memo,
+                )
+            except MjcfError as error:
+                raise self.locate(error) from None
         if self.session.inline_includes and isinstance(node, Include):
             if not node.file:
                 raise MjcfIncludeError(
@@ -249,6 +257,13 @@ class Reader:
                     node, self.filename, item.line, self.path_to(item), context or "mujoco"
                 )
             )
+        if stack:  # after the include's path is taken: the path counts its siblings so far
+            parent = stack[-1]
+            parent.add_child(item.gap, node, layout)
+            parent.cursor = after
+        else:
+            self.top.append(node)
+            self.root_end = after
 
     def comment(self, text: str) -> None:
         """Keep a comment as a child, with its exact text (expat's handler)."""
@@ -375,6 +390,27 @@ def _start_tag_end(raw: bytes, index: int) -> int:
         index = raw.index(raw[position : position + 1], position + 1) + 1
 
 
+def _step(context: str | None, tag: str) -> tuple[str | None, str | None, Any]:
+    """A ``tag`` element in ``context``: its schema key, its children's context, its class.
+
+    The class is ``None`` unless the element is typed. Remembered in :data:`_STEPS`.
+    """
+    key = child_key(context, tag)
+    cls = CLASS_BY_KEY.get(key) if key is not None else None
+    if len(_STEPS) >= _MAX_STEPS:
+        _STEPS.clear()
+    step = _STEPS[(context, tag)] = (
+        key,
+        children_context(key, context),
+        cls if cls is not None and cls.tag == tag else None,
+    )
+    return step
+
+
+#: Per parent context and tag, what :func:`_step` found.
+_STEPS: dict[tuple[str | None, str], tuple[str | None, str | None, Any]] = {}
+#: Past this many, the steps are forgotten (hostile text could make any number).
+_MAX_STEPS = 4096
 #: The gaps of an element with nothing inside (shared: most elements).
 _NO_GAPS = ("",)
 #: What ends a start tag, or opens a value that may hold a ``>``.

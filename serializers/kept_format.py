@@ -232,9 +232,10 @@ def _added_gap(gaps: list[str], count: int, indent: str, style: _Style) -> str:
 def _start_tag(element: AnyElement, layout: Layout) -> str:
     """The recorded start tag, with the attributes changed since edited in place."""
     getter = layout.getter
+    stored = element.__dict__.keys()
     if (
         getter is not None
-        and element.__dict__.keys() - LATER_FIELDS == layout.stored
+        and (stored == layout.stored or stored - LATER_FIELDS == layout.stored)
         and getter(element) == layout.values
     ):
         return layout.start  # the fields stored and their values are the ones read

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import IO
 
 from mjcf_model.base import AnyElement, Comment, GenericElement, TypedElement
+from mjcf_model.collector import collector_paused
 from mjcf_model.errors import MjcfIncludeError, MjcfSyntaxError
 from mjcf_model.node_building import build_node
 from mjcf_model.nodes.root import Mujoco
@@ -67,8 +68,15 @@ def _read(data: str | bytes, filename: str, session: Session) -> Mujoco:
 
     Included files are read one after another from an explicit stack, not by
     recursion, so an include chain as long as MuJoCo follows (it has no limit)
-    is read too.
+    is read too. The garbage collector is paused meanwhile (see
+    :mod:`mjcf_model.collector`).
     """
+    with collector_paused():
+        return _read_documents(data, filename, session)
+
+
+def _read_documents(data: str | bytes, filename: str, session: Session) -> Mujoco:
+    """:func:`_read` itself."""
     stack = [_parse(data, filename, session)]
     reading = {path: 0 for path in session.include_chain}
     origins: dict[int, tuple[AnyElement, Path]] = {}

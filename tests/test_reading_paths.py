@@ -1,0 +1,103 @@
+"""The text reader's fast path for typed elements gives what the general builder gives."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from pathlib import Path
+from typing import Any
+
+import attrs
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from mjcf_model import Geom, Joint
+from mjcf_model.base import TypedElement
+from mjcf_model.declaring import xml_name
+from mjcf_model.layout import Layout
+from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.strategies import element_values
+from mjcf_model.values import Unparsed, format_value
+from serializers import from_etree, loads
+from serializers.building import build_element, read_typed
+from tests.conftest import corpus_id, loading_corpus
+
+TYPED_CLASSES = sorted(set(CLASS_BY_KEY.values()), key=lambda cls: cls.__name__)
+
+
+def _layout(tag: str, names: tuple[str, ...]) -> Layout:
+    return Layout(tag, f"<{tag}/>", ("",), "", names, (), (), None)
+
+
+def _texts(cls: type[TypedElement], values: dict[str, Any]) -> list[tuple[str, str]]:
+    """Each given value as the attribute text a file would hold."""
+    names = {f.name: xml_name(f) for f in attrs.fields(cls)}
+    given = {field: value for field, value in values.items() if value is not None}
+    return [(names[field], format_value(value)) for field, value in given.items()]
+
+
+@pytest.mark.parametrize("cls", TYPED_CLASSES, ids=lambda cls: cls.__name__)
+@settings(max_examples=10)
+@given(data=st.data())
+def test_fast_path_holds_what_the_field_converters_make(
+    cls: type[TypedElement], data: st.DataObject
+) -> None:
+    """Each field holds its converter's value of the text; the layout records those values."""
+    pairs = data.draw(st.permutations(_texts(cls, data.draw(element_values(cls)))))
+    names = tuple(name for name, _ in pairs)
+    flat = [part for pair in pairs for part in pair]
+    layout = _layout(cls.tag, names)
+    node = read_typed(cls, flat, [], layout, {})
+    assert node is not None
+    table = cls.__node_info__.table
+    for field in attrs.fields(cls):
+        given = {table[name]: text for name, text in pairs}
+        if field.name in given:
+            converted = field.converter(given[field.name])  # type: ignore[misc]
+            assert getattr(node, field.name) == converted, field.name
+        elif field.name == "attribute_order":
+            assert node.attribute_order == names
+        elif field.name == "layout":
+            assert node.layout is layout
+        else:
+            assert getattr(node, field.name) == field.default, field.name
+    if names:  # the writer compares what the reader recorded
+        assert layout.values == tuple(getattr(node, table[name]) for name in names)
+        assert layout.stored == node.__dict__.keys()
+    key = cls.__node_info__.keys[0]
+    general = build_element(key, cls.tag, pairs, [], None, None, _layout(cls.tag, names))
+    assert node == general and vars(node).keys() == vars(general).keys()
+
+
+def test_fast_path_leaves_unknown_attributes_and_unreadable_values_to_the_general_builder() -> None:
+    """An attribute without a field, or a value its field cannot read, gives no node."""
+    assert read_typed(Geom, ["colour", "red"], [], _layout("geom", ("colour",)), {}) is None
+    assert read_typed(Geom, ["size", "1 x"], [], _layout("geom", ("size",)), {}) is None
+    assert read_typed(Joint, ["type", "bend"], [], _layout("joint", ("type",)), {}) is None
+
+
+def test_a_document_keeps_unknown_attributes_and_unreadable_values() -> None:
+    """Where the fast path gives up, the reader keeps the text as the general builder does."""
+    geom = loads('<mujoco><worldbody><geom colour="red" size="1 x"/></worldbody></mujoco>')
+    read = geom.worldbody.geoms[0]
+    assert dict(read.extra) == {"colour": "red"}
+    assert isinstance(read.size, Unparsed) and read.size.text == "1 x"
+
+
+def test_equal_attribute_texts_share_one_value() -> None:
+    """A text met twice in a document is read once: the nodes share the value."""
+    model = loads('<mujoco><worldbody><geom pos="1 2 3"/><geom pos="1 2 3"/></worldbody></mujoco>')
+    first, second = model.worldbody.geoms
+    assert first.pos == (1.0, 2.0, 3.0) and first.pos is second.pos
+
+
+@pytest.mark.parametrize("path", loading_corpus(), ids=corpus_id)
+def test_corpus_reads_as_elementtree_reads_it(path: Path) -> None:
+    """Each corpus file read from text equals the same file read through ElementTree.
+
+    ElementTree keeps no comment outside the root, so the text is read without them.
+    """
+    parser = ET.XMLParser(target=ET.TreeBuilder(insert_comments=True))
+    tree = ET.fromstring(path.read_bytes(), parser)
+    model = loads(ET.tostring(tree))
+    assert model == from_etree(tree)
