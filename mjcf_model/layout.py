@@ -17,7 +17,34 @@ from __future__ import annotations
 from collections.abc import Callable, Set
 from typing import Any
 
-__all__ = ["DocumentText", "Layout"]
+__all__ = ["DocumentText", "Layout", "SourceText"]
+
+
+class SourceText:
+    """The text of one file as read, shared by the layouts of its elements.
+
+    An element nobody changed, with every element below it, is written back as
+    one slice of it (:meth:`Layout.whole`).
+
+    Example:
+        >>> SourceText(b"<a><b/></a>").slice(3, 7)
+        '<b/>'
+
+    """
+
+    __slots__ = ("raw", "text")
+
+    def __init__(self, raw: bytes) -> None:
+        #: The bytes read, when they are not ASCII (offsets are byte offsets), else ``b""``.
+        self.raw = b"" if raw.isascii() else raw
+        #: The text, when the bytes are ASCII (byte offsets are then text offsets).
+        self.text = raw.decode("ascii") if not self.raw else ""
+
+    def slice(self, begin: int, after: int) -> str:
+        """The text between two byte offsets."""
+        if self.raw:
+            return self.raw[begin:after].decode("utf-8", "surrogatepass")
+        return self.text[begin:after]
 
 
 class DocumentText:
@@ -61,12 +88,16 @@ class Layout:
     """
 
     __slots__ = (
+        "after",
+        "begin",
+        "children",
         "comments",
         "document",
         "end",
         "gaps",
         "getter",
         "names",
+        "origin",
         "sources",
         "start",
         "stored",
@@ -118,6 +149,25 @@ class Layout:
         #: that stores the same fields, with ``values`` for its attributes, is unchanged
         #: (the writer's fast check).
         self.stored: Set[str] = frozenset()
+        #: The children the element was read with: while the element still holds this
+        #: very tuple, nothing below it changed.
+        self.children: tuple[Any, ...] = ()
+        #: The file's text, and where the element begins and ends in it (byte offsets).
+        self.origin: SourceText | None = None
+        self.begin = self.after = 0
+
+    def whole(self) -> str | None:
+        """The element's whole source text, from its start tag to its end tag, if known.
+
+        Example:
+            >>> layout = Layout("a", "<a>", ("",), "</a>", (), (), (), None)
+            >>> layout.origin, layout.begin, layout.after = SourceText(b"<a></a>"), 0, 7
+            >>> layout.whole()
+            '<a></a>'
+
+        """
+        origin = self.origin
+        return None if origin is None else origin.slice(self.begin, self.after)
 
     def __repr__(self) -> str:
         return f"Layout({self.start!r}, ...)"

@@ -21,7 +21,7 @@ from xml.parsers import expat
 
 from mjcf_model.base import AnyElement, Comment, GenericElement, Node, TypedElement
 from mjcf_model.errors import MjcfError, MjcfIncludeError, MjcfSecurityError, MjcfSyntaxError
-from mjcf_model.layout import DocumentText, Layout
+from mjcf_model.layout import DocumentText, Layout, SourceText
 from mjcf_model.namespaces import child_key, children_context
 from mjcf_model.nodes.root import Include
 from mjcf_model.registry import CLASS_BY_KEY
@@ -65,6 +65,8 @@ class Reader:
         #: are then text offsets), else ``None``.
         self.raw = b""
         self.ascii: str | None = None
+        #: The same, shared by the layouts of the elements read.
+        self.origin: SourceText | None = None
         #: Each attribute text's converted value, per field converter: converted once.
         self.memo: dict[tuple[Any, str], Any] = {}
         #: Per typed class, each ``(name, text)`` attribute read, as its field and value.
@@ -171,7 +173,7 @@ class Reader:
             inner = self.include_context  # MuJoCo takes the root's children, whatever its tag
         stack.append(
             OpenElement(
-                tag, flat, key, typed, inner, self.parser.CurrentLineNumber, start, stop, gap
+                tag, flat, key, typed, inner, self.parser.CurrentLineNumber, begin, start, stop, gap
             )
         )
 
@@ -243,6 +245,8 @@ class Reader:
                 )
             except MjcfError as error:
                 raise self.locate(error) from None
+        layout.children = node.children
+        layout.origin, layout.begin, layout.after = self.origin, item.begin, after
         if self.session.inline_includes and isinstance(node, Include):
             if not node.file:
                 raise MjcfIncludeError(
@@ -308,8 +312,9 @@ class Reader:
                 ) from None
         try:
             self.raw = raw
-            if raw.isascii():
-                self.ascii = raw.decode("ascii")
+            self.origin = SourceText(raw)
+            if not self.origin.raw:
+                self.ascii = self.origin.text
             self.parser.Parse(raw, True)
             self.record_document(len(raw))
         except expat.ExpatError as error:

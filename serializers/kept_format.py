@@ -144,15 +144,26 @@ def _open(
     stack: list[Any],
     style: _Style,
 ) -> None:
-    """Write ``element``'s start tag to ``out``; push its gaps, children and end tag."""
+    """Write ``element``'s start tag to ``out``; push its gaps, children and end tag.
+
+    An element that holds the children it was read with, with its own start tag
+    and text unchanged, is written as its source text at once.
+    """
+    start = _start_tag(element, layout)
+    same_text = element.text is layout.text or element.text == layout.text
+    if children is layout.children and same_text and start is layout.start:
+        whole = layout.whole()
+        if whole is not None:
+            out.append(whole)
+            return
     sources = layout.sources
     count = len(sources)
-    if (element.text is layout.text or element.text == layout.text) and len(children) == count:
+    if same_text and len(children) == count:
         for child, source in zip(children, sources, strict=True):
             if getattr(child, "layout", child) is not source:
                 break
         else:
-            out.append(_start_tag(element, layout))
+            out.append(start)
             gaps = layout.gaps
             comments = layout.comments or {}
             stack.append(layout.end)
@@ -166,7 +177,7 @@ def _open(
                 stack.append(gaps[index])
             return
     pieces = _changed_content(element, layout, children, _current_indent(out), style)
-    start, end = _start_tag(element, layout), layout.end
+    end = layout.end
     if not end and len(pieces) > 1:  # an empty-element tag now holds something
         start, end = start[:-2].rstrip() + ">", f"</{element.tag}>"
     out.append(start)

@@ -4,7 +4,7 @@
 between an element's start tag and its end tag: its attributes, its children and
 the source text around them.
 
->>> item = OpenElement("geom", ["size", "0.1"], "geom", None, None, 1, "<geom>", 6, "")
+>>> item = OpenElement("geom", ["size", "0.1"], "geom", None, None, 1, 0, "<geom>", 6, "")
 >>> item.children, item.start
 ([], '<geom>')
 """
@@ -23,6 +23,7 @@ class OpenElement:
 
     __slots__ = (
         "attributes",
+        "begin",
         "children",
         "comments",
         "context",
@@ -46,6 +47,7 @@ class OpenElement:
         typed: type | None,
         context: str | None,
         line: int,
+        begin: int,
         start: str,
         cursor: int,
         gap: str,
@@ -58,6 +60,8 @@ class OpenElement:
         self.typed = typed
         self.context = context
         self.line = line
+        #: The byte offset of the start tag's ``<``.
+        self.begin = begin
         #: The start tag's source text.
         self.start = start
         #: The byte offset where the text not yet given to a gap or a child begins.

@@ -363,3 +363,34 @@ def test_an_attribute_added_while_text_is_removed_is_written() -> None:
     written = dumps(map_tree(lambda n: changed if n is geom else n, model))
     assert '<geom name="a" size="1" rgba="1 0 0 1">' in written
     assert loads(written).worldbody.geoms[0].rgba == (1.0, 0.0, 0.0, 1.0)
+
+
+def test_untouched_subtrees_keep_multibyte_text_beside_an_edit() -> None:
+    """Beside an edited element, untouched ones keep non-ASCII text, CRLF and odd spacing."""
+    text = (
+        "<mujoco>\r\n  <!-- r\u00e9sum\u00e9 \u2014 \u65e5\u672c -->\r\n  <worldbody>\r\n"
+        '    <body name="\u00e4rm"   pos="0 0 1">\r\n      <geom size = "1.0"/><!--x-->\r\n'
+        '    </body>\r\n    <site name="s" pos="0 0 1"/>\r\n  </worldbody>\r\n</mujoco>\r\n'
+    )
+    model = loads(text.encode("utf-8"))
+    assert dumps(model) == text
+    edited = map_tree(
+        lambda n: with_attributes(n, {"pos": (0, 0, 2)}) if isinstance(n, Site) else n, model
+    )
+    assert edited.worldbody.bodies[0] is model.worldbody.bodies[0]
+    expected = text.replace('<site name="s" pos="0 0 1"/>', '<site name="s" pos="0 0 2"/>')
+    assert dumps(edited) == expected
+
+
+def test_an_element_rebuilt_with_its_children_writes_its_own_edit_only() -> None:
+    """A parent given a new attribute but its old children is edited in its start tag only."""
+    text = (
+        '<mujoco>\n  <worldbody>\n    <body name="b">\n      <geom size="1"/>\n'
+        "    </body>\n  </worldbody>\n</mujoco>\n"
+    )
+    model = loads(text)
+    body = model.worldbody.bodies[0]
+    moved = with_attributes(body, {"pos": (1, 0, 0)})
+    assert moved.children is body.children
+    written = dumps(map_tree(lambda n: moved if n is body else n, model))
+    assert written == text.replace('<body name="b">', '<body name="b" pos="1 0 0">')
