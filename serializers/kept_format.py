@@ -268,18 +268,18 @@ def _attribute_spans(start: str, position: int) -> Iterator[tuple[int, str, int,
     where its value begins and ends (the closing quote's offset).
     """
     while True:
-        begin = position
-        while position < len(start) and start[position] in _WHITE_SPACE:
-            position += 1
         equals = start.find("=", position)
-        if position == begin or equals < 0:
+        if equals < 0:
             return
-        name = start[position:equals].rstrip(_WHITE_SPACE)
+        before = start[position:equals]  # white space, the name, maybe white space
+        name = before.strip(_WHITE_SPACE)
+        if not name or before[0] not in _WHITE_SPACE:
+            return
         quote = equals + 1
         while start[quote] in _WHITE_SPACE:
             quote += 1
         close = start.find(start[quote], quote + 1)
-        yield begin, name, quote + 1, close
+        yield position, name, quote + 1, close
         position = close + 1
 
 
