@@ -19,11 +19,14 @@ from __future__ import annotations
 
 import functools
 import math
+import types
+import typing
 from collections.abc import Callable, Mapping
 from typing import Any
 
 import attrs
 import cattrs
+from cattrs.fns import identity
 from cattrs.strategies import configure_tagged_union, include_subclasses
 
 from mjcf_model.base import AttributeMap, Element, Node, TypedElement
@@ -48,6 +51,11 @@ def _json_float(value: float) -> float | str:
 def _unstructure_floats(values: Floats | Unparsed) -> list[float | str] | Unparsed:
     if type(values) is Unparsed:
         return values  # written as {"_unparsed": text} by to_dict
+    try:
+        if all(map(math.isfinite, values)):  # in C: the usual case, nothing to spell
+            return list(values)
+    except (TypeError, OverflowError):
+        pass
     return [_json_float(v) if isinstance(v, float) else v for v in values]
 
 
@@ -59,20 +67,26 @@ def _union(cl: Any, conv: cattrs.Converter) -> None:
     configure_tagged_union(cl, conv, tag_name="_node")
 
 
-@functools.cache
 def _built_converter() -> cattrs.Converter:
+    return _converter_and_union()[0]
+
+
+@functools.cache
+def _converter_and_union() -> tuple[cattrs.Converter, tuple[type, ...]]:
+    """The converter, and the classes of its union of node classes (``"_node"`` tags)."""
     built = cattrs.Converter(omit_if_default=True, forbid_extra_keys=True)
     built.register_unstructure_hook(float, _unstructure_float)
     built.register_unstructure_hook_func(lambda t: t == Floats, _unstructure_floats)
     built.register_structure_hook_func(
-        lambda t: t == Floats, lambda value, _: tuple(float(v) for v in value)
+        lambda t: t == Floats, lambda value, _: tuple(map(float, value))
     )
     built.register_unstructure_hook(AttributeMap, dict)
     built.register_structure_hook(AttributeMap, lambda value, _: AttributeMap(value))
     # A layout (how a loaded element was written) is not part of the value: to_dict drops it.
     built.register_unstructure_hook(Layout, lambda _layout: None)
+    members = _union_members()  # what include_subclasses finds, at the same moment
     include_subclasses(Node, built, union_strategy=_union)
-    return built
+    return built, members
 
 
 def __getattr__(name: str) -> Any:
@@ -82,6 +96,156 @@ def __getattr__(name: str) -> Any:
 
 
 _UNPARSED = "_unparsed"
+#: A field without a default: ``to_dict`` always writes it.
+_REQUIRED = object()
+#: How ``to_dict`` writes one stored field: its name, the converter's hook for its
+#: type (``None`` when the hook returns the value itself) and its default.
+_FieldOut = tuple[str, Callable[[Any], Any] | None, Any]
+#: How ``from_dict`` reads one field: its rank among the class's fields, a type whose
+#: values need no hook (or ``None``), the converter's structure hook for the field
+#: called with the value only, and whether the field is optional (``None`` stays ``None``).
+_FieldIn = tuple[int, type | None, Callable[[Any], Any], bool]
+#: Fields ``to_dict`` leaves to its walk (``children``) or drops (``layout``).
+_NOT_UNSTRUCTURED = frozenset({"children", "layout"})
+#: Past this many, the per-shape plans are forgotten (hostile input could make any number).
+_MAX_PLANS = 4096
+
+
+class _Codec:
+    """What ``to_dict`` and ``from_dict`` read from the converter, per node class, once.
+
+    The converter's generated hooks read every field of a class (dozens) where a
+    node stores a few; these tables let both directions work on the fields a node
+    stores, calling for each value the hook the converter has for its type, so the
+    result is the converter's own (``tests/test_equality_speed_paths.py`` checks it).
+    """
+
+    def __init__(self, converter: cattrs.Converter, members: tuple[type, ...]) -> None:
+        self.converter = converter
+        names = [cls.__name__ for cls in members]
+        #: The ``"_node"`` tag of each class of the union.
+        self.tags: dict[type, str] = {cls: cls.__name__ for cls in members}
+        #: The class of each tag, for tags that name one class only.
+        self.classes: dict[str, type] = {
+            cls.__name__: cls for cls in members if names.count(cls.__name__) == 1
+        }
+        #: Per class, each field's rank, hook and default (``to_dict``).
+        self.fields_out: dict[type, dict[str, tuple[int, Callable[[Any], Any] | None, Any]]] = {}
+        #: Per class and stored fields, what ``to_dict`` writes (``(cls, *keys)``).
+        self.plans: dict[tuple[Any, ...], tuple[str, tuple[_FieldOut, ...]] | None] = {}
+        #: Per class, how ``from_dict`` reads each field (see :meth:`_reader`).
+        self.fields_in: dict[type, dict[str, _FieldIn]] = {}
+
+    def plan_of(self, node: Node) -> tuple[str, tuple[_FieldOut, ...]] | None:
+        """The tag and fields ``to_dict`` writes for ``node``; ``None`` outside the union."""
+        cls = type(node)
+        signature = (cls, *node.__dict__)
+        if len(self.plans) >= _MAX_PLANS:
+            self.plans.clear()
+        if cls not in self.tags:
+            self.plans[signature] = None
+            return None
+        table = self.fields_out.get(cls)
+        if table is None:
+            table = self.fields_out[cls] = self._fields_out(cls)
+        stored = sorted((table[name][0], name) for name in node.__dict__ if name in table)
+        plan = (
+            self.tags[cls],
+            tuple((name, table[name][1], table[name][2]) for _, name in stored),
+        )
+        self.plans[signature] = plan
+        return plan
+
+    def _fields_out(self, cls: type) -> dict[str, tuple[int, Callable[[Any], Any] | None, Any]]:
+        table: dict[str, tuple[int, Callable[[Any], Any] | None, Any]] = {}
+        for rank, field in enumerate(_resolved_fields(cls)):
+            if field.name in _NOT_UNSTRUCTURED:
+                continue
+            inner = _optional_member(field.type)
+            hook = self.converter.get_unstructure_hook(field.type if inner is None else inner)
+            default = _REQUIRED if field.default is attrs.NOTHING else field.default
+            table[field.name] = (rank, None if hook is identity else hook, default)
+        return table
+
+    def fields_in_of(self, cls: type) -> dict[str, _FieldIn]:
+        """Each field of ``cls`` that a dict may hold, with its structure hook."""
+        table = self.fields_in.get(cls)
+        if table is None:
+            table = self.fields_in[cls] = {}
+            for rank, field in enumerate(_resolved_fields(cls)):
+                inner = _optional_member(field.type)
+                target = field.type if inner is None else inner
+                try:
+                    hook = self.converter.get_structure_hook(target)
+                except cattrs.errors.StructureHandlerNotFoundError:
+                    continue  # ``layout``: a dict holding one goes the converter's way, and fails
+                unchanged, read = self._reader(hook, target)
+                table[field.name] = (rank, unchanged, read, inner is not None)
+        return table
+
+    def _reader(
+        self, hook: Callable[[Any, Any], Any], target: Any
+    ) -> tuple[type | None, Callable[[Any], Any]]:
+        """The structure hook ``hook`` for ``target`` called with the value only.
+
+        Also the type whose values the hook returns unchanged, if there is one:
+        cattrs reads a ``str`` field as ``str(value)``, which is ``value`` itself
+        when it is a ``str`` already.
+        """
+        if hook is _STRUCTURE_CALL:
+            return target, target  # cattrs calls ``target(value)``
+        if hook == getattr(self.converter, "_structure_tuple", None):
+            parameters = typing.get_args(target)
+            if len(parameters) == 2 and parameters[1] is Ellipsis:
+                item = parameters[0]
+                if self.converter.get_structure_hook(item) is _STRUCTURE_CALL:
+                    return None, functools.partial(_mapped_tuple, item)  # its result, in C
+        return None, functools.partial(_call_hook, hook, target)
+
+
+def _union_members() -> tuple[type, ...]:
+    """The classes of the converter's union: ``Node`` and every subclass, as cattrs finds them."""
+    seen: dict[type, None] = {}
+    stack: list[type] = [Node]
+    while stack:
+        cls = stack.pop()
+        if cls not in seen:
+            seen[cls] = None
+            stack.extend(cls.__subclasses__())
+    return tuple(seen)
+
+
+def _resolved_fields(cls: type) -> tuple[attrs.Attribute[Any], ...]:
+    attrs.resolve_types(cls)  # as cattrs does: the annotations are strings until resolved
+    fields: tuple[attrs.Attribute[Any], ...] = attrs.fields(cls)
+    return fields
+
+
+def _optional_member(annotation: Any) -> Any:
+    """``X`` of ``X | None`` (cattrs' hook for it gives ``None`` or ``X``'s hook), else ``None``."""
+    if typing.get_origin(annotation) in (typing.Union, types.UnionType):
+        members = typing.get_args(annotation)
+        if len(members) == 2 and type(None) in members:
+            return members[0] if members[1] is type(None) else members[1]
+    return None
+
+
+#: cattrs' hook for ``str``, ``float``, ``int``...: ``target(value)`` (private to cattrs:
+#: if a release renames it, every value goes through its hook, as it does then anyway).
+_STRUCTURE_CALL = getattr(cattrs.BaseConverter, "_structure_call", None)
+
+
+def _call_hook(hook: Callable[[Any, Any], Any], target: Any, value: Any) -> Any:
+    return hook(value, target)
+
+
+def _mapped_tuple(item: Callable[[Any], Any], values: Any) -> tuple[Any, ...]:
+    return tuple(map(item, values))
+
+
+@functools.cache
+def _codec() -> _Codec:
+    return _Codec(*_converter_and_union())
 
 
 def _children_of(data: Mapping[str, Any], where: Callable[[], str]) -> list[Any]:
@@ -100,25 +264,44 @@ def to_dict(node: Node) -> dict[str, Any]:
         {'range': [0.0, 'inf'], '_node': 'Joint'}
 
     """
-    converter = _built_converter()
+    codec = _codec()
+    plans = codec.plans
     result: dict[str, Any] = {}
     stack: list[tuple[Node, dict[str, Any]]] = [(node, result)]
     while stack:
         current, out = stack.pop()
-        shallow: Node = current
-        if isinstance(current, Element) and current.children:
-            shallow = with_children(current, ())
-        out.update(converter.unstructure(shallow, Node))
-        out.pop("layout", None)
-        for key, value in out.items():
-            if type(value) is Unparsed:
-                out[key] = {_UNPARSED: value.text}
-        if shallow is not current:
-            assert isinstance(current, Element)
-            children: list[dict[str, Any]] = [{} for _ in current.children]
-            out["children"] = children
-            stack.extend(zip(current.children, children, strict=True))
+        data = current.__dict__
+        plan = plans.get((type(current), *data)) or codec.plan_of(current)
+        if plan is None:
+            out.update(_unstructured(codec.converter, current))
+        else:
+            tag, fields = plan
+            for name, hook, default in fields:
+                value = data[name]
+                if value is default or (default is not None and value == default):
+                    continue  # the converter leaves out a field holding its default
+                if type(value) is Unparsed:
+                    out[name] = {_UNPARSED: value.text}
+                else:
+                    out[name] = value if hook is None else hook(value)
+            out["_node"] = tag
+        children = data.get("children")
+        if children:
+            written: list[dict[str, Any]] = [{} for _ in children]
+            out["children"] = written
+            stack.extend(zip(children, written, strict=True))
     return result
+
+
+def _unstructured(converter: cattrs.Converter, node: Node) -> dict[str, Any]:
+    """``node`` without its children through the converter (a class outside its union fails)."""
+    shallow = with_children(node, ()) if isinstance(node, Element) and node.children else node
+    out: dict[str, Any] = converter.unstructure(shallow, Node)
+    out.pop("layout", None)
+    for key, value in out.items():
+        if type(value) is Unparsed:
+            out[key] = {_UNPARSED: value.text}
+    return out
 
 
 def from_dict(data: Mapping[str, Any]) -> Node:
@@ -148,8 +331,12 @@ def from_dict(data: Mapping[str, Any]) -> Node:
     while True:
         current, _, built, pending = stack[-1]
         for index, child in pending:
-            if not isinstance(child, Mapping):
+            if type(child) is not dict and not isinstance(child, Mapping):
                 raise MjcfValueError(f"not a node dict: {where(index)} is not a mapping")
+            grandchildren = child.get("children", _NO_CHILDREN)
+            if grandchildren is _NO_CHILDREN or (type(grandchildren) is list and not grandchildren):
+                built.append(_node_from_dict(child, functools.partial(where, index), []))
+                continue  # a leaf: built at once, without a stack entry
             stack.append((child, index, [], None))  # on the stack first: errors name it
             stack[-1] = (child, index, [], iter(enumerate(_children_of(child, where))))
             break
@@ -165,12 +352,82 @@ def _node_from_dict(
     data: Mapping[str, Any], where: Callable[[], str], children: list[Node]
 ) -> Node:
     """One node from its dict, its children already rebuilt."""
+    try:
+        node = _built_directly(data, children)
+    except Exception:  # the converter's way below says what is wrong
+        node = None
+    return _node_through_converter(data, where, children) if node is None else node
+
+
+#: What ``from_dict`` reads as the children of a dict without them.
+_NO_CHILDREN: list[Any] = []
+#: Types of values that cannot be a mapping (``{"_unparsed": text}``), checked first.
+_NOT_MAPPINGS = frozenset({str, float, int, bool, list})
+
+
+def _built_directly(data: Mapping[str, Any], children: list[Node]) -> Node | None:
+    """The node :func:`_node_through_converter` builds, or ``None`` where it might not.
+
+    Each value goes through the converter's hook for its field, then the node is
+    built once from the fields given (the converter reads every field of the
+    class and builds a node with children twice). ``None`` for anything unusual:
+    an unknown tag or key, unparsed text outside a typed element, children of a
+    comment; an exception for a value a hook or the node refuses.
+    """
+    codec = _codec()
+    cls = codec.classes.get(data.get("_node"))  # type: ignore[arg-type]
+    if cls is None:
+        return None
+    fields = codec.fields_in_of(cls)
+    values: dict[str, Any] = {}
+    unparsed: dict[str, Unparsed] | None = None
+    last = -1
+    in_order = True
+    for key, value in data.items():
+        if key == "_node" or key == "children":
+            continue
+        reading = fields.get(key)
+        if reading is None:
+            return None
+        rank, unchanged, read, optional = reading
+        in_order = in_order and rank > last
+        last = rank
+        if type(value) is unchanged or (value is None and optional):
+            values[key] = value
+        elif type(value) not in _NOT_MAPPINGS and _is_unparsed(value):
+            if unparsed is None:
+                unparsed = {}
+            unparsed[key] = Unparsed(value[_UNPARSED])
+        else:
+            values[key] = read(value)
+    if not in_order:  # the converter gives the node its fields in the class's order
+        values = dict(sorted(values.items(), key=lambda item: fields[item[0]][0]))
+    if unparsed is not None:
+        if not issubclass(cls, TypedElement):
+            return None
+        values.update(unparsed)
+    if children:
+        if not issubclass(cls, Element):
+            return None
+        values["children"] = tuple(children)
+    return build_node(cls, values)
+
+
+def _is_unparsed(value: Any) -> bool:
+    """Whether ``value`` is ``{"_unparsed": text}``, how ``to_dict`` writes unparsed text."""
+    return (
+        isinstance(value, Mapping)
+        and set(value) == {_UNPARSED}
+        and isinstance(value[_UNPARSED], str)
+    )
+
+
+def _node_through_converter(
+    data: Mapping[str, Any], where: Callable[[], str], children: list[Node]
+) -> Node:
+    """One node from its dict through the converter, which explains what it refuses."""
     shallow = {k: v for k, v in data.items() if k != "children"}
-    unparsed = {
-        k: Unparsed(v[_UNPARSED])
-        for k, v in shallow.items()
-        if isinstance(v, Mapping) and set(v) == {_UNPARSED} and isinstance(v[_UNPARSED], str)
-    }
+    unparsed = {k: Unparsed(v[_UNPARSED]) for k, v in shallow.items() if _is_unparsed(v)}
     for key in unparsed:
         del shallow[key]
     try:

@@ -1,0 +1,357 @@
+"""The fast paths of ``==``, ``hash``, ``to_dict`` and ``from_dict`` give the plain answers.
+
+``==`` and ``hash`` compare two nodes storing the same fields in the same order
+as two tuples, and every other pair field by field; ``to_dict`` and
+``from_dict`` work on the fields a node stores with the converter's hooks. Each
+test sets a fast path against the slow answer it stands for: equality field by
+field as attrs defines it, the converter's own dicts, and MuJoCo compiling the
+models that compare equal to the same arrays.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+import attrs
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from mjcf_model import (
+    AttributeMap,
+    Body,
+    Comment,
+    GenericElement,
+    Geom,
+    Joint,
+    Mujoco,
+    Node,
+    TypedElement,
+    Worldbody,
+    compiled,
+)
+from mjcf_model.compare import model_differences
+from mjcf_model.errors import MjcfValueError
+from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.strategies import element_values, elements, models
+from mjcf_model.traversal import with_children
+from mjcf_model.values import Unparsed
+from serializers import dicts, dumps, from_dict, loads, to_dict
+
+CLASSES = sorted(set(CLASS_BY_KEY.values()), key=lambda cls: cls.__name__)
+
+
+def _reference_equal(a: Node, b: Node) -> bool:
+    """Equality as attrs defines it: every ``eq`` field, NaN equal to itself, any depth."""
+    stack = [(a, b)]
+    while stack:
+        left, right = stack.pop()
+        if type(left) is not type(right):
+            return False
+        for field in attrs.fields(type(left)):
+            compared = field.eq and field.name != "children"
+            if compared and (getattr(left, field.name),) != (getattr(right, field.name),):
+                return False
+        left_children = getattr(left, "children", ())
+        right_children = getattr(right, "children", ())
+        if len(left_children) != len(right_children):
+            return False
+        stack.extend(zip(left_children, right_children, strict=True))
+    return True
+
+
+def _same_compiled(a: Mujoco, b: Mujoco) -> None:
+    assert model_differences(compiled(a), compiled(b)) == []
+
+
+def _world(*children: Node) -> Mujoco:
+    return Mujoco(children=[Worldbody(children=list(children))])
+
+
+def test_stored_default_equals_absent_field() -> None:
+    """A node storing a field at its default equals and hashes like one leaving it out."""
+    plain = Geom(name="g", size=[0.1])
+    stored = [
+        Geom(name="g", size=[0.1], extra={}),
+        Geom(name="g", size=[0.1], extra=AttributeMap.unchecked({})),  # equal, not the same map
+        attrs.evolve(Geom(name="g", size=[0.1], pos=[1, 2, 3]), pos=None),
+        Geom(size=[0.1], name="g", attribute_order=("size", "name")),
+    ]
+    for node in stored:
+        assert node == plain and plain == node
+        assert hash(node) == hash(plain)
+        assert Body(children=[node]) == Body(children=[plain])
+        assert hash(Body(children=[node])) == hash(Body(children=[plain]))
+    assert GenericElement(tag="flag", attributes={}) == GenericElement(tag="flag")
+    assert hash(GenericElement(tag="flag", attributes={})) == hash(GenericElement(tag="flag"))
+    assert Geom(name="g", size=[0.1], extra={"foo": "1"}) != plain
+    one, two = (GenericElement(tag="flag", attributes={"a": text}) for text in "12")
+    assert one != two and hash(one) != hash(two)  # ``attributes`` is hashed, not only compared
+    _same_compiled(_world(stored[0]), _world(plain))
+
+
+def test_loaded_values_equal_built_ones() -> None:
+    """``size="1.0"`` read from text equals ``size=[1]`` built in code, and compiles the same."""
+    loaded = loads(
+        "<mujoco><worldbody><body pos='0 0 1.0'><joint type='hinge' range='-1 1.0'/>"
+        "<geom size='1.0' rgba='1 0 0 1'/></body></worldbody></mujoco>"
+    )
+    built = _world(
+        Body(
+            pos=[0, 0, 1],
+            children=[Joint(type="hinge", range=(-1, 1)), Geom(size=[1], rgba=[1, 0, 0, 1])],
+        )
+    )
+    assert loaded == built and built == loaded
+    assert hash(loaded) == hash(built)
+    _same_compiled(loaded, built)
+    moved = _world(attrs.evolve(built.worldbody.bodies[0], pos=[0, 0, 2]))
+    assert loaded != moved
+    assert model_differences(compiled(loaded), compiled(moved)) != []
+
+
+def test_attribute_order_and_layout_are_ignored() -> None:
+    """Elements written with their attributes in another order are equal and compile the same."""
+    first = loads("<mujoco><worldbody><geom name='a' size='1' pos='0 0 1'/></worldbody></mujoco>")
+    second = loads(
+        "<mujoco><worldbody>\n  <geom pos='0 0 1' size='1.0' name='a' />\n</worldbody></mujoco>"
+    )
+    assert first == second and hash(first) == hash(second)
+    _same_compiled(first, second)
+    third = loads("<mujoco><worldbody><geom name='a' size='2' pos='0 0 1'/></worldbody></mujoco>")
+    assert first != third
+
+
+def test_nan_equals_nan() -> None:
+    """NaN, in a single number or in a vector, equals NaN however it was written."""
+    nan = float("nan")
+    assert Joint(armature=nan) == Joint(armature=math.nan)
+    assert hash(Joint(armature=nan)) == hash(Joint(armature=math.nan))
+    assert Joint(armature=nan, name="j") == Joint(name="j", armature=math.nan)  # one NaN field
+    loaded = loads("<mujoco><worldbody><geom size='nan 1'/></worldbody></mujoco>")
+    built = _world(Geom(size=[nan, 1]))
+    assert loaded == built and hash(loaded) == hash(built)
+    reordered = Geom(rgba=[1, 1, 1, 1], size=[nan, 1])
+    assert reordered == Geom(size=[nan, 1], rgba=[1, 1, 1, 1])
+    assert Joint(armature=nan) != Joint(armature=1.0)
+    assert Geom(size=[nan, 1]) != Geom(size=[nan, 2])
+
+
+def _chain(depth: int, last_size: str) -> str:
+    opening = "".join(f"<body name='b{i}'><geom size='0.1'/>" for i in range(depth))
+    closing = "</body>" * depth
+    geom = f"<geom name='last' size='{last_size}'/>"
+    return f"<mujoco><worldbody>{opening}{geom}{closing}</worldbody></mujoco>"
+
+
+def test_deep_trees_compare_and_hash() -> None:
+    """Chains far deeper than Python's recursion limit compare and hash, down to the last leaf."""
+    depth = 5000
+    first, second = loads(_chain(depth, "0.1")), loads(_chain(depth, "0.1"))
+    assert first == second and hash(first) == hash(second)
+    changed = loads(_chain(depth, "0.2"))
+    assert first != changed and hash(first) != hash(changed)
+    built: Node = Geom(name="last", size=[0.1])
+    for i in reversed(range(depth)):
+        built = Body(name=f"b{i}", children=[Geom(size=[0.1]), built])
+    assert first == _world(built) and hash(first) == hash(_world(built))
+
+
+def test_shared_subtrees_are_skipped_not_misread() -> None:
+    """A subtree shared by both sides is equal by identity; a changed leaf beside it is seen."""
+    shared = loads(_chain(50, "0.1")).worldbody
+    leaf = Geom(name="x", size=[float("nan")])
+    left = Mujoco(children=[shared, Comment(text=" c "), Worldbody(children=[leaf])])
+    right = Mujoco(children=[shared, Comment(text=" c "), Worldbody(children=[leaf])])
+    assert left == right and hash(left) == hash(right)
+    other = Mujoco(children=[shared, Comment(text=" d "), Worldbody(children=[leaf])])
+    assert left != other
+
+
+@pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
+def test_equality_matches_attrs_for_every_class(cls: type[TypedElement]) -> None:
+    """``==`` agrees with attrs' field-by-field equality, and equal nodes hash alike."""
+
+    @given(element_values(cls), element_values(cls), st.randoms())
+    def check(values: dict[str, Any], others: dict[str, Any], random: Any) -> None:
+        node = cls(**values)
+        shuffled = list(values.items())
+        random.shuffle(shuffled)
+        again = cls(**dict(shuffled))  # the same fields, stored in another order
+        assert node == again and hash(node) == hash(again)
+        rebuilt = from_dict(json.loads(json.dumps(to_dict(node))))
+        assert rebuilt == node and hash(rebuilt) == hash(node)
+        for changes in (others, {**values, **others}):
+            other = cls(**changes)
+            assert (node == other) == _reference_equal(node, other)
+            assert (Body(children=[node]) == Body(children=[other])) == (node == other)
+            if node == other:
+                assert hash(node) == hash(other)
+
+    check()
+
+
+@given(models())
+def test_models_equal_after_every_route(model: Mujoco) -> None:
+    """A model equals itself read back from text and from dicts, hashes alike, compiles alike."""
+    text = dumps(model)
+    loaded = loads(text)
+    rebuilt = from_dict(to_dict(loaded))
+    for twin in (loaded, rebuilt):
+        assert twin == model and model == twin
+        assert hash(twin) == hash(model)
+        assert _reference_equal(twin, model)
+    assert len({model, loaded, rebuilt}) == 1
+    _same_compiled(rebuilt, model)
+
+
+def _converter_dict(node: Node) -> dict[str, Any]:
+    """``to_dict`` as the converter alone writes it: each node unstructured, then its children."""
+    shallow = with_children(node, ()) if getattr(node, "children", ()) else node
+    out: dict[str, Any] = dicts.converter.unstructure(shallow, Node)
+    out.pop("layout", None)
+    for key, value in out.items():
+        if type(value) is Unparsed:
+            out[key] = {"_unparsed": value.text}
+    if shallow is not node:
+        out["children"] = [_converter_dict(child) for child in node.children]  # type: ignore[attr-defined]
+    return out
+
+
+def _ordered(data: Any) -> Any:
+    """``data`` with every dict as its list of items, so that key order is compared too."""
+    if isinstance(data, dict):
+        return [(key, _ordered(value)) for key, value in data.items()]
+    if isinstance(data, list):
+        return [_ordered(item) for item in data]
+    return data
+
+
+@pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
+def test_dicts_are_the_converters_own(cls: type[TypedElement]) -> None:
+    """``to_dict`` writes the converter's dict, key order included; ``from_dict`` reads it back."""
+
+    @given(elements(cls))
+    def check(node: TypedElement) -> None:
+        data = to_dict(node)
+        assert _ordered(data) == _ordered(_converter_dict(node))
+        json.dumps(data, allow_nan=False)
+        rebuilt = from_dict(data)
+        through_converter = dicts.converter.structure(
+            {k: v for k, v in data.items() if not _is_unparsed(v)}, Node
+        )
+        assert list(vars(rebuilt)) == [k for k in vars(through_converter)] + [
+            k for k, v in data.items() if _is_unparsed(v)
+        ]
+        assert rebuilt == node and _reference_equal(rebuilt, node)
+
+    check()
+
+
+def test_stored_defaults_are_left_out_of_dicts() -> None:
+    """A field stored at its default is left out of the dict, as the converter leaves it out."""
+    for node in (
+        Geom(name="g", extra=AttributeMap.unchecked({})),
+        GenericElement(tag="flag", attributes=AttributeMap.unchecked({})),
+        Body(name="b", attribute_order=()),
+    ):
+        assert _ordered(to_dict(node)) == _ordered(_converter_dict(node))
+        assert set(to_dict(node)) == {"name" if "name" in vars(node) else "tag", "_node"}
+
+
+@pytest.mark.parametrize(
+    "data",
+    [
+        {"_node": "Geom", "name": 5},
+        {"_node": "Geom", "condim": 1.5, "density": 2},
+        {"_node": "Geom", "attribute_order": "ab", "size": [1, 2]},
+        {"_node": "Mujoco", "base_dir": "/robots"},
+        {"_node": "Geom", "size": None, "extra": {"foo": "bar"}},
+        {"_node": "Joint", "range": ["-inf", "inf"], "armature": "nan"},
+        {"_node": "Comment", "text": " c ", "children": []},
+        {"_node": "Geom", "extra": None},
+        {"_node": "Comment", "text": None},
+    ],
+)
+def test_from_dict_reads_values_as_the_converter_does(data: dict[str, Any]) -> None:
+    """Each value goes through the converter's hook for its field: ``5`` as a name is ``"5"``."""
+    try:
+        expected = dicts.converter.structure(
+            {k: v for k, v in data.items() if k != "children"}, Node
+        )
+    except Exception:  # the converter refuses it: so does from_dict
+        with pytest.raises(MjcfValueError, match="not a node dict"):
+            from_dict(data)
+        return
+    rebuilt = from_dict(data)
+    assert type(rebuilt) is type(expected)
+    assert list(vars(rebuilt).items()) == list(vars(expected).items())
+
+
+def _is_unparsed(value: Any) -> bool:
+    return isinstance(value, dict) and set(value) == {"_unparsed"}
+
+
+def test_loaded_model_dicts_round_trip_and_compile() -> None:
+    """A loaded model's dicts are the converter's, and read back to a model compiling the same."""
+    text = (
+        "<mujoco model='m'><!-- kept --><compiler angle='radian'/>"
+        "<default><default class='c'><geom rgba='1 0 0 1'/></default></default>"
+        "<worldbody><body name='b' pos='0 0 1'><freejoint/>"
+        "<geom class='c' size='0.1'/><site name='s' pos='0 0 inf'/></body>"
+        "</worldbody><visual><global offwidth='800'/></visual></mujoco>"
+    )
+    model = loads(text.replace(" pos='0 0 inf'", ""))
+    data = to_dict(model)
+    assert _ordered(data) == _ordered(_converter_dict(model))
+    rebuilt = from_dict(json.loads(json.dumps(data, allow_nan=False)))
+    assert rebuilt == model and hash(rebuilt) == hash(model)
+    _same_compiled(rebuilt, model)
+    with_inf = loads(text)
+    assert to_dict(with_inf)["children"][3]["children"][0]["children"][2]["pos"] == [
+        0.0,
+        0.0,
+        "inf",
+    ]
+    assert from_dict(to_dict(with_inf)) == with_inf
+
+
+def test_unparsed_text_round_trips_through_dicts() -> None:
+    """Text a typed field cannot read, numbers and integers alike, comes back verbatim."""
+    text = (
+        "<mujoco><asset><mesh name='m' vertex='0 0 0 1 0 0 0 1 0' face='0 1 x'/></asset>"
+        "<worldbody><geom size='0x10' condim='q'/></worldbody></mujoco>"
+    )
+    model = loads(text)
+    data = to_dict(model)
+    mesh, geom = data["children"][0]["children"][0], data["children"][1]["children"][0]
+    assert mesh["face"] == {"_unparsed": "0 1 x"}
+    assert geom["size"] == {"_unparsed": "0x10"} and geom["condim"] == {"_unparsed": "q"}
+    rebuilt = from_dict(json.loads(json.dumps(data)))
+    assert rebuilt == model and dumps(rebuilt) == dumps(model, canonical=True)
+
+
+@pytest.mark.parametrize(
+    ("data", "message"),
+    [
+        ({"_node": "NoSuchNode"}, "NoSuchNode"),
+        ({"_node": "Geom", "colour": "red"}, r"extra fields found \(colour\) @ \$"),
+        ({"_node": "Geom", "size": "abc"}, r"@ \$\.size"),
+        ({"_node": "Geom", "layout": {"start": "<geom/>"}}, "layout"),
+        ({"_node": "Comment"}, r"required field missing @ \$\.text"),
+        ({"_node": "Comment", "text": "a", "children": [{"_node": "Geom"}]}, "has no children"),
+        ({"_node": "GenericElement", "tag": "x", "text": {"_unparsed": "1"}}, "only typed"),
+        (
+            {"_node": "Body", "children": [{"_node": "Geom"}, {"_node": "Geom", "condim": "q"}]},
+            r"@ \$\.children\[1\]\.condim",
+        ),
+        ({"_node": "Body", "children": [{"_node": "Geom", "children": None}]}, "must be a list"),
+        ({"_node": "Geom", "type": "blob"}, r"invalid value @ \$"),
+    ],
+)
+def test_bad_dicts_are_explained(data: dict[str, Any], message: str) -> None:
+    """A dict the fast path cannot build still fails with the converter's message and path."""
+    with pytest.raises(MjcfValueError, match=message):
+        from_dict(data)
