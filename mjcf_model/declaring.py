@@ -106,6 +106,7 @@ class NodeInfo:
         "keys",
         "names",
         "not_compared",
+        "plain_text",
         "rank",
         "required",
         "table",
@@ -153,6 +154,13 @@ class NodeInfo:
         #: The fields ``==`` does not compare on the node itself (its children are walked).
         self.not_compared: frozenset[str] = frozenset(
             f.name for f in fields if not f.eq or f.name == "children"
+        )
+        #: The attribute fields that hold any text XML carries as it is (names and
+        #: references: ``to_str``, no validator): text a parser gave needs no check.
+        self.plain_text: frozenset[str] = frozenset(
+            field
+            for field in table.values()
+            if self.converters.get(field) is to_str and field not in self.validators
         )
 
 

@@ -1,30 +1,36 @@
-"""How an element was written in its file, so that writing it back changes nothing.
+r"""How an element was written in its file, so that writing it back changes nothing.
 
-A loaded element carries a :class:`Layout`: the exact text of its start tag,
-of the gaps between its children and of its end tag. The writer copies that
-text for what nobody changed and writes only what a transform changed or
-added in the canonical form. A layout is never part of a node's value: ``==``,
-``hash`` and the dict form ignore it.
+A loaded element carries a :class:`Layout`: where it stands in its file's text
+(two offsets), the attributes and children it was read with, and its text. The
+writer copies the source text of what nobody changed and writes only what a
+transform changed or added in the canonical form. A layout is never part of a
+node's value: ``==``, ``hash`` and the dict form ignore it.
 
+Reading records only what costs nothing to keep; the pieces the writer needs
+for an element that did change (its start tag, the gaps between its children,
+its end tag) are cut from the text when first asked for (:meth:`Layout.detail`).
 A transform that rebuilds an element keeps its layout (``attrs.evolve`` copies
-it), so the writer tells what changed by comparing: the attribute values the
-reader stored (:attr:`Layout.values`) with the element's own, and each child
-with the child that stood there (:attr:`Layout.sources`).
+it), so the writer tells what changed by comparing: the values read with the
+element's own, and each child with the child that stood there.
+
+>>> layout = Layout(SourceText(b"<a>\n</a>"), 0, 8, [], (), None)
+>>> layout.whole(), layout.detail().gaps, layout.detail().end
+('<a>\n</a>', ('\n',), '</a>')
 """
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Set
 from typing import Any
 
-__all__ = ["DocumentText", "Layout", "SourceText"]
+__all__ = ["DocumentText", "Layout", "LayoutDetail", "SourceText"]
 
 
 class SourceText:
     """The text of one file as read, shared by the layouts of its elements.
 
-    An element nobody changed, with every element below it, is written back as
-    one slice of it (:meth:`Layout.whole`).
+    Offsets are byte offsets (expat's): for an ASCII file they are text offsets too.
 
     Example:
         >>> SourceText(b"<a><b/></a>").slice(3, 7)
@@ -45,6 +51,57 @@ class SourceText:
         if self.raw:
             return self.raw[begin:after].decode("utf-8", "surrogatepass")
         return self.text[begin:after]
+
+    def start_tag_end(self, begin: int) -> int:
+        """The offset after the ``>`` that ends the start tag at ``begin``.
+
+        Quoted values may hold a ``>``: the scan steps over them.
+
+        Example:
+            >>> SourceText(b'<a b="x>y"/>').start_tag_end(0)
+            12
+
+        """
+        if self.raw:
+            return start_tag_end(self.raw, begin)
+        text = self.text
+        while True:
+            mark = _TEXT_TAG_END_MARK.search(text, begin)
+            assert mark is not None, "a start tag the reader read ends"
+            position = mark.start()
+            if text[position] == ">":
+                return position + 1
+            begin = text.index(text[position], position + 1) + 1
+
+    def end_tag_begin(self, begin: int, after: int) -> int:
+        """Where the end tag of the element between two offsets begins."""
+        if self.raw:
+            return self.raw.rindex(b"</", begin, after)
+        return self.text.rindex("</", begin, after)
+
+
+def start_tag_end(raw: bytes, begin: int) -> int:
+    """The offset after the ``>`` that ends the start tag at ``begin`` in ``raw``.
+
+    Example:
+        >>> start_tag_end(b"<a b='>'>", 0)
+        9
+
+    """
+    while True:
+        mark = _TAG_END_MARK.search(raw, begin)
+        assert mark is not None, "a start tag the reader read ends"
+        position = mark.start()
+        if raw[position] == ord(">"):
+            return position + 1
+        begin = raw.index(raw[position : position + 1], position + 1) + 1
+
+
+#: What ends a start tag, or opens a value that may hold a ``>``.
+_TAG_END_MARK = re.compile(b"[\"'>]")
+_TEXT_TAG_END_MARK = re.compile("[\"'>]")
+#: What ends an element's tag name in its start tag.
+_TAG_NAME_END = re.compile(r"[\s/>]")
 
 
 class DocumentText:
@@ -76,72 +133,167 @@ class DocumentText:
 
 
 class Layout:
-    """The source text of one element, as the reader found it.
+    """Where one element was read, and what it was read with.
 
-    Mutable only while the reader builds it; shared, never changed, afterwards.
+    Made by the reader, one per element; shared, never changed afterwards (but
+    for the :meth:`detail` it keeps once worked out).
 
     Example:
-        >>> layout = Layout("geom", '<geom size="1.0"/>', ("",), "", ("size",), ((1.0,),), (), None)
-        >>> layout.start
-        '<geom size="1.0"/>'
+        >>> layout = Layout(SourceText(b'<geom size="1.0"/>'), 0, 18, ["size", "1.0"], (), None)
+        >>> layout.detail().start, layout.detail().names
+        ('<geom size="1.0"/>', ('size',))
 
     """
 
     __slots__ = (
+        "_detail",
         "after",
+        "attributes",
         "begin",
         "children",
         "comments",
         "document",
-        "end",
-        "gaps",
-        "getter",
-        "names",
         "origin",
-        "sources",
-        "start",
-        "stored",
-        "tag",
         "text",
-        "values",
     )
 
     def __init__(
         self,
-        tag: str,
-        start: str,
-        gaps: tuple[str, ...],
-        end: str,
-        names: tuple[str, ...],
-        values: tuple[Any, ...],
-        sources: tuple[Any, ...],
+        origin: SourceText,
+        begin: int,
+        after: int,
+        attributes: list[str],
+        children: tuple[Any, ...],
         text: str | None,
-        comments: dict[int, str] | None = None,
     ) -> None:
-        #: The element's tag when it was read.
-        self.tag = tag
-        #: The start tag exactly as written, from ``<`` to ``>`` (``/>`` for an empty element).
-        self.start = start
-        #: The text between the start tag, each child and the end tag: one more than the
-        #: children. White space, and the raw text of an element with character data.
-        self.gaps = gaps
-        #: The end tag exactly as written, or ``""`` for an empty-element tag.
-        self.end = end
-        #: The MJCF attribute names of the start tag, in order.
-        self.names = names
-        #: The values the reader stored for those attributes: a value that is still the
-        #: same object (or an equal one) was not changed, and its source text is written back.
-        self.values = values
-        #: What stood in each child slot: a child element's own :class:`Layout`, or the
-        #: comment node itself. A child carrying the same token is the same child.
-        self.sources = sources
+        #: The file's text, and where the element begins and ends in it (byte offsets).
+        self.origin = origin
+        self.begin = begin
+        self.after = after
+        #: The attribute names and texts as read, alternating, in source order (never
+        #: changed: the reader's own list).
+        self.attributes = attributes
+        #: The children the element was read with: while the element still holds this
+        #: very tuple, nothing below it changed.
+        self.children = children
         #: The element's ``text`` when it was read.
         self.text = text
-        #: The exact text of comment children whose text differs from ``<!--text-->``
-        #: (a carriage return), by child index; ``None`` when there is none.
-        self.comments = comments
+        #: Where each comment child begins and ends, by child index; ``None`` when none.
+        self.comments: dict[int, tuple[int, int]] | None = None
         #: For the root element: the text of the file around it.
         self.document: DocumentText | None = None
+        self._detail: LayoutDetail | None = None
+
+    def whole(self) -> str:
+        """The element's whole source text, from its start tag to its end tag.
+
+        Example:
+            >>> Layout(SourceText(b"<a></a>"), 0, 7, [], (), None).whole()
+            '<a></a>'
+
+        """
+        return self.origin.slice(self.begin, self.after)
+
+    def detail(self) -> LayoutDetail:
+        """The pieces of the element's text, cut once and kept."""
+        detail = self._detail
+        if detail is None:
+            detail = self._detail = LayoutDetail(self)
+        return detail
+
+    def __repr__(self) -> str:
+        return f"Layout({self.whole()[:40]!r}, ...)"
+
+    def __getstate__(self) -> dict[str, Any]:
+        """Pickle without the detail (it may hold getters): it is worked out again."""
+        state = {name: getattr(self, name) for name in self.__slots__}
+        state["_detail"] = None
+        return state
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        for name, value in state.items():
+            setattr(self, name, value)
+
+
+class LayoutDetail:
+    r"""The pieces of one element's source text, as the writer edits them.
+
+    Example:
+        >>> origin = SourceText(b"<a x='1'>\n  <b/>\n  <!--c-->\n</a>")
+        >>> b = Layout(origin, 12, 16, [], (), None)
+        >>> layout = Layout(origin, 0, 32, ["x", "1"], ("b", "comment"), None)
+        >>> layout.comments = {1: (19, 27)}
+        >>> detail = LayoutDetail(layout, (b, "comment"))
+        >>> detail.tag, detail.start, detail.gaps, detail.end
+        ('a', "<a x='1'>", ('\n  ', '\n  ', '\n'), '</a>')
+        >>> detail.comments
+        {1: '<!--c-->'}
+
+    """
+
+    __slots__ = (
+        "comments",
+        "end",
+        "gaps",
+        "getter",
+        "names",
+        "sources",
+        "start",
+        "stored",
+        "tag",
+        "texts",
+        "values",
+    )
+
+    def __init__(self, layout: Layout, sources: tuple[Any, ...] | None = None) -> None:
+        origin = layout.origin
+        begin, after = layout.begin, layout.after
+        stop = origin.start_tag_end(begin)
+        #: The start tag exactly as written, from ``<`` to ``>`` (``/>`` for an empty element).
+        self.start = origin.slice(begin, stop)
+        #: The element's tag when it was read.
+        self.tag = self.start[1 : _TAG_NAME_END.search(self.start, 1).start()]  # type: ignore[union-attr]
+        attributes = layout.attributes
+        #: The attribute names and texts of the start tag, in order.
+        self.names: tuple[str, ...] = tuple(attributes[::2])
+        self.texts: tuple[str, ...] = tuple(attributes[1::2])
+        children = layout.children
+        #: What stood in each child slot: a child element's own :class:`Layout`, or the
+        #: comment node itself. A child carrying the same token is the same child.
+        self.sources: tuple[Any, ...] = (
+            sources
+            if sources is not None
+            else tuple([getattr(child, "layout", None) or child for child in children])
+        )
+        #: The exact text of each comment child, by child index.
+        self.comments: dict[int, str] = {}
+        #: The text between the start tag, each child and the end tag: one more than the
+        #: children. White space, and the raw text of an element with character data.
+        self.gaps: tuple[str, ...]
+        #: The end tag exactly as written, or ``""`` for an empty-element tag.
+        self.end: str
+        if stop == after:
+            self.gaps, self.end = ("",), ""
+        else:
+            closing = origin.end_tag_begin(stop, after)
+            self.end = origin.slice(closing, after)
+            gaps: list[str] = []
+            cursor = stop
+            spans = layout.comments or {}
+            for index, source in enumerate(self.sources):
+                span = spans.get(index)
+                if span is None:
+                    span = (source.begin, source.after)
+                else:
+                    self.comments[index] = origin.slice(*span)
+                gaps.append(origin.slice(cursor, span[0]))
+                cursor = span[1]
+            gaps.append(origin.slice(cursor, closing))
+            self.gaps = tuple(gaps)
+        #: The values the reader stored for ``names``, worked out for the element's class
+        #: by the writer (``None`` until then): a value that is still the same object (or
+        #: an equal one) was not changed, and its source text is written back.
+        self.values: tuple[Any, ...] | None = None
         #: For a typed element whose attributes all have fields: reads the element's
         #: values for ``names`` at once (``None`` otherwise).
         self.getter: Callable[[Any], tuple[Any, ...]] | None = None
@@ -149,35 +301,3 @@ class Layout:
         #: that stores the same fields, with ``values`` for its attributes, is unchanged
         #: (the writer's fast check).
         self.stored: Set[str] = frozenset()
-        #: The children the element was read with: while the element still holds this
-        #: very tuple, nothing below it changed.
-        self.children: tuple[Any, ...] = ()
-        #: The file's text, and where the element begins and ends in it (byte offsets).
-        self.origin: SourceText | None = None
-        self.begin = self.after = 0
-
-    def whole(self) -> str | None:
-        """The element's whole source text, from its start tag to its end tag, if known.
-
-        Example:
-            >>> layout = Layout("a", "<a>", ("",), "</a>", (), (), (), None)
-            >>> layout.origin, layout.begin, layout.after = SourceText(b"<a></a>"), 0, 7
-            >>> layout.whole()
-            '<a></a>'
-
-        """
-        origin = self.origin
-        return None if origin is None else origin.slice(self.begin, self.after)
-
-    def __repr__(self) -> str:
-        return f"Layout({self.start!r}, ...)"
-
-    def __getstate__(self) -> dict[str, Any]:
-        """Pickle without ``getter`` (it may be a lambda): the writer then compares values."""
-        state = {name: getattr(self, name) for name in self.__slots__}
-        state["getter"] = None
-        return state
-
-    def __setstate__(self, state: dict[str, Any]) -> None:
-        for name, value in state.items():
-            setattr(self, name, value)

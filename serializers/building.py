@@ -23,7 +23,7 @@ from mjcf_model.base import (
 )
 from mjcf_model.declaring import NodeInfo, tuple_getter
 from mjcf_model.errors import MjcfError, MjcfValueError
-from mjcf_model.layout import Layout
+from mjcf_model.layout import Layout, LayoutDetail
 from mjcf_model.registry import CLASS_BY_KEY
 from mjcf_model.values import Unparsed
 
@@ -92,8 +92,7 @@ def build_element(
         children: The already built child nodes.
         text: Character data, or ``None`` when there is none but white space.
         locate: Adds file, line and path to an error about this element.
-        layout: The element's source text: the node keeps it, and its ``values``
-            are set to the values the node holds for its ``names``.
+        layout: Where the element was read: the node keeps it.
         memo: One dict per document: each attribute text is converted once.
 
     Example:
@@ -103,12 +102,9 @@ def build_element(
     """
     cls = CLASS_BY_KEY.get(key) if key is not None else None
     if cls is None or cls.tag != tag:
-        generic = GenericElement(
+        return GenericElement(
             tag=tag, attributes=attributes, children=children, text=text, layout=layout
         )
-        if layout is not None:  # the map holds the very strings given
-            layout.values = tuple(generic.attributes.values())
-        return generic
     table = field_table(cls)
     fields: dict[str, Any] = {}
     extra: list[tuple[str, str]] = []
@@ -118,9 +114,7 @@ def build_element(
             extra.append((name, value))
         else:
             fields[field] = value
-    fields["attribute_order"] = (
-        layout.names if layout is not None else tuple([name for name, _ in attributes])
-    )
+    fields["attribute_order"] = tuple([name for name, _ in attributes])
     if extra:
         fields["extra"] = extra
     if children:
@@ -134,9 +128,7 @@ def build_element(
     except MjcfValueError:
         pass
     else:
-        if layout is None or not attributes:
-            return node
-        return _with_values(node, table, attributes, layout, not extra)
+        return node
     for name, value in attributes:  # only on the error path: find the values it cannot read
         field = table.get(name)
         if field is None:
@@ -149,8 +141,7 @@ def build_element(
                 problem = locate(problem)
             assert isinstance(problem, MjcfValueError)
             fields[field] = Unparsed(value, problem)
-    node = build_node(cls, fields)
-    return node if layout is None else _with_values(node, table, attributes, layout, not extra)
+    return build_node(cls, fields)
 
 
 #: Per typed class, each ``(name, text)`` attribute read in one document, as its field
@@ -163,9 +154,10 @@ _set_dict = object.__setattr__
 def read_typed(
     cls: type[TypedElement],
     attributes: list[str],
-    children: Sequence[Node],
+    children: tuple[Node, ...],
     layout: Layout,
     memo: ReadMemo,
+    names: dict[tuple[str, ...], tuple[str, ...]],
 ) -> TypedElement | None:
     """The typed node of an element read from text, or ``None`` if :func:`build_element` must.
 
@@ -180,13 +172,15 @@ def read_typed(
         cls: The element's typed class.
         attributes: Attribute names and texts, alternating, in source order.
         children: The already built child nodes.
-        layout: The element's source text (its ``names`` are the attribute names).
+        layout: Where the element was read.
         memo: One per document.
+        names: One per document: each tuple of attribute names, shared.
 
     Example:
         >>> from mjcf_model import Geom
-        >>> layout = Layout("geom", '<geom size="1"/>', ("",), "", ("size",), (), (), None)
-        >>> read_typed(Geom, ["size", "1"], [], layout, {}) == Geom(size=[1.0])
+        >>> from mjcf_model.layout import SourceText
+        >>> layout = Layout(SourceText(b'<geom size="1"/>'), 0, 16, ["size", "1"], (), None)
+        >>> read_typed(Geom, ["size", "1"], (), layout, {}, {}) == Geom(size=[1.0])
         True
 
     """
@@ -203,14 +197,13 @@ def read_typed(
                 return None
             known[pair] = found
         data[found[0]] = found[1]
-    data["attribute_order"] = layout.names
+    order = tuple(attributes[::2])
+    data["attribute_order"] = names.setdefault(order, order)
     if children:
-        data["children"] = tuple(children)
+        data["children"] = children
     data["layout"] = layout
     node = _new(cls)
     _set_dict(node, "__dict__", data)
-    if attributes:
-        _record_values(node, cls.__node_info__.table, layout)
     return node
 
 
@@ -220,71 +213,73 @@ def _read_value(info: NodeInfo, pair: tuple[str, str]) -> tuple[str, Any] | None
     field = info.table.get(name)
     if field is None:
         return None
-    converter = info.converters.get(field)
     try:
-        value = text if converter is None else converter(text)
-        checks = info.validators.get(field)
-        if checks is not None:
-            checks[0](None, checks[1], value)
+        value = _converted(info, field, text)
     except MjcfValueError:
         return None
     return None if value is None else (field, value)
 
 
-#: Fields set on a node after it is read (the root's folder), left out of ``Layout.stored``.
+def _converted(info: NodeInfo, field: str, text: str) -> Any:
+    """The value of ``field`` that ``text`` gives; raises what its converter raises."""
+    if field in info.plain_text:
+        return text  # expat gives only text XML can carry: nothing to check
+    converter = info.converters.get(field)
+    value = text if converter is None else converter(text)
+    checks = info.validators.get(field)
+    if checks is not None:
+        checks[0](None, checks[1], value)
+    return value
+
+
+#: Fields set on a node after it is read (the root's folder), left out of the stored fields.
 LATER_FIELDS = frozenset({"base_dir"})
-#: Per class, attribute names (all typed fields) and kind of content: a getter of their
-#: values as a tuple, and the fields such an element stores.
-_VALUE_GETTERS: dict[
-    tuple[type, tuple[str, ...], bool, bool],
-    tuple[Callable[[Any], tuple[Any, ...]], frozenset[str]],
-] = {}
-#: Past this many, the getters are forgotten (hostile text could make any number).
-_MAX_VALUE_GETTERS = 4096
 
 
-def _with_values(
-    node: TypedElement,
-    table: dict[str, str],
-    attributes: Sequence[tuple[str, str]],
-    layout: Layout,
-    all_typed: bool,
-) -> TypedElement:
-    """``node``, its layout given the values it holds for each of ``attributes``.
+def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout) -> tuple[Any, ...]:
+    """The values an element of class ``cls`` held for its attributes when it was read.
 
-    An attribute without a field (``all_typed`` false) holds the given text.
+    Worked out again from the texts read, as the reader works them out, and kept
+    in ``detail`` with the writer's fast check (:attr:`LayoutDetail.getter` and
+    :attr:`LayoutDetail.stored`, for a typed element whose attributes all have fields).
+
+    Example:
+        >>> from mjcf_model import Geom
+        >>> from mjcf_model.layout import SourceText
+        >>> text = b'<geom size="1" condim="x" colour="red"/>'
+        >>> flat = ["size", "1", "condim", "x", "colour", "red"]
+        >>> layout = Layout(SourceText(text), 0, len(text), flat, (), None)
+        >>> recorded_values(layout.detail(), Geom, layout)
+        ((1.0,), Unparsed('x'), 'red')
+
     """
-    if not all_typed:
-        layout.values = tuple(
-            [
-                value if field is None else getattr(node, field)
-                for field, value in [(table.get(name), value) for name, value in attributes]
-            ]
-        )
-        return node
-    _record_values(node, table, layout)
-    return node
-
-
-def _record_values(node: TypedElement, table: dict[str, str], layout: Layout) -> None:
-    """Give ``layout`` the values ``node`` holds for its attributes, and what it stores.
-
-    Every attribute of the layout has a field (``table`` maps it). The getter and
-    the set of stored fields are made once per class, attribute names and kind of
-    content, and shared.
-    """
-    data = node.__dict__
-    key = (type(node), layout.names, "children" in data, "text" in data)
-    known = _VALUE_GETTERS.get(key)
-    if known is None:
-        if len(_VALUE_GETTERS) >= _MAX_VALUE_GETTERS:
-            _VALUE_GETTERS.clear()
-        known = _VALUE_GETTERS[key] = (
-            tuple_getter(tuple(table[n] for n in layout.names)),
-            frozenset(data.keys() - LATER_FIELDS),
-        )
-    getter, stored = known
-    layout.values = getter(node)
-    if stored != data.keys():  # a value read as None (not stored): not the usual fields
-        stored = frozenset(data.keys() - LATER_FIELDS)
-    layout.getter, layout.stored = getter, stored
+    values = detail.values
+    if values is not None:
+        return values
+    if not issubclass(cls, TypedElement):
+        values = detail.values = detail.texts  # a generic element holds the very strings
+        return values
+    info = cls.__node_info__
+    table = info.table
+    found: list[Any] = []
+    for name, text in zip(detail.names, detail.texts, strict=True):
+        field = table.get(name)
+        if field is None:
+            found.append(text)  # kept in ``extra``
+            continue
+        try:
+            found.append(_converted(info, field, text))
+        except MjcfValueError:
+            found.append(Unparsed(text))  # equal to the one the node keeps
+    values = detail.values = tuple(found)
+    fields = tuple([table.get(name) or "" for name in detail.names])
+    if "" not in fields:
+        stored = {f for f, v in zip(fields, values, strict=True) if v is not None}
+        stored |= {"attribute_order", "layout"}
+        if layout.children:
+            stored.add("children")
+        if layout.text is not None:
+            stored.add("text")
+        detail.getter = tuple_getter(fields)
+        detail.stored = frozenset(stored)
+    return values

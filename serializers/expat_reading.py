@@ -21,7 +21,7 @@ from xml.parsers import expat
 
 from mjcf_model.base import AnyElement, Comment, GenericElement, Node, TypedElement
 from mjcf_model.errors import MjcfError, MjcfIncludeError, MjcfSecurityError, MjcfSyntaxError
-from mjcf_model.layout import DocumentText, Layout, SourceText
+from mjcf_model.layout import DocumentText, Layout, SourceText, start_tag_end
 from mjcf_model.namespaces import child_key, children_context
 from mjcf_model.nodes.root import Include
 from mjcf_model.registry import CLASS_BY_KEY
@@ -71,6 +71,8 @@ class Reader:
         self.memo: dict[tuple[Any, str], Any] = {}
         #: Per typed class, each ``(name, text)`` attribute read, as its field and value.
         self.known: ReadMemo = {}
+        #: Each tuple of attribute names read, once (elements share them).
+        self.names: dict[tuple[str, ...], tuple[str, ...]] = {}
         #: Where the root's start tag begins and its end tag ends, and where reading stopped.
         self.root_begin = self.root_end = 0
         #: The element being closed, for :meth:`locate`.
@@ -141,29 +143,18 @@ class Reader:
         raw = self.raw
         begin = self.parser.CurrentByteIndex
         stop = raw.find(b">", begin) + 1  # the tag's end, unless a value holds a ">"
-        text = self.ascii
-        start = text[begin:stop] if text is not None else self.source(begin, stop)
         stack = self.stack
         parent = stack[-1] if stack else None
         context = parent.context if parent is not None else None
         if flat:
             joined = "".join(flat)  # attribute names hold neither ">" nor white space
             if ">" in joined:
-                stop = _start_tag_end(raw, begin)
-                start = self.source(begin, stop)
+                stop = start_tag_end(raw, begin)
             # expat turns a tab or line break in a value into a space; tinyxml2 keeps
             # it. Only a tag written over lines or with tabs can hold one.
-            if " " in joined and ("\n" in start or "\t" in start or "\r" in start):
-                exact = self.exact_attributes(tag, context, flat, begin)
-                if exact is not flat:
-                    flat = exact
-                    stop = _start_tag_end(raw, begin)
-                    start = self.source(begin, stop)
-        if parent is not None:
-            cursor = parent.cursor
-            gap = text[cursor:begin] if text is not None else self.source(cursor, begin)
-        else:
-            gap = ""
+            if " " in joined and _BREAK.search(raw, begin, stop) is not None:
+                flat = self.exact_attributes(tag, context, flat, begin)
+        if parent is None:
             self.root_begin = begin
         step = _STEPS.get((context, tag))
         if step is None:
@@ -172,9 +163,7 @@ class Reader:
         if parent is None and self.include_context is not None:
             inner = self.include_context  # MuJoCo takes the root's children, whatever its tag
         stack.append(
-            OpenElement(
-                tag, flat, key, typed, inner, self.parser.CurrentLineNumber, begin, start, stop, gap
-            )
+            OpenElement(tag, flat, key, typed, inner, self.parser.CurrentLineNumber, begin, stop)
         )
 
     def exact_attributes(
@@ -200,44 +189,28 @@ class Reader:
         """Build the element being closed and give it to its parent (expat's handler)."""
         stack = self.stack
         item = stack.pop()
-        text = element_text(item.text, bool(item.children)) if item.text else None
-        names = tuple(item.attributes[::2])
-        if item.start.endswith("/>"):
-            layout = Layout(item.tag, item.start, _NO_GAPS, "", names, (), (), text, None)
-            after = item.cursor
+        children = tuple(item.children)
+        text = element_text(item.text, bool(children)) if item.text else None
+        stop = item.stop
+        if self.raw[stop - 2] == _SLASH:  # an empty-element tag: it ends there
+            after = stop
         else:
-            begin = self.parser.CurrentByteIndex
-            after = self.raw.index(b">", begin) + 1
-            source = self.ascii
-            if source is not None:
-                last = source[item.cursor : begin]
-                end_tag = source[begin:after]
-            else:
-                last = self.source(item.cursor, begin)
-                end_tag = self.source(begin, after)
-            layout = Layout(
-                item.tag,
-                item.start,
-                (*item.gaps, last),
-                end_tag,
-                names,
-                (),
-                tuple(item.sources),
-                text,
-                item.comments,
-            )
+            after = self.raw.index(b">", self.parser.CurrentByteIndex) + 1
+        layout = Layout(self.origin, item.begin, after, item.attributes, children, text)  # type: ignore[arg-type]
+        if item.comments is not None:
+            layout.comments = item.comments
         self.closing = item
         typed = item.typed
         node: AnyElement | None = None
         if typed is not None and text is None:
-            node = read_typed(typed, item.attributes, item.children, layout, self.known)
+            node = read_typed(typed, item.attributes, children, layout, self.known, self.names)
         if node is None:
             try:
                 node = build_element(
                     item.key,
                     item.tag,
                     item.pairs(),
-                    item.children,
+                    children,
                     text,
                     self.locate,
                     layout,
@@ -245,8 +218,7 @@ class Reader:
                 )
             except MjcfError as error:
                 raise self.locate(error) from None
-        layout.children = node.children
-        layout.origin, layout.begin, layout.after = self.origin, item.begin, after
+            layout.children = node.children
         if self.session.inline_includes and isinstance(node, Include):
             if not node.file:
                 raise MjcfIncludeError(
@@ -262,15 +234,13 @@ class Reader:
                 )
             )
         if stack:  # after the include's path is taken: the path counts its siblings so far
-            parent = stack[-1]
-            parent.add_child(item.gap, node, layout)
-            parent.cursor = after
+            stack[-1].add_child(node)
         else:
             self.top.append(node)
             self.root_end = after
 
     def comment(self, text: str) -> None:
-        """Keep a comment as a child, with its exact text (expat's handler)."""
+        """Keep a comment as a child; its exact text stays in the file's (expat's handler)."""
         node = Comment(text=text)
         if not self.stack:
             self.top.append(node)  # its text is kept in the root's document text
@@ -278,12 +248,10 @@ class Reader:
         parent = self.stack[-1]
         begin = self.parser.CurrentByteIndex
         after = self.raw.index(b"-->", begin + 4) + 3
-        if b"\r" in self.raw[begin:after]:  # expat gives the text with line feeds only
-            if parent.comments is None:
-                parent.comments = {}
-            parent.comments[len(parent.children)] = self.source(begin, after)
-        parent.add_child(self.source(parent.cursor, begin), node, node)
-        parent.cursor = after
+        if parent.comments is None:
+            parent.comments = {}
+        parent.comments[len(parent.children)] = (begin, after)
+        parent.add_child(node)
 
     def characters(self, data: str) -> None:
         """Note character data of the innermost open element (expat's handler)."""
@@ -384,17 +352,6 @@ class Reader:
         return MjcfSyntaxError(detail, file=self.filename, line=error.lineno, path=path)
 
 
-def _start_tag_end(raw: bytes, index: int) -> int:
-    """The offset after the ``>`` that ends the start tag at ``index`` (expat read it whole)."""
-    while True:
-        mark = _TAG_END_MARK.search(raw, index)
-        assert mark is not None
-        position = mark.start()
-        if raw[position] == ord(">"):
-            return position + 1
-        index = raw.index(raw[position : position + 1], position + 1) + 1
-
-
 def _step(context: str | None, tag: str) -> tuple[str | None, str | None, Any]:
     """A ``tag`` element in ``context``: its schema key, its children's context, its class.
 
@@ -416,7 +373,7 @@ def _step(context: str | None, tag: str) -> tuple[str | None, str | None, Any]:
 _STEPS: dict[tuple[str | None, str], tuple[str | None, str | None, Any]] = {}
 #: Past this many, the steps are forgotten (hostile text could make any number).
 _MAX_STEPS = 4096
-#: The gaps of an element with nothing inside (shared: most elements).
-_NO_GAPS = ("",)
-#: What ends a start tag, or opens a value that may hold a ``>``.
-_TAG_END_MARK = re.compile(b"[\"'>]")
+#: A tab or line break, inside a start tag.
+_BREAK = re.compile(b"[\t\n\r]")
+#: The byte of ``/``: a start tag that ends with ``/>`` is an empty element.
+_SLASH = ord("/")

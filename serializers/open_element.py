@@ -2,11 +2,11 @@
 
 :class:`OpenElement` holds what :class:`serializers.expat_reading.Reader` gathers
 between an element's start tag and its end tag: its attributes, its children and
-the source text around them.
+where its start tag stands in the text.
 
->>> item = OpenElement("geom", ["size", "0.1"], "geom", None, None, 1, 0, "<geom>", 6, "")
->>> item.children, item.start
-([], '<geom>')
+>>> item = OpenElement("geom", ["size", "0.1"], "geom", None, None, 1, 0, 16)
+>>> item.children, item.pairs()
+([], [('size', '0.1')])
 """
 
 from __future__ import annotations
@@ -27,13 +27,9 @@ class OpenElement:
         "children",
         "comments",
         "context",
-        "cursor",
-        "gap",
-        "gaps",
         "key",
         "line",
-        "sources",
-        "start",
+        "stop",
         "tag",
         "text",
         "typed",
@@ -48,9 +44,7 @@ class OpenElement:
         context: str | None,
         line: int,
         begin: int,
-        start: str,
-        cursor: int,
-        gap: str,
+        stop: int,
     ) -> None:
         self.tag = tag
         #: The attribute names and values in source order, alternating (as expat gives them).
@@ -60,32 +54,22 @@ class OpenElement:
         self.typed = typed
         self.context = context
         self.line = line
-        #: The byte offset of the start tag's ``<``.
+        #: The byte offset of the start tag's ``<``, and of what follows its ``>``.
         self.begin = begin
-        #: The start tag's source text.
-        self.start = start
-        #: The byte offset where the text not yet given to a gap or a child begins.
-        self.cursor = cursor
-        #: The source text between the previous sibling (or the parent's start tag) and this.
-        self.gap = gap
+        self.stop = stop
         #: The character data read, or ``None`` before any.
         self.text: list[str] | None = None
-        #: What the children need, made at the first child (most elements have none):
-        #: the children, the source text before each child, and each child's layout or
-        #: the comment node (:attr:`Layout.sources`).
+        #: The children read so far (most elements have none: a shared empty list).
         self.children: list[Node] = _NO_CHILDREN
-        self.gaps: list[str] = _NO_CHILDREN
-        self.sources: list[Any] = _NO_CHILDREN
-        #: The exact text of comment children that ``<!--text-->`` would not give back.
-        self.comments: dict[int, str] | None = None
+        #: Where each comment child begins and ends, by child index; ``None`` when none.
+        self.comments: dict[int, tuple[int, int]] | None = None
 
-    def add_child(self, gap: str, child: Node, source: Any) -> None:
-        """Note a child and the source text before it."""
+    def add_child(self, child: Node) -> None:
+        """Note a child."""
         if self.children is _NO_CHILDREN:
-            self.children, self.gaps, self.sources = [], [], []
-        self.gaps.append(gap)
-        self.children.append(child)
-        self.sources.append(source)
+            self.children = [child]
+        else:
+            self.children.append(child)
 
     def pairs(self) -> list[tuple[str, str]]:
         """The attributes as ``(name, value)`` pairs."""

@@ -5,6 +5,7 @@ from __future__ import annotations
 import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import Any
+from xml.sax.saxutils import quoteattr
 
 import attrs
 import pytest
@@ -14,19 +15,24 @@ from hypothesis import strategies as st
 from mjcf_model import Geom, Joint
 from mjcf_model.base import TypedElement
 from mjcf_model.declaring import xml_name
-from mjcf_model.layout import Layout
+from mjcf_model.layout import Layout, SourceText
 from mjcf_model.registry import CLASS_BY_KEY
 from mjcf_model.strategies import element_values
 from mjcf_model.values import Unparsed, format_value
 from serializers import from_etree, loads
-from serializers.building import build_element, read_typed
+from serializers.building import build_element, read_typed, recorded_values
 from tests.conftest import corpus_id, loading_corpus
 
 TYPED_CLASSES = sorted(set(CLASS_BY_KEY.values()), key=lambda cls: cls.__name__)
 
 
-def _layout(tag: str, names: tuple[str, ...]) -> Layout:
-    return Layout(tag, f"<{tag}/>", ("",), "", names, (), (), None)
+def _layout(tag: str, pairs: list[tuple[str, str]]) -> Layout:
+    """The layout of an empty element written with ``pairs``, as the reader makes it."""
+    attributes = "".join(f" {name}={quoteattr(text)}" for name, text in pairs)
+    written = f"<{tag}{attributes}/>".encode()
+    return Layout(
+        SourceText(written), 0, len(written), [p for pair in pairs for p in pair], (), None
+    )
 
 
 def _texts(cls: type[TypedElement], values: dict[str, Any]) -> list[tuple[str, str]]:
@@ -46,8 +52,8 @@ def test_fast_path_holds_what_the_field_converters_make(
     pairs = data.draw(st.permutations(_texts(cls, data.draw(element_values(cls)))))
     names = tuple(name for name, _ in pairs)
     flat = [part for pair in pairs for part in pair]
-    layout = _layout(cls.tag, names)
-    node = read_typed(cls, flat, [], layout, {})
+    layout = _layout(cls.tag, pairs)
+    node = read_typed(cls, flat, (), layout, {}, {})
     assert node is not None
     table = cls.__node_info__.table
     for field in attrs.fields(cls):
@@ -61,19 +67,25 @@ def test_fast_path_holds_what_the_field_converters_make(
             assert node.layout is layout
         else:
             assert getattr(node, field.name) == field.default, field.name
-    if names:  # the writer compares what the reader recorded
-        assert layout.values == tuple(getattr(node, table[name]) for name in names)
-        assert layout.stored == node.__dict__.keys()
+    if names:  # the writer works out again what the reader read, and compares
+        detail = layout.detail()
+        recorded = recorded_values(detail, cls, layout)
+        assert recorded == tuple(getattr(node, table[name]) for name in names)
+        assert detail.stored == node.__dict__.keys()
     key = cls.__node_info__.keys[0]
-    general = build_element(key, cls.tag, pairs, [], None, None, _layout(cls.tag, names))
+    general = build_element(key, cls.tag, pairs, [], None, None, _layout(cls.tag, pairs))
     assert node == general and vars(node).keys() == vars(general).keys()
 
 
 def test_fast_path_leaves_unknown_attributes_and_unreadable_values_to_the_general_builder() -> None:
     """An attribute without a field, or a value its field cannot read, gives no node."""
-    assert read_typed(Geom, ["colour", "red"], [], _layout("geom", ("colour",)), {}) is None
-    assert read_typed(Geom, ["size", "1 x"], [], _layout("geom", ("size",)), {}) is None
-    assert read_typed(Joint, ["type", "bend"], [], _layout("joint", ("type",)), {}) is None
+    for cls, name, text in (
+        (Geom, "colour", "red"),
+        (Geom, "size", "1 x"),
+        (Joint, "type", "bend"),
+    ):
+        layout = _layout(cls.tag, [(name, text)])
+        assert read_typed(cls, [name, text], (), layout, {}, {}) is None
 
 
 def test_a_document_keeps_unknown_attributes_and_unreadable_values() -> None:
