@@ -32,6 +32,7 @@ import attrs
 from mjcf_model.values import (
     float_key,
     one_of,
+    text_reader,
     to_bool,
     to_float,
     to_floats,
@@ -106,8 +107,10 @@ class NodeInfo:
         "keys",
         "names",
         "not_compared",
+        "plain_names",
         "plain_text",
         "rank",
+        "readers",
         "required",
         "table",
         "tag",
@@ -162,6 +165,34 @@ class NodeInfo:
             for field in table.values()
             if self.converters.get(field) is to_str and field not in self.validators
         )
+        #: The MJCF names of ``plain_text``, mapped to their fields.
+        self.plain_names: dict[str, str] = {
+            name: field for name, field in table.items() if field in self.plain_text
+        }
+        #: Each MJCF attribute, mapped to its field and what reads its value from text
+        #: (converted and validated; raises :class:`~mjcf_model.errors.MjcfValueError`).
+        self.readers: dict[str, tuple[str, Callable[[str], Any]]] = {
+            name: (field, self._text_reader(field)) for name, field in table.items()
+        }
+
+    def _text_reader(self, field: str) -> Callable[[str], Any]:
+        converter = self.converters.get(field)
+        read = _unchanged if converter is None else text_reader(converter)
+        checks = self.validators.get(field)
+        if checks is None:
+            return read
+        validator, attribute = checks
+
+        def read_and_check(text: str) -> Any:
+            value = read(text)
+            validator(None, attribute, value)
+            return value
+
+        return read_and_check
+
+
+def _unchanged(text: str) -> str:
+    return text
 
 
 def _converted_default(field: attrs.Attribute[Any]) -> Any:

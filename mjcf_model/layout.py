@@ -8,13 +8,13 @@ node's value: ``==``, ``hash`` and the dict form ignore it.
 
 Reading records only what costs nothing to keep; the pieces the writer needs
 for an element that did change (its start tag, the gaps between its children,
-its end tag) are cut from the text when first asked for (:meth:`Layout.detail`).
+its end tag) are cut from the text when first asked for (:func:`detail`).
 A transform that rebuilds an element keeps its layout (``attrs.evolve`` copies
 it), so the writer tells what changed by comparing: the values read with the
 element's own, and each child with the child that stood there.
 
 >>> layout = Layout(SourceText(b"<a>\n</a>"), 0, 8, [], (), None)
->>> layout.whole(), layout.detail().gaps, layout.detail().end
+>>> layout.whole(), detail(layout).gaps, detail(layout).end
 ('<a>\n</a>', ('\n',), '</a>')
 """
 
@@ -22,9 +22,9 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Set
-from typing import Any
+from typing import Any, NamedTuple
 
-__all__ = ["DocumentText", "Layout", "LayoutDetail", "SourceText"]
+__all__ = ["DocumentText", "Layout", "LayoutDetail", "SourceText", "detail", "start_tag_end"]
 
 
 class SourceText:
@@ -38,13 +38,28 @@ class SourceText:
 
     """
 
-    __slots__ = ("raw", "text")
+    __slots__ = ("details", "document", "raw", "root_begin", "text")
 
     def __init__(self, raw: bytes) -> None:
         #: The bytes read, when they are not ASCII (offsets are byte offsets), else ``b""``.
         self.raw = b"" if raw.isascii() else raw
         #: The text, when the bytes are ASCII (byte offsets are then text offsets).
         self.text = raw.decode("ascii") if not self.raw else ""
+        #: The text of the file around its root element, and where the root begins.
+        self.document: DocumentText | None = None
+        self.root_begin = -1
+        #: The :class:`LayoutDetail` of each element the writer asked for, by its offset.
+        self.details: dict[int, LayoutDetail] = {}
+
+    def __getstate__(self) -> dict[str, Any]:
+        """Pickle without the details (they may hold getters): they are worked out again."""
+        state = {name: getattr(self, name) for name in self.__slots__}
+        state["details"] = {}
+        return state
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        for name, value in state.items():
+            setattr(self, name, value)
 
     def slice(self, begin: int, after: int) -> str:
         """The text between two byte offsets."""
@@ -132,57 +147,35 @@ class DocumentText:
         self.after_comments = after_comments
 
 
-class Layout:
+class Layout(NamedTuple):
     """Where one element was read, and what it was read with.
 
-    Made by the reader, one per element; shared, never changed afterwards (but
-    for the :meth:`detail` it keeps once worked out).
+    Made by the reader, one per element (a tuple: cheap to make, never changed).
+    The pieces the writer edits are worked out by :func:`detail` when first
+    asked for, and kept with the file's text.
 
     Example:
         >>> layout = Layout(SourceText(b'<geom size="1.0"/>'), 0, 18, ["size", "1.0"], (), None)
-        >>> layout.detail().start, layout.detail().names
+        >>> detail(layout).start, detail(layout).names
         ('<geom size="1.0"/>', ('size',))
 
     """
 
-    __slots__ = (
-        "_detail",
-        "after",
-        "attributes",
-        "begin",
-        "children",
-        "comments",
-        "document",
-        "origin",
-        "text",
-    )
-
-    def __init__(
-        self,
-        origin: SourceText,
-        begin: int,
-        after: int,
-        attributes: list[str],
-        children: tuple[Any, ...],
-        text: str | None,
-    ) -> None:
-        #: The file's text, and where the element begins and ends in it (byte offsets).
-        self.origin = origin
-        self.begin = begin
-        self.after = after
-        #: The attribute names and texts as read, alternating, in source order (never
-        #: changed: the reader's own list).
-        self.attributes = attributes
-        #: The children the element was read with: while the element still holds this
-        #: very tuple, nothing below it changed.
-        self.children = children
-        #: The element's ``text`` when it was read.
-        self.text = text
-        #: Where each comment child begins and ends, by child index; ``None`` when none.
-        self.comments: dict[int, tuple[int, int]] | None = None
-        #: For the root element: the text of the file around it.
-        self.document: DocumentText | None = None
-        self._detail: LayoutDetail | None = None
+    #: The file's text.
+    origin: SourceText
+    #: Where the element begins and ends in it (byte offsets).
+    begin: int
+    after: int
+    #: The attribute names and texts as read, alternating, in source order (the
+    #: reader's own list, never changed).
+    attributes: list[str]
+    #: The children the element was read with: while the element still holds this
+    #: very tuple, nothing below it changed.
+    children: tuple[Any, ...]
+    #: The element's ``text`` when it was read.
+    text: str | None
+    #: Where each comment child begins and ends, by child index; ``None`` when none.
+    comments: dict[int, tuple[int, int]] | None = None
 
     def whole(self) -> str:
         """The element's whole source text, from its start tag to its end tag.
@@ -194,25 +187,29 @@ class Layout:
         """
         return self.origin.slice(self.begin, self.after)
 
-    def detail(self) -> LayoutDetail:
-        """The pieces of the element's text, cut once and kept."""
-        detail = self._detail
-        if detail is None:
-            detail = self._detail = LayoutDetail(self)
-        return detail
+    def document(self) -> DocumentText | None:
+        """For the root element of its file, the text of the file around it."""
+        origin = self.origin
+        return origin.document if origin.root_begin == self.begin else None
 
     def __repr__(self) -> str:
         return f"Layout({self.whole()[:40]!r}, ...)"
 
-    def __getstate__(self) -> dict[str, Any]:
-        """Pickle without the detail (it may hold getters): it is worked out again."""
-        state = {name: getattr(self, name) for name in self.__slots__}
-        state["_detail"] = None
-        return state
 
-    def __setstate__(self, state: dict[str, Any]) -> None:
-        for name, value in state.items():
-            setattr(self, name, value)
+def detail(layout: Layout) -> LayoutDetail:
+    r"""The pieces of the element's text, cut once and kept with the file's text.
+
+    Example:
+        >>> layout = Layout(SourceText(b"<a>\n</a>"), 0, 8, [], (), None)
+        >>> detail(layout).gaps, detail(layout) is detail(layout)
+        (('\n',), True)
+
+    """
+    details = layout.origin.details
+    found = details.get(layout.begin)
+    if found is None:
+        found = details[layout.begin] = LayoutDetail(layout)
+    return found
 
 
 class LayoutDetail:
@@ -221,12 +218,11 @@ class LayoutDetail:
     Example:
         >>> origin = SourceText(b"<a x='1'>\n  <b/>\n  <!--c-->\n</a>")
         >>> b = Layout(origin, 12, 16, [], (), None)
-        >>> layout = Layout(origin, 0, 32, ["x", "1"], ("b", "comment"), None)
-        >>> layout.comments = {1: (19, 27)}
-        >>> detail = LayoutDetail(layout, (b, "comment"))
-        >>> detail.tag, detail.start, detail.gaps, detail.end
+        >>> layout = Layout(origin, 0, 32, ["x", "1"], ("b", "comment"), None, {1: (19, 27)})
+        >>> pieces = LayoutDetail(layout, (b, "comment"))
+        >>> pieces.tag, pieces.start, pieces.gaps, pieces.end
         ('a', "<a x='1'>", ('\n  ', '\n  ', '\n'), '</a>')
-        >>> detail.comments
+        >>> pieces.comments
         {1: '<!--c-->'}
 
     """

@@ -18,9 +18,10 @@ the same double, so MuJoCo compiles the written model bit for bit the same.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
-from collections.abc import Collection, Iterable, Iterator
+from collections.abc import Callable, Collection, Iterable, Iterator
 from typing import Any
 
 import numpy as np
@@ -35,11 +36,14 @@ __all__ = [
     "Value",
     "check_name",
     "check_text",
+    "float_from_text",
     "float_key",
+    "floats_from_text",
     "format_float",
     "format_value",
     "one_of",
     "plain_value",
+    "text_reader",
     "to_bool",
     "to_float",
     "to_floats",
@@ -139,30 +143,48 @@ _ONLY_INTS = frozenset({int})
 
 def _floats(value: object, lo: int, hi: int | None) -> Floats:
     items: Floats
+    if type(value) is str:
+        return floats_from_text(lo, hi, value)
     if type(value) is tuple and value and set(map(type, value)) <= _ONLY_FLOATS:
         items = _one_nan(value)  # already floats (a transform's output): checked in C
-    elif type(value) is str:
-        # ``float`` reads one token in time linear in its length; no regular
-        # expression ever sees attribute text (see tests/test_hostile.py).
-        try:
-            if len(value) > _CHUNK:
-                items = tuple(f for chunk in _chunks(value) for f in map(float, chunk.split()))
-            else:
-                items = tuple(map(float, value.split()))
-        except ValueError:
-            bad = next(t for t in value.split() if not _reads_as_float(t))
-            raise MjcfValueError(f"expected a number, found {_shortened(bad)!r}") from None
-        if "n" in value or "N" in value:  # every spelling of NaN has an n; most text none
-            items = _one_nan(items)
     elif type(value) is Unparsed:
         return value  # type: ignore[return-value]
     else:
         if isinstance(value, (int, float)) and not isinstance(value, bool):
             value = (value,)
         items = tuple(_parse_float(t, value) for t in _tokens(value))
+    return _counted(items, lo, hi, items)
+
+
+def floats_from_text(lo: int, hi: int | None, text: str) -> Floats:
+    """Read ``lo`` to ``hi`` floats (``hi`` ``None``: any number) from attribute text.
+
+    The text path of every float converter; readers call it directly.
+
+    Example:
+        >>> floats_from_text(1, 3, "0.1 2"), floats_from_text(1, 1, "nan")
+        ((0.1, 2.0), (nan,))
+
+    """
+    # ``float`` reads one token in time linear in its length; no regular
+    # expression ever sees attribute text (see tests/test_hostile.py).
+    try:
+        if len(text) > _CHUNK:
+            items = tuple(f for chunk in _chunks(text) for f in map(float, chunk.split()))
+        else:
+            items = tuple(map(float, text.split()))
+    except ValueError:
+        bad = next(t for t in text.split() if not _reads_as_float(t))
+        raise MjcfValueError(f"expected a number, found {_shortened(bad)!r}") from None
+    if "n" in text or "N" in text:  # every spelling of NaN has an n; most text none
+        items = _one_nan(items)
+    return _counted(items, lo, hi, text)
+
+
+def _counted(items: Floats, lo: int, hi: int | None, found: object) -> Floats:
+    """``items``, or the error saying how many numbers were expected."""
     n = len(items)
     if n < lo or (hi is not None and n > hi):
-        found = value if isinstance(value, str) else items
         raise MjcfValueError(
             f"expected {_count_phrase(lo, hi)}, found {n} in {_shortened(found)!r}"
         )
@@ -341,11 +363,22 @@ def to_float(value: str | float | Unparsed | None) -> float | None:
     if type(value) is float:
         return NAN if value != value else value
     if isinstance(value, str):
-        (item,) = _floats(value, 1, 1)
-        return item
+        return float_from_text(value)
     if type(value) is Unparsed:
         return value  # type: ignore[return-value]
     return _parse_float(value, value)
+
+
+def float_from_text(text: str) -> float:
+    """Read one float from attribute text (the text path of :func:`to_float`).
+
+    Example:
+        >>> float_from_text(" 1e-3 ")
+        0.001
+
+    """
+    (item,) = floats_from_text(1, 1, text)
+    return item
 
 
 def to_int(value: str | int | Unparsed | None) -> int | None:
@@ -448,6 +481,31 @@ def to_vec1to3(value: object) -> Floats | None:
 def to_vec1to5(value: object) -> Floats | None:
     """One to five floats (``solimp``: MuJoCo fills missing values from defaults)."""
     return None if value is None else _floats(value, 1, 5)
+
+
+#: The text path of each float converter, for readers that only ever pass text.
+_TEXT_READERS: dict[Callable[[Any], Any], Callable[[str], Any]] = {
+    to_float: float_from_text,
+    to_floats: functools.partial(floats_from_text, 0, None),
+    to_vec2: functools.partial(floats_from_text, 2, 2),
+    to_vec3: functools.partial(floats_from_text, 3, 3),
+    to_vec4: functools.partial(floats_from_text, 4, 4),
+    to_vec6: functools.partial(floats_from_text, 6, 6),
+    to_vec1to2: functools.partial(floats_from_text, 1, 2),
+    to_vec1to3: functools.partial(floats_from_text, 1, 3),
+    to_vec1to5: functools.partial(floats_from_text, 1, 5),
+}
+
+
+def text_reader(converter: Callable[[Any], Any]) -> Callable[[str], Any]:
+    """What ``converter`` does to attribute text, without its checks for other types.
+
+    Example:
+        >>> text_reader(to_vec3)("0 0 1"), text_reader(to_int)("2")
+        ((0.0, 0.0, 1.0), 2)
+
+    """
+    return _TEXT_READERS.get(converter, converter)
 
 
 class OneOf:

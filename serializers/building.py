@@ -21,7 +21,7 @@ from mjcf_model.base import (
     build_node,
     field_table,
 )
-from mjcf_model.declaring import NodeInfo, tuple_getter
+from mjcf_model.declaring import tuple_getter
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.layout import Layout, LayoutDetail
 from mjcf_model.registry import CLASS_BY_KEY
@@ -187,15 +187,28 @@ def read_typed(
     known = memo.get(cls)
     if known is None:
         known = memo[cls] = {}
+    info = cls.__node_info__
+    plain, readers = info.plain_names, info.readers
     data: dict[str, Any] = {}
     texts = iter(attributes)
-    for pair in zip(texts, texts, strict=True):
+    for name, text in zip(texts, texts):  # noqa: B905 (expat gives names and texts in pairs)
+        field = plain.get(name)
+        if field is not None:
+            data[field] = text  # expat gives only text XML can carry: nothing to check
+            continue
+        pair = (name, text)
         found = known.get(pair)
         if found is None:
-            found = _read_value(cls.__node_info__, pair)
-            if found is None:
+            reading = readers.get(name)
+            if reading is None:
+                return None  # an attribute without a field
+            try:
+                value = reading[1](text)
+            except MjcfValueError:
+                return None  # kept verbatim, and explained, by build_element
+            if value is None:
                 return None
-            known[pair] = found
+            found = known[pair] = (reading[0], value)
         data[found[0]] = found[1]
     order = tuple(attributes[::2])
     data["attribute_order"] = names.setdefault(order, order)
@@ -205,31 +218,6 @@ def read_typed(
     node = _new(cls)
     _set_dict(node, "__dict__", data)
     return node
-
-
-def _read_value(info: NodeInfo, pair: tuple[str, str]) -> tuple[str, Any] | None:
-    """The field and the value one attribute text gives, or ``None`` if it gives none."""
-    name, text = pair
-    field = info.table.get(name)
-    if field is None:
-        return None
-    try:
-        value = _converted(info, field, text)
-    except MjcfValueError:
-        return None
-    return None if value is None else (field, value)
-
-
-def _converted(info: NodeInfo, field: str, text: str) -> Any:
-    """The value of ``field`` that ``text`` gives; raises what its converter raises."""
-    if field in info.plain_text:
-        return text  # expat gives only text XML can carry: nothing to check
-    converter = info.converters.get(field)
-    value = text if converter is None else converter(text)
-    checks = info.validators.get(field)
-    if checks is not None:
-        checks[0](None, checks[1], value)
-    return value
 
 
 #: Fields set on a node after it is read (the root's folder), left out of the stored fields.
@@ -245,11 +233,11 @@ def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout)
 
     Example:
         >>> from mjcf_model import Geom
-        >>> from mjcf_model.layout import SourceText
+        >>> from mjcf_model.layout import SourceText, detail
         >>> text = b'<geom size="1" condim="x" colour="red"/>'
         >>> flat = ["size", "1", "condim", "x", "colour", "red"]
         >>> layout = Layout(SourceText(text), 0, len(text), flat, (), None)
-        >>> recorded_values(layout.detail(), Geom, layout)
+        >>> recorded_values(detail(layout), Geom, layout)
         ((1.0,), Unparsed('x'), 'red')
 
     """
@@ -268,7 +256,7 @@ def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout)
             found.append(text)  # kept in ``extra``
             continue
         try:
-            found.append(_converted(info, field, text))
+            found.append(info.readers[name][1](text))
         except MjcfValueError:
             found.append(Unparsed(text))  # equal to the one the node keeps
     values = detail.values = tuple(found)

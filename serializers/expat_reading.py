@@ -55,6 +55,7 @@ class Reader:
     def __init__(self, filename: str, session: Session, include_context: str | None) -> None:
         self.filename = filename
         self.session = session
+        self.inline_includes = session.inline_includes
         #: For an included file, the context its root's children are read in.
         self.include_context = include_context
         self.stack: list[OpenElement] = []
@@ -71,6 +72,8 @@ class Reader:
         self.memo: dict[tuple[Any, str], Any] = {}
         #: Per typed class, each ``(name, text)`` attribute read, as its field and value.
         self.known: ReadMemo = {}
+        #: Whether the text holds a tab or line break anywhere (a start tag may hold one).
+        self.breaks = True
         #: Each tuple of attribute names read, once (elements share them).
         self.names: dict[tuple[str, ...], tuple[str, ...]] = {}
         #: Where the root's start tag begins and its end tag ends, and where reading stopped.
@@ -152,7 +155,7 @@ class Reader:
                 stop = start_tag_end(raw, begin)
             # expat turns a tab or line break in a value into a space; tinyxml2 keeps
             # it. Only a tag written over lines or with tabs can hold one.
-            if " " in joined and _BREAK.search(raw, begin, stop) is not None:
+            if " " in joined and self.breaks and _BREAK.search(raw, begin, stop) is not None:
                 flat = self.exact_attributes(tag, context, flat, begin)
         if parent is None:
             self.root_begin = begin
@@ -196,15 +199,15 @@ class Reader:
             after = stop
         else:
             after = self.raw.index(b">", self.parser.CurrentByteIndex) + 1
-        layout = Layout(self.origin, item.begin, after, item.attributes, children, text)  # type: ignore[arg-type]
-        if item.comments is not None:
-            layout.comments = item.comments
-        self.closing = item
+        layout = _new_layout(
+            Layout, (self.origin, item.begin, after, item.attributes, children, text, item.comments)
+        )
         typed = item.typed
         node: AnyElement | None = None
         if typed is not None and text is None:
             node = read_typed(typed, item.attributes, children, layout, self.known, self.names)
         if node is None:
+            self.closing = item
             try:
                 node = build_element(
                     item.key,
@@ -218,8 +221,9 @@ class Reader:
                 )
             except MjcfError as error:
                 raise self.locate(error) from None
-            layout.children = node.children
-        if self.session.inline_includes and isinstance(node, Include):
+            if node.children is not children:  # the layout holds the tuple the node holds
+                node.__dict__["layout"] = layout._replace(children=node.children)
+        if self.inline_includes and isinstance(node, Include):
             if not node.file:
                 raise MjcfIncludeError(
                     "<include> needs a 'file' attribute",
@@ -283,6 +287,9 @@ class Reader:
             self.origin = SourceText(raw)
             if not self.origin.raw:
                 self.ascii = self.origin.text
+            self.breaks = _BREAK.search(raw) is not None
+            if not _may_hold_text(raw):
+                self.parser.CharacterDataHandler = None  # white space alone: nothing to keep
             self.parser.Parse(raw, True)
             self.record_document(len(raw))
         except expat.ExpatError as error:
@@ -326,7 +333,9 @@ class Reader:
         if not isinstance(root, (TypedElement, GenericElement)) or root.layout is None:
             return
         count = self.top.index(root)
-        root.layout.document = DocumentText(
+        origin = root.layout.origin
+        origin.root_begin = root.layout.begin
+        origin.document = DocumentText(
             self.source(0, self.root_begin),
             self.source(self.root_end, stop),
             tuple(comments[:count]),
@@ -373,7 +382,28 @@ def _step(context: str | None, tag: str) -> tuple[str | None, str | None, Any]:
 _STEPS: dict[tuple[str | None, str], tuple[str | None, str | None, Any]] = {}
 #: Past this many, the steps are forgotten (hostile text could make any number).
 _MAX_STEPS = 4096
+#: Makes a layout from a tuple of its fields (in C: one is made per element).
+_new_layout = tuple.__new__
 #: A tab or line break, inside a start tag.
 _BREAK = re.compile(b"[\t\n\r]")
+
+
+def _may_hold_text(raw: bytes) -> bool:
+    r"""Whether the text may hold character data other than white space.
+
+    Such data can only follow the ``>`` that ends markup, or sit in a CDATA
+    section: with the white space taken out, every ``>`` of a file without it is
+    followed by ``<`` or ends the file. A ``>`` inside a value says "may": harmless.
+
+    Example:
+        >>> _may_hold_text(b"<a>\n  <b/>\n</a>"), _may_hold_text(b"<a> x </a>")
+        (False, True)
+
+    """
+    if b"<![CDATA[" in raw:
+        return True
+    squeezed = raw.translate(None, b" \t\r\n")
+    closing = squeezed.count(b">")
+    return closing != squeezed.count(b"><") + squeezed.endswith(b">")
 #: The byte of ``/``: a start tag that ends with ``/>`` is an empty element.
 _SLASH = ord("/")

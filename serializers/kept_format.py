@@ -19,7 +19,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from mjcf_model.base import AnyElement, Comment, Node, attribute_items
-from mjcf_model.layout import Layout, LayoutDetail
+from mjcf_model.layout import Layout, LayoutDetail, detail
 from mjcf_model.values import Value, format_value
 from serializers.building import LATER_FIELDS, recorded_values
 from serializers.canonical import (
@@ -53,11 +53,11 @@ class _Style:
         self.newline = "\n"
         #: One level of indentation.
         self.unit = "  "
-        gaps = root.detail().gaps
+        gaps = detail(root).gaps
         if not any("\n" in gap for gap in gaps):
             self.newline = self.unit = ""
             return
-        document = root.document
+        document = root.document()
         margin = _indent_after(document.before) if document is not None else ""
         for gap in gaps[:-1]:
             line = _line_start(gap)
@@ -101,7 +101,7 @@ def write_kept(root: AnyElement, out: list[str]) -> None:
     style = _Style(layout)
     children = root.children
     before, after = "", style.newline
-    document = layout.document
+    document = layout.document()
     if document is not None:
         lead, trail = document.before_comments, document.after_comments
         inner = len(children) - len(trail)
@@ -114,7 +114,7 @@ def write_kept(root: AnyElement, out: list[str]) -> None:
             children = children[len(lead) : inner]
     out.append(before)
     stack: list[Any] = [after]
-    if root.tag == layout.detail().tag:
+    if root.tag == detail(layout).tag:
         _open(root, layout, children, out, stack, style)
     else:
         stack.append(root)
@@ -127,7 +127,7 @@ def write_kept(root: AnyElement, out: list[str]) -> None:
         else:
             element = checked_element(item)
             kept = element.layout
-            if kept is not None and element.tag == kept.detail().tag:
+            if kept is not None and element.tag == detail(kept).tag:
                 _open(element, kept, element.children, out, stack, style)
             else:
                 margin = _current_indent(out)
@@ -150,13 +150,13 @@ def _open(
     An element that holds the children it was read with, with its own start tag
     and text unchanged, is written as its source text at once.
     """
-    detail = layout.detail()
-    start = _start_tag(element, layout, detail)
+    cut = detail(layout)
+    start = _start_tag(element, layout, cut)
     same_text = element.text is layout.text or element.text == layout.text
-    if children is layout.children and same_text and start is detail.start:
+    if children is layout.children and same_text and start is cut.start:
         out.append(layout.whole())
         return
-    sources = detail.sources
+    sources = cut.sources
     count = len(sources)
     if same_text and len(children) == count:
         for child, source in zip(children, sources, strict=True):
@@ -164,9 +164,9 @@ def _open(
                 break
         else:
             out.append(start)
-            gaps = detail.gaps
-            comments = detail.comments
-            stack.append(detail.end)
+            gaps = cut.gaps
+            comments = cut.comments
+            stack.append(cut.end)
             stack.append(gaps[count])
             for index in range(count - 1, -1, -1):
                 child = children[index]
@@ -176,8 +176,8 @@ def _open(
                     stack.append(child)
                 stack.append(gaps[index])
             return
-    pieces = _changed_content(element, layout, detail, children, _current_indent(out), style)
-    end = detail.end
+    pieces = _changed_content(element, layout, cut, children, _current_indent(out), style)
+    end = cut.end
     if not end and len(pieces) > 1:  # an empty-element tag now holds something
         start, end = start[:-2].rstrip() + ">", f"</{element.tag}>"
     out.append(start)
@@ -188,7 +188,7 @@ def _open(
 def _changed_content(
     element: AnyElement,
     layout: Layout,
-    detail: LayoutDetail,
+    cut: LayoutDetail,
     children: tuple[Node, ...],
     indent: str,
     style: _Style,
@@ -199,16 +199,16 @@ def _changed_content(
     removed, the one with the most line breaks: no blank line is lost); an added
     child gets a line of its own, indented as its siblings.
     """
-    gaps = list(detail.gaps)
+    gaps = list(cut.gaps)
     text = element.text
     if not (text is layout.text or text == layout.text):
         gaps = [gap[len(gap.rstrip()) :] for gap in gaps]  # the old text goes
         if text is not None:
             gaps[0] = text.translate(TEXT_ESCAPES) + gaps[0]
-    sources = detail.sources
+    sources = cut.sources
     count = len(sources)
     slots = {id(source): index for index, source in enumerate(sources)}
-    comments = detail.comments
+    comments = cut.comments
     added = _added_gap(gaps, count, indent, style)
     pieces: list[Any] = []
     last = -1
@@ -245,26 +245,26 @@ def _added_gap(gaps: list[str], count: int, indent: str, style: _Style) -> str:
     return style.newline + indent + style.unit
 
 
-def _start_tag(element: AnyElement, layout: Layout, detail: LayoutDetail) -> str:
+def _start_tag(element: AnyElement, layout: Layout, cut: LayoutDetail) -> str:
     """The recorded start tag, with the attributes changed since edited in place."""
-    values = recorded_values(detail, type(element), layout)
-    getter = detail.getter
+    values = recorded_values(cut, type(element), layout)
+    getter = cut.getter
     stored = element.__dict__.keys()
     if (
         getter is not None
-        and (stored == detail.stored or stored - LATER_FIELDS == detail.stored)
+        and (stored == cut.stored or stored - LATER_FIELDS == cut.stored)
         and getter(element) == values
     ):
-        return detail.start  # the fields stored and their values are the ones read
+        return cut.start  # the fields stored and their values are the ones read
     items = attribute_items(element)
-    names = detail.names
+    names = cut.names
     if len(items) == len(names):
         for (name, value), recorded_name, recorded in zip(items, names, values, strict=True):
             if name != recorded_name or (value is not recorded and value != recorded):
                 break
         else:
-            return detail.start
-    return _edited_start(detail, items)
+            return cut.start
+    return _edited_start(cut, items)
 
 
 def _attribute_spans(start: str, position: int) -> Iterator[tuple[int, str, int, int]]:
@@ -289,18 +289,18 @@ def _attribute_spans(start: str, position: int) -> Iterator[tuple[int, str, int,
         position = close + 1
 
 
-def _edited_start(detail: LayoutDetail, items: list[tuple[str, Value]]) -> str:
+def _edited_start(cut: LayoutDetail, items: list[tuple[str, Value]]) -> str:
     """The recorded start tag with ``items`` as its attributes.
 
     A changed value is replaced inside its quotes (the quote kept), a removed
     attribute goes with the white space before it, and an added one is written
     after the last attribute, as in the canonical form.
     """
-    start = detail.start
+    start = cut.start
     current = dict(items)
-    assert detail.values is not None
-    recorded = dict(zip(detail.names, detail.values, strict=True))
-    position = 1 + len(detail.tag)
+    assert cut.values is not None
+    recorded = dict(zip(cut.names, cut.values, strict=True))
+    position = 1 + len(cut.tag)
     pieces = [start[:position]]
     for begin, name, value_start, value_end in _attribute_spans(start, position):
         position = value_end + 1

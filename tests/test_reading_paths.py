@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 from mjcf_model import Geom, Joint
 from mjcf_model.base import TypedElement
 from mjcf_model.declaring import xml_name
-from mjcf_model.layout import Layout, SourceText
+from mjcf_model.layout import Layout, SourceText, detail
 from mjcf_model.registry import CLASS_BY_KEY
 from mjcf_model.strategies import element_values
 from mjcf_model.values import Unparsed, format_value
@@ -68,10 +68,10 @@ def test_fast_path_holds_what_the_field_converters_make(
         else:
             assert getattr(node, field.name) == field.default, field.name
     if names:  # the writer works out again what the reader read, and compares
-        detail = layout.detail()
-        recorded = recorded_values(detail, cls, layout)
+        cut = detail(layout)
+        recorded = recorded_values(cut, cls, layout)
         assert recorded == tuple(getattr(node, table[name]) for name in names)
-        assert detail.stored == node.__dict__.keys()
+        assert cut.stored == node.__dict__.keys()
     key = cls.__node_info__.keys[0]
     general = build_element(key, cls.tag, pairs, [], None, None, _layout(cls.tag, pairs))
     assert node == general and vars(node).keys() == vars(general).keys()
@@ -113,3 +113,34 @@ def test_corpus_reads_as_elementtree_reads_it(path: Path) -> None:
     tree = ET.fromstring(path.read_bytes(), parser)
     model = loads(ET.tostring(tree))
     assert model == from_etree(tree)
+
+
+@pytest.mark.parametrize(
+    "inner",
+    [
+        "<geom/>x",  # after an empty-element tag
+        "<body></body> x ",  # after an end tag
+        "<!-- c -->x",  # after a comment
+        "<?pi data?>x",  # after a processing instruction
+        "<![CDATA[x]]>",  # in a CDATA section
+        "&amp;",  # an entity reference alone
+        "\u00a0x",  # after a space XML does not count as white space
+        '<site name="a>b"/>',  # a ">" in a value, and no text at all
+        "\n  <geom/>\n",  # white space alone
+    ],
+)
+def test_element_text_is_read_whatever_markup_it_follows(inner: str) -> None:
+    """Text after any markup, or none, reads as ElementTree reads it (blank text is skipped).
+
+    Text alone is kept exactly; between children, each piece is stripped and joined.
+    """
+    text = f"<mujoco><worldbody><body name='b'>{inner}</body></worldbody></mujoco>"
+    body = loads(text).worldbody.bodies[0]
+    element = ET.fromstring(text).find("worldbody/body")
+    assert element is not None
+    chunks = [element.text or "", *(child.tail or "" for child in element)]
+    if len(element):
+        expected = " ".join(c.strip() for c in chunks if c.strip()) or None
+    else:
+        expected = chunks[0] if chunks[0].strip() else None
+    assert body.text == expected
