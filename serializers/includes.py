@@ -50,8 +50,13 @@ class Session:
     inline_includes: bool
     #: The main model's folder, where included files are looked for first.
     main_dir: Path | None
-    #: The files being read when the call began (the main file), for include cycles.
-    include_chain: tuple[Path, ...] = ()
+    #: The file being read when the call began (the main file), if any.
+    main_file: Path | None = None
+
+    @property
+    def include_chain(self) -> tuple[Path, ...]:
+        """The files being read when the call began, resolved: for include cycles only."""
+        return () if self.main_file is None else (self.main_file.resolve(),)
 
 
 @attrs.define

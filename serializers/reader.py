@@ -78,7 +78,7 @@ def _read(data: str | bytes, filename: str, session: Session) -> Mujoco:
 def _read_documents(data: str | bytes, filename: str, session: Session) -> Mujoco:
     """:func:`_read` itself."""
     stack = [_parse(data, filename, session)]
-    reading = {path: 0 for path in session.include_chain}
+    reading = {path: 0 for path in session.include_chain} if stack[0].includes else {}
     origins: dict[int, tuple[AnyElement, Path]] = {}
     while True:
         document = stack[-1]
@@ -198,7 +198,7 @@ def load(
             inline_includes=inline_includes,
             # the folder MuJoCo resolves from: the link's own, when the path is a link
             main_dir=Path(os.path.abspath(path)).parent,
-            include_chain=(path.resolve(),),
+            main_file=path,
         )
         return _attachments_inlined(_read(data, str(path), session), inline_attachments)
     name = getattr(source, "name", None)
