@@ -13,18 +13,17 @@ A transform that rebuilds an element keeps its layout (``attrs.evolve`` copies
 it), so the writer tells what changed by comparing: the values read with the
 element's own, and each child with the child that stood there.
 
->>> layout = Layout(SourceText(b"<a>\n</a>"), 0, 8, [], (), None)
+>>> layout = Layout(SourceText(b"<a>\n</a>"), "a", 0, 3, 8, [], (), None)
 >>> layout.whole(), detail(layout).gaps, detail(layout).end
 ('<a>\n</a>', ('\n',), '</a>')
 """
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable, Set
 from typing import Any, NamedTuple
 
-__all__ = ["DocumentText", "Layout", "LayoutDetail", "SourceText", "detail", "start_tag_end"]
+__all__ = ["DocumentText", "Layout", "LayoutDetail", "SourceText", "detail"]
 
 
 class SourceText:
@@ -38,7 +37,7 @@ class SourceText:
 
     """
 
-    __slots__ = ("details", "document", "raw", "root_begin", "text")
+    __slots__ = ("details", "document", "raw", "root_begin", "text", "values")
 
     def __init__(self, raw: bytes) -> None:
         #: The bytes read, when they are not ASCII (offsets are byte offsets), else ``b""``.
@@ -50,6 +49,9 @@ class SourceText:
         self.root_begin = -1
         #: The :class:`LayoutDetail` of each element the writer asked for, by its offset.
         self.details: dict[int, LayoutDetail] = {}
+        #: Per typed class, each ``(name, text)`` attribute the reader read, as the
+        #: field and value it gave the node (shared with the reader while it reads).
+        self.values: dict[type, dict[tuple[str, str], tuple[str, Any]]] = {}
 
     def __getstate__(self) -> dict[str, Any]:
         """Pickle without the details (they may hold getters): they are worked out again."""
@@ -67,56 +69,11 @@ class SourceText:
             return self.raw[begin:after].decode("utf-8", "surrogatepass")
         return self.text[begin:after]
 
-    def start_tag_end(self, begin: int) -> int:
-        """The offset after the ``>`` that ends the start tag at ``begin``.
-
-        Quoted values may hold a ``>``: the scan steps over them.
-
-        Example:
-            >>> SourceText(b'<a b="x>y"/>').start_tag_end(0)
-            12
-
-        """
-        if self.raw:
-            return start_tag_end(self.raw, begin)
-        text = self.text
-        while True:
-            mark = _TEXT_TAG_END_MARK.search(text, begin)
-            assert mark is not None, "a start tag the reader read ends"
-            position = mark.start()
-            if text[position] == ">":
-                return position + 1
-            begin = text.index(text[position], position + 1) + 1
-
     def end_tag_begin(self, begin: int, after: int) -> int:
         """Where the end tag of the element between two offsets begins."""
         if self.raw:
             return self.raw.rindex(b"</", begin, after)
         return self.text.rindex("</", begin, after)
-
-
-def start_tag_end(raw: bytes, begin: int) -> int:
-    """The offset after the ``>`` that ends the start tag at ``begin`` in ``raw``.
-
-    Example:
-        >>> start_tag_end(b"<a b='>'>", 0)
-        9
-
-    """
-    while True:
-        mark = _TAG_END_MARK.search(raw, begin)
-        assert mark is not None, "a start tag the reader read ends"
-        position = mark.start()
-        if raw[position] == ord(">"):
-            return position + 1
-        begin = raw.index(raw[position : position + 1], position + 1) + 1
-
-
-#: What ends a start tag, or opens a value that may hold a ``>``.
-_TAG_END_MARK = re.compile(b"[\"'>]")
-_TEXT_TAG_END_MARK = re.compile("[\"'>]")
-#: What ends an element's tag name in its start tag.
-_TAG_NAME_END = re.compile(r"[\s/>]")
 
 
 class DocumentText:
@@ -155,7 +112,8 @@ class Layout(NamedTuple):
     asked for, and kept with the file's text.
 
     Example:
-        >>> layout = Layout(SourceText(b'<geom size="1.0"/>'), 0, 18, ["size", "1.0"], (), None)
+        >>> origin = SourceText(b'<geom size="1.0"/>')
+        >>> layout = Layout(origin, "geom", 0, 18, 18, ["size", "1.0"], (), None)
         >>> detail(layout).start, detail(layout).names
         ('<geom size="1.0"/>', ('size',))
 
@@ -163,8 +121,12 @@ class Layout(NamedTuple):
 
     #: The file's text.
     origin: SourceText
-    #: Where the element begins and ends in it (byte offsets).
+    #: The element's tag when it was read.
+    tag: str
+    #: Where the element begins, where its start tag ends and where it ends, in it
+    #: (byte offsets; the last two are one for an empty-element tag).
     begin: int
+    stop: int
     after: int
     #: The attribute names and texts as read, alternating, in source order (the
     #: reader's own list, never changed).
@@ -181,7 +143,7 @@ class Layout(NamedTuple):
         """The element's whole source text, from its start tag to its end tag.
 
         Example:
-            >>> Layout(SourceText(b"<a></a>"), 0, 7, [], (), None).whole()
+            >>> Layout(SourceText(b"<a></a>"), "a", 0, 3, 7, [], (), None).whole()
             '<a></a>'
 
         """
@@ -200,7 +162,7 @@ def detail(layout: Layout) -> LayoutDetail:
     r"""The pieces of the element's text, cut once and kept with the file's text.
 
     Example:
-        >>> layout = Layout(SourceText(b"<a>\n</a>"), 0, 8, [], (), None)
+        >>> layout = Layout(SourceText(b"<a>\n</a>"), "a", 0, 3, 8, [], (), None)
         >>> detail(layout).gaps, detail(layout) is detail(layout)
         (('\n',), True)
 
@@ -217,8 +179,9 @@ class LayoutDetail:
 
     Example:
         >>> origin = SourceText(b"<a x='1'>\n  <b/>\n  <!--c-->\n</a>")
-        >>> b = Layout(origin, 12, 16, [], (), None)
-        >>> layout = Layout(origin, 0, 32, ["x", "1"], ("b", "comment"), None, {1: (19, 27)})
+        >>> b = Layout(origin, "b", 12, 16, 16, [], (), None)
+        >>> comments = {1: (19, 27)}
+        >>> layout = Layout(origin, "a", 0, 9, 32, ["x", "1"], ("b", "comment"), None, comments)
         >>> pieces = LayoutDetail(layout, (b, "comment"))
         >>> pieces.tag, pieces.start, pieces.gaps, pieces.end
         ('a', "<a x='1'>", ('\n  ', '\n  ', '\n'), '</a>')
@@ -243,23 +206,21 @@ class LayoutDetail:
 
     def __init__(self, layout: Layout, sources: tuple[Any, ...] | None = None) -> None:
         origin = layout.origin
-        begin, after = layout.begin, layout.after
-        stop = origin.start_tag_end(begin)
+        begin, stop, after = layout.begin, layout.stop, layout.after
         #: The start tag exactly as written, from ``<`` to ``>`` (``/>`` for an empty element).
         self.start = origin.slice(begin, stop)
         #: The element's tag when it was read.
-        self.tag = self.start[1 : _TAG_NAME_END.search(self.start, 1).start()]  # type: ignore[union-attr]
-        attributes = layout.attributes
+        self.tag = layout.tag
         #: The attribute names and texts of the start tag, in order.
-        self.names: tuple[str, ...] = tuple(attributes[::2])
-        self.texts: tuple[str, ...] = tuple(attributes[1::2])
+        self.names: tuple[str, ...] = tuple(layout.attributes[::2])
+        self.texts: tuple[str, ...] = tuple(layout.attributes[1::2])
         children = layout.children
         #: What stood in each child slot: a child element's own :class:`Layout`, or the
         #: comment node itself. A child carrying the same token is the same child.
         self.sources: tuple[Any, ...] = (
             sources
             if sources is not None
-            else tuple([getattr(child, "layout", None) or child for child in children])
+            else tuple([getattr(child, "layout", child) for child in children])
         )
         #: The exact text of each comment child, by child index.
         self.comments: dict[int, str] = {}

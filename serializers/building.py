@@ -21,7 +21,7 @@ from mjcf_model.base import (
     build_node,
     field_table,
 )
-from mjcf_model.declaring import tuple_getter
+from mjcf_model.declaring import NodeInfo, tuple_getter
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.layout import Layout, LayoutDetail
 from mjcf_model.registry import CLASS_BY_KEY
@@ -179,7 +179,8 @@ def read_typed(
     Example:
         >>> from mjcf_model import Geom
         >>> from mjcf_model.layout import SourceText
-        >>> layout = Layout(SourceText(b'<geom size="1"/>'), 0, 16, ["size", "1"], (), None)
+        >>> origin = SourceText(b'<geom size="1"/>')
+        >>> layout = Layout(origin, "geom", 0, 16, 16, ["size", "1"], (), None)
         >>> read_typed(Geom, ["size", "1"], (), layout, {}, {}) == Geom(size=[1.0])
         True
 
@@ -227,7 +228,8 @@ LATER_FIELDS = frozenset({"base_dir"})
 def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout) -> tuple[Any, ...]:
     """The values an element of class ``cls`` held for its attributes when it was read.
 
-    Worked out again from the texts read, as the reader works them out, and kept
+    Looked up in what the reader read from the file (the same objects the nodes
+    got), or worked out again from the texts as the reader works them out; kept
     in ``detail`` with the writer's fast check (:attr:`LayoutDetail.getter` and
     :attr:`LayoutDetail.stored`, for a typed element whose attributes all have fields).
 
@@ -236,7 +238,7 @@ def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout)
         >>> from mjcf_model.layout import SourceText, detail
         >>> text = b'<geom size="1" condim="x" colour="red"/>'
         >>> flat = ["size", "1", "condim", "x", "colour", "red"]
-        >>> layout = Layout(SourceText(text), 0, len(text), flat, (), None)
+        >>> layout = Layout(SourceText(text), "geom", 0, len(text), len(text), flat, (), None)
         >>> recorded_values(detail(layout), Geom, layout)
         ((1.0,), Unparsed('x'), 'red')
 
@@ -248,26 +250,56 @@ def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout)
         values = detail.values = detail.texts  # a generic element holds the very strings
         return values
     info = cls.__node_info__
-    table = info.table
+    table, plain = info.table, info.plain_names
+    known = layout.origin.values.get(cls, {})  # the very values the reader gave the nodes
     found: list[Any] = []
     for name, text in zip(detail.names, detail.texts, strict=True):
         field = table.get(name)
-        if field is None:
-            found.append(text)  # kept in ``extra``
+        if field is None or name in plain:
+            found.append(text)  # kept in ``extra``, or a name held as it is
+            continue
+        read = known.get((name, text))
+        if read is not None:
+            found.append(read[1])
             continue
         try:
             found.append(info.readers[name][1](text))
         except MjcfValueError:
             found.append(Unparsed(text))  # equal to the one the node keeps
     values = detail.values = tuple(found)
-    fields = tuple([table.get(name) or "" for name in detail.names])
-    if "" not in fields:
-        stored = {f for f, v in zip(fields, values, strict=True) if v is not None}
-        stored |= {"attribute_order", "layout"}
-        if layout.children:
-            stored.add("children")
-        if layout.text is not None:
-            stored.add("text")
-        detail.getter = tuple_getter(fields)
-        detail.stored = frozenset(stored)
+    key = (cls, detail.names, bool(layout.children), layout.text is not None)
+    check = _FAST_CHECKS.get(key)
+    if check is None:
+        if len(_FAST_CHECKS) >= _MAX_FAST_CHECKS:
+            _FAST_CHECKS.clear()
+        check = _FAST_CHECKS[key] = _fast_check(info, *key[1:])
+    if check is not None and None not in values:
+        detail.getter, detail.stored = check
     return values
+
+
+def _fast_check(
+    info: NodeInfo, names: tuple[str, ...], children: bool, text: bool
+) -> tuple[Callable[[Any], tuple[Any, ...]], frozenset[str]] | None:
+    """The getter of the fields of ``names``, and the fields an element read so stores.
+
+    ``None`` when an attribute has no field (the element keeps it in ``extra``).
+    """
+    fields = tuple([info.table.get(name) or "" for name in names])
+    if "" in fields:
+        return None
+    stored = {*fields, "attribute_order", "layout"}
+    if children:
+        stored.add("children")
+    if text:
+        stored.add("text")
+    return tuple_getter(fields), frozenset(stored)
+
+
+#: Per class, attribute names and kind of content, what :func:`_fast_check` made.
+_FAST_CHECKS: dict[
+    tuple[type, tuple[str, ...], bool, bool],
+    tuple[Callable[[Any], tuple[Any, ...]], frozenset[str]] | None,
+] = {}
+#: Past this many, the checks are forgotten (hostile text could make any number).
+_MAX_FAST_CHECKS = 4096

@@ -21,7 +21,7 @@ from xml.parsers import expat
 
 from mjcf_model.base import AnyElement, Comment, GenericElement, Node, TypedElement
 from mjcf_model.errors import MjcfError, MjcfIncludeError, MjcfSecurityError, MjcfSyntaxError
-from mjcf_model.layout import DocumentText, Layout, SourceText, start_tag_end
+from mjcf_model.layout import DocumentText, Layout, SourceText
 from mjcf_model.namespaces import child_key, children_context
 from mjcf_model.nodes.root import Include
 from mjcf_model.registry import CLASS_BY_KEY
@@ -152,7 +152,7 @@ class Reader:
         if flat:
             joined = "".join(flat)  # attribute names hold neither ">" nor white space
             if ">" in joined:
-                stop = start_tag_end(raw, begin)
+                stop = _start_tag_end(raw, begin)
             # expat turns a tab or line break in a value into a space; tinyxml2 keeps
             # it. Only a tag written over lines or with tabs can hold one.
             if " " in joined and self.breaks and _BREAK.search(raw, begin, stop) is not None:
@@ -200,7 +200,18 @@ class Reader:
         else:
             after = self.raw.index(b">", self.parser.CurrentByteIndex) + 1
         layout = _new_layout(
-            Layout, (self.origin, item.begin, after, item.attributes, children, text, item.comments)
+            Layout,
+            (
+                self.origin,
+                item.tag,
+                item.begin,
+                stop,
+                after,
+                item.attributes,
+                children,
+                text,
+                item.comments,
+            ),
         )
         typed = item.typed
         node: AnyElement | None = None
@@ -285,6 +296,7 @@ class Reader:
         try:
             self.raw = raw
             self.origin = SourceText(raw)
+            self.origin.values = self.known
             if not self.origin.raw:
                 self.ascii = self.origin.text
             self.breaks = _BREAK.search(raw) is not None
@@ -361,6 +373,24 @@ class Reader:
         return MjcfSyntaxError(detail, file=self.filename, line=error.lineno, path=path)
 
 
+def _start_tag_end(raw: bytes, begin: int) -> int:
+    """The offset after the ``>`` that ends the start tag at ``begin`` in ``raw``."""
+    while True:
+        mark = _TAG_END_MARK.search(raw, begin)
+        assert mark is not None, "a start tag the reader read ends"
+        position = mark.start()
+        if raw[position] == ord(">"):
+            return position + 1
+        begin = raw.index(raw[position : position + 1], position + 1) + 1
+
+
+#: What ends a start tag, or opens a value that may hold a ``>``.
+_TAG_END_MARK = re.compile(b"[\"'>]")
+
+#: What ends a start tag, or opens a value that may hold a ``>``.
+_TAG_END_MARK = re.compile(b"[\"'>]")
+
+
 def _step(context: str | None, tag: str) -> tuple[str | None, str | None, Any]:
     """A ``tag`` element in ``context``: its schema key, its children's context, its class.
 
@@ -405,5 +435,7 @@ def _may_hold_text(raw: bytes) -> bool:
     squeezed = raw.translate(None, b" \t\r\n")
     closing = squeezed.count(b">")
     return closing != squeezed.count(b"><") + squeezed.endswith(b">")
+
+
 #: The byte of ``/``: a start tag that ends with ``/>`` is an empty element.
 _SLASH = ord("/")

@@ -114,7 +114,7 @@ def write_kept(root: AnyElement, out: list[str]) -> None:
             children = children[len(lead) : inner]
     out.append(before)
     stack: list[Any] = [after]
-    if root.tag == detail(layout).tag:
+    if root.tag == layout.tag:
         _open(root, layout, children, out, stack, style)
     else:
         stack.append(root)
@@ -127,7 +127,7 @@ def write_kept(root: AnyElement, out: list[str]) -> None:
         else:
             element = checked_element(item)
             kept = element.layout
-            if kept is not None and element.tag == detail(kept).tag:
+            if kept is not None and element.tag == kept.tag:
                 _open(element, kept, element.children, out, stack, style)
             else:
                 margin = _current_indent(out)

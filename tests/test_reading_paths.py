@@ -31,7 +31,14 @@ def _layout(tag: str, pairs: list[tuple[str, str]]) -> Layout:
     attributes = "".join(f" {name}={quoteattr(text)}" for name, text in pairs)
     written = f"<{tag}{attributes}/>".encode()
     return Layout(
-        SourceText(written), 0, len(written), [p for pair in pairs for p in pair], (), None
+        SourceText(written),
+        tag,
+        0,
+        len(written),
+        len(written),
+        [p for pair in pairs for p in pair],
+        (),
+        None,
     )
 
 
