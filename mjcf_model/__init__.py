@@ -10,8 +10,19 @@ changed copies; :mod:`serializers` reads and writes MJCF without losing anything
 """
 
 from mjcf_model import errors, nodes
-from mjcf_model.attachments import inlined_attachments
-from mjcf_model.base import (
+from mjcf_model.builders import (
+    new_actuator,
+    new_body,
+    new_element,
+    new_geom,
+    new_inertial,
+    new_joint,
+    new_site,
+)
+from mjcf_model.errors import *  # noqa: F403  (every error class; listed in errors.__all__)
+from mjcf_model.files.compiling import compiled
+from mjcf_model.nodes import *  # noqa: F403  (every node class; listed in nodes.__all__)
+from mjcf_model.nodes.base import (
     AttributeMap,
     Comment,
     Element,
@@ -22,24 +33,13 @@ from mjcf_model.base import (
     get_attribute,
     with_attributes,
 )
-from mjcf_model.builders import (
-    new_actuator,
-    new_body,
-    new_element,
-    new_geom,
-    new_inertial,
-    new_joint,
-    new_site,
-)
-from mjcf_model.compiling import compiled
-from mjcf_model.composition import attach, attach_all
-from mjcf_model.errors import *  # noqa: F403  (every error class; listed in errors.__all__)
-from mjcf_model.materials import CustomMaterial, recolored_collision_geoms, with_material
-from mjcf_model.naming import declared_names, prefix_map, prefixed, renamed
-from mjcf_model.nodes import *  # noqa: F403  (every node class; listed in nodes.__all__)
-from mjcf_model.queries import Categories, categorized, find, find_all, parent_of
-from mjcf_model.scaling import scaled
-from mjcf_model.traversal import map_elements, map_tree, walk
+from mjcf_model.transforms.composition.attach import attach, attach_all
+from mjcf_model.transforms.composition.inlining import inlined_attachments
+from mjcf_model.transforms.materials import CustomMaterial, recolored_collision_geoms, with_material
+from mjcf_model.transforms.naming.renaming import declared_names, prefix_map, prefixed, renamed
+from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.tree.queries import Categories, categorized, find, find_all, parent_of
+from mjcf_model.tree.traversal import map_elements, map_tree, walk
 from mjcf_model.values import Unparsed
 
 __all__ = [

@@ -2,6 +2,6 @@
 
 import sys
 
-from mjcf_model.cli import main
+from mjcf_model.tools.cli import main
 
 sys.exit(main())

@@ -21,13 +21,19 @@ from typing import Any, TypeVar
 
 import attrs
 
-from mjcf_model.base import AnyElement, GenericElement, TypedElement, field_table, with_attributes
 from mjcf_model.errors import MjcfLookupError
-from mjcf_model.namespaces import child_key, guess_context
 from mjcf_model.nodes.actuator import ActuatorElement
+from mjcf_model.nodes.base import (
+    AnyElement,
+    GenericElement,
+    TypedElement,
+    field_table,
+    with_attributes,
+)
 from mjcf_model.nodes.body import Body, Inertial, Joint
 from mjcf_model.nodes.geom import Geom, Site
-from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.schema.namespaces import child_key, guess_context
 from mjcf_model.values import Value, format_value, plain_value, to_str
 
 __all__ = [

@@ -31,7 +31,6 @@ from typing import Any, TypeVar
 import attrs
 from hypothesis import strategies as st
 
-from mjcf_model.base import Comment, Node, TypedElement, field_table
 from mjcf_model.nodes import (
     Actuator,
     Asset,
@@ -68,6 +67,7 @@ from mjcf_model.nodes import (
 )
 from mjcf_model.nodes import Frame as FrameNode
 from mjcf_model.nodes import Joint as JointNode
+from mjcf_model.nodes.base import Comment, Node, TypedElement, field_table
 from mjcf_model.values import Floats
 
 __all__ = [

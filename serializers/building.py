@@ -13,7 +13,8 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from mjcf_model.base import (
+from mjcf_model.errors import MjcfError, MjcfValueError
+from mjcf_model.nodes.base import (
     AnyElement,
     GenericElement,
     Node,
@@ -21,10 +22,9 @@ from mjcf_model.base import (
     build_node,
     field_table,
 )
-from mjcf_model.declaring import NodeInfo, tuple_getter
-from mjcf_model.errors import MjcfError, MjcfValueError
-from mjcf_model.layout import Layout, LayoutDetail
-from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.nodes.declaring import NodeInfo, tuple_getter
+from mjcf_model.nodes.layout import Layout, LayoutDetail
+from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.values import Unparsed
 
 __all__ = ["ReadMemo", "build_element", "element_step", "element_text", "read_typed"]
@@ -86,7 +86,7 @@ def build_element(
     located by ``locate``.
 
     Args:
-        key: The element's schema key (see :func:`mjcf_model.namespaces.child_key`).
+        key: The element's schema key (see :func:`mjcf_model.schema.namespaces.child_key`).
         tag: The XML tag.
         attributes: ``(name, text)`` pairs in source order.
         children: The already built child nodes.
@@ -178,7 +178,7 @@ def read_typed(
 
     Example:
         >>> from mjcf_model import Geom
-        >>> from mjcf_model.layout import SourceText
+        >>> from mjcf_model.nodes.layout import SourceText
         >>> origin = SourceText(b'<geom size="1"/>')
         >>> layout = Layout(origin, "geom", 0, 16, 16, ["size", "1"], (), None)
         >>> read_typed(Geom, ["size", "1"], (), layout, {}, {}) == Geom(size=[1.0])
@@ -235,7 +235,7 @@ def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout)
 
     Example:
         >>> from mjcf_model import Geom
-        >>> from mjcf_model.layout import SourceText, detail
+        >>> from mjcf_model.nodes.layout import SourceText, detail
         >>> text = b'<geom size="1" condim="x" colour="red"/>'
         >>> flat = ["size", "1", "condim", "x", "colour", "red"]
         >>> layout = Layout(SourceText(text), "geom", 0, len(text), len(text), flat, (), None)

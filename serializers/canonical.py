@@ -12,8 +12,8 @@ in code) and :mod:`serializers.kept_format` (elements added to a loaded model).
 
 from __future__ import annotations
 
-from mjcf_model.base import AnyElement, Comment, GenericElement, Node, attribute_items
 from mjcf_model.errors import MjcfValueError
+from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, Node, attribute_items
 from mjcf_model.values import format_value
 
 __all__ = [

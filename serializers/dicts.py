@@ -29,11 +29,11 @@ import cattrs
 from cattrs.fns import identity
 from cattrs.strategies import configure_tagged_union, include_subclasses
 
-from mjcf_model.base import AttributeMap, Element, Node, TypedElement
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.layout import Layout
-from mjcf_model.node_building import build_node
-from mjcf_model.traversal import with_children
+from mjcf_model.nodes.base import AttributeMap, Element, Node, TypedElement
+from mjcf_model.nodes.building import build_node
+from mjcf_model.nodes.layout import Layout
+from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import Floats, Unparsed
 
 __all__ = ["converter", "from_dict", "to_dict"]

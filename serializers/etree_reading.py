@@ -12,9 +12,9 @@ from typing import Any
 
 import attrs
 
-from mjcf_model.base import AnyElement, Comment, Node
 from mjcf_model.errors import MjcfError
-from mjcf_model.namespaces import child_key, children_context, guess_context
+from mjcf_model.nodes.base import AnyElement, Comment, Node
+from mjcf_model.schema.namespaces import child_key, children_context, guess_context
 from serializers.building import build_element, element_step, element_text
 
 __all__ = ["from_etree"]

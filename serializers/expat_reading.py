@@ -19,12 +19,12 @@ import re
 from typing import Any, NoReturn
 from xml.parsers import expat
 
-from mjcf_model.base import AnyElement, Comment, GenericElement, Node, TypedElement
 from mjcf_model.errors import MjcfError, MjcfIncludeError, MjcfSecurityError, MjcfSyntaxError
-from mjcf_model.layout import DocumentText, Layout, SourceText
-from mjcf_model.namespaces import child_key, children_context
+from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, Node, TypedElement
+from mjcf_model.nodes.layout import DocumentText, Layout, SourceText
+from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.nodes.root import Include
-from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.schema.namespaces import child_key, children_context
 from serializers.building import ReadMemo, build_element, element_step, element_text, read_typed
 from serializers.includes import PendingInclude, Session
 from serializers.open_element import OpenElement

@@ -17,8 +17,8 @@ import shutil
 from collections.abc import Mapping
 from pathlib import Path
 
-from mjcf_model.compiling import bundled
 from mjcf_model.errors import MjcfAssetError, MjcfValueError
+from mjcf_model.files.compiling import bundled
 from mjcf_model.nodes.root import Mujoco
 from serializers.writer import dumps
 
@@ -55,7 +55,7 @@ def export(
 
     Args:
         model: The model; its files are found through its provenance
-            (:mod:`mjcf_model.provenance`) or in ``assets``.
+            (:mod:`mjcf_model.files.provenance`) or in ``assets``.
         directory: A folder that does not exist yet, or is empty.
         assets: File contents by the path the model writes, for models built in code.
 

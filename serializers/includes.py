@@ -21,11 +21,11 @@ from pathlib import Path
 
 import attrs
 
-from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.errors import MjcfIncludeError
+from mjcf_model.files.provenance import FILE_TAGS
+from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.nodes.root import Include, Mujoco
-from mjcf_model.provenance import FILE_TAGS
-from mjcf_model.traversal import map_tree, with_children
+from mjcf_model.tree.traversal import map_tree, with_children
 
 __all__ = [
     "STRING_FILENAME",

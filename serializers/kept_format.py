@@ -1,6 +1,6 @@
 r"""The format-keeping writer: a loaded model written as it was read.
 
-Each element that carries a :class:`~mjcf_model.layout.Layout` is written as its
+Each element that carries a :class:`~mjcf_model.nodes.layout.Layout` is written as its
 source text, with only what changed edited in place (a changed value inside its
 quotes, a removed attribute or child with the white space before it); an element
 added in code is written in the canonical form (:mod:`serializers.canonical`),
@@ -18,8 +18,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Any
 
-from mjcf_model.base import AnyElement, Comment, Node, attribute_items
-from mjcf_model.layout import Layout, LayoutDetail, detail
+from mjcf_model.nodes.base import AnyElement, Comment, Node, attribute_items
+from mjcf_model.nodes.layout import Layout, LayoutDetail, detail
 from mjcf_model.values import Value, format_value
 from serializers.building import LATER_FIELDS, recorded_values
 from serializers.canonical import (

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from mjcf_model.base import Node
+from mjcf_model.nodes.base import Node
 
 __all__ = ["OpenElement"]
 

@@ -16,13 +16,13 @@ import os
 from pathlib import Path
 from typing import IO
 
-from mjcf_model.base import AnyElement, Comment, GenericElement, TypedElement
-from mjcf_model.collector import collector_paused
 from mjcf_model.errors import MjcfIncludeError, MjcfSyntaxError
-from mjcf_model.node_building import build_node
+from mjcf_model.files.provenance import with_included_paths
+from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, TypedElement
+from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.provenance import with_included_paths
-from mjcf_model.traversal import with_children
+from mjcf_model.tree.traversal import with_children
+from serializers.collector import collector_paused
 from serializers.etree_reading import from_etree
 from serializers.expat_reading import Reader
 from serializers.includes import (
@@ -69,7 +69,7 @@ def _read(data: str | bytes, filename: str, session: Session) -> Mujoco:
     Included files are read one after another from an explicit stack, not by
     recursion, so an include chain as long as MuJoCo follows (it has no limit)
     is read too. The garbage collector is paused meanwhile (see
-    :mod:`mjcf_model.collector`).
+    :mod:`serializers.collector`).
     """
     with collector_paused():
         return _read_documents(data, filename, session)
@@ -135,7 +135,7 @@ def loads(
         base_dir: Where included files are looked for; the main model's directory.
         filename: The name errors should report (default ``"<string>"``).
         inline_attachments: Replace each ``<attach>`` by what MuJoCo attaches there
-            (see :func:`mjcf_model.attachments.inlined_attachments`).
+            (see :func:`mjcf_model.transforms.composition.inlining.inlined_attachments`).
 
     Raises:
         MjcfSyntaxError: The text is not well-formed XML or its root is not ``<mujoco>``.
@@ -159,7 +159,7 @@ def loads(
 def _attachments_inlined(model: Mujoco, inline: bool) -> Mujoco:
     if not inline:
         return model
-    from mjcf_model.attachments import inlined_attachments
+    from mjcf_model.transforms.composition.inlining import inlined_attachments
 
     return inlined_attachments(model)
 
@@ -178,7 +178,7 @@ def load(
             names, looked up beside the main file first and then beside the
             including file, as MuJoCo does. Include cycles raise.
         inline_attachments: Replace each ``<attach>`` by what MuJoCo attaches there
-            (see :func:`mjcf_model.attachments.inlined_attachments`).
+            (see :func:`mjcf_model.transforms.composition.inlining.inlined_attachments`).
 
     Example:
         >>> import tempfile, pathlib

@@ -21,9 +21,9 @@ from xml.parsers import expat
 
 import attrs
 
-from mjcf_model.base import field_table
-from mjcf_model.namespaces import child_key
-from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.nodes.base import field_table
+from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.schema.namespaces import child_key
 from mjcf_model.values import NOT_XML_CHARACTER
 
 __all__ = [

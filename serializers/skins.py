@@ -33,13 +33,13 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from mjcf_model.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.errors import MjcfAssetError, MjcfSyntaxError
-from mjcf_model.node_building import build_node
+from mjcf_model.files.provenance import file_references, file_stem
 from mjcf_model.nodes.asset import Bone, Skin
+from mjcf_model.nodes.base import AnyElement, get_attribute, with_attributes
+from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.provenance import file_references, file_stem
-from mjcf_model.traversal import map_elements
+from mjcf_model.tree.traversal import map_elements
 
 __all__ = ["inline_skin_files", "read_skin", "skin_bone_names", "with_file_skins_inline"]
 
@@ -149,7 +149,7 @@ def skin_bone_names(path: str | os.PathLike[str]) -> tuple[str, ...]:
 def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str] | None = None) -> Mujoco:
     """``model`` with every skin read from a file written inline instead.
 
-    Skin files are found as MuJoCo finds them (:mod:`mjcf_model.provenance`):
+    Skin files are found as MuJoCo finds them (:mod:`mjcf_model.files.provenance`):
     under the compiler's ``meshdir`` (or ``assetdir``), from ``directory``, the
     folder of the model file (by default the model's own ``base_dir``).
 

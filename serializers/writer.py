@@ -2,7 +2,7 @@
 
 The mirror of :mod:`serializers.reader`. A loaded model is written as it was
 read (:mod:`serializers.kept_format`): each element that carries a
-:class:`~mjcf_model.layout.Layout` is written as its source text, with only what
+:class:`~mjcf_model.nodes.layout.Layout` is written as its source text, with only what
 changed edited in place, and an element added in code is written in the
 canonical form, indented to fit. The canonical form (:mod:`serializers.canonical`;
 ``canonical=True``, and every model built in code) writes each element on its
@@ -28,12 +28,12 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import IO
 
-from mjcf_model.base import AnyElement, Comment, Element, Node
-from mjcf_model.compiling import inlined
 from mjcf_model.errors import MjcfValueError
+from mjcf_model.files.compiling import inlined
+from mjcf_model.files.provenance import Folders, file_references, relocated
+from mjcf_model.nodes.base import AnyElement, Comment, Element, Node
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.provenance import Folders, file_references, relocated
-from mjcf_model.traversal import keyed_walk
+from mjcf_model.tree.traversal import keyed_walk
 from serializers.canonical import attribute_texts, write_canonical
 from serializers.kept_format import write_kept
 
@@ -84,7 +84,7 @@ def dump(
     Writing a loaded model to a path in another folder (or to an open file that
     names its path) relocates it: relative
     file paths (meshes, textures, includes...) are rewritten to name the same
-    files from the new folder (:func:`mjcf_model.provenance.relocated`). Written
+    files from the new folder (:func:`mjcf_model.files.provenance.relocated`). Written
     back to its own folder, the text is unchanged. A model built in code has no
     folder of its own: its paths are written as they are.
 

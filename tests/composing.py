@@ -29,7 +29,7 @@ import mujoco
 import numpy as np
 
 from mjcf_model import Mujoco, attach, compiled
-from mjcf_model.compare import compiled_names, model_differences, path_fields
+from mjcf_model.tools.compare import compiled_names, model_differences, path_fields
 from serializers import dump, export, load
 
 __all__ = ["STAGES", "Outcome", "compose_problems"]

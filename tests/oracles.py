@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Collection
 from typing import Any
 
-from mjcf_model.compare import NAME_FIELDS, compiled_names, model_differences, model_fields
+from mjcf_model.tools.compare import NAME_FIELDS, compiled_names, model_differences, model_fields
 from tests.conftest import MUJOCO_VERSION
 
 #: Every field that a renaming may change.
@@ -70,7 +70,7 @@ def trees_close(left: Any, right: Any, rel: float = 1e-9) -> bool:
     """Whether two node trees are equal, numbers compared within ``rel``."""
     import math
 
-    from mjcf_model.base import Comment, attribute_items
+    from mjcf_model.nodes.base import Comment, attribute_items
 
     if type(left) is not type(right):
         return False

@@ -16,10 +16,10 @@ import numpy as np
 import pytest
 
 from mjcf_model import attach, compiled, inlined_attachments, prefixed, scaled
-from mjcf_model.compare import compiled_names, model_differences, path_fields
 from mjcf_model.errors import MjcfIncludeError, MjcfLookupError, MjcfValueError
-from mjcf_model.queries import find, find_all, parent_of
-from mjcf_model.traversal import walk
+from mjcf_model.tools.compare import compiled_names, model_differences, path_fields
+from mjcf_model.tree.queries import find, find_all, parent_of
+from mjcf_model.tree.traversal import walk
 from serializers import dump, load, loads
 from tests.conftest import FIXTURES, MUJOCO_VERSION, compiling_corpus, corpus_id
 from tests.oracles import prefix_problems, scaled_problems

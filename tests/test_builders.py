@@ -25,7 +25,6 @@ from mjcf_model import (
     TypedElement,
     Velocity,
 )
-from mjcf_model.base import AnyElement, get_attribute
 from mjcf_model.builders import (
     RED,
     new_actuator,
@@ -36,6 +35,7 @@ from mjcf_model.builders import (
     new_joint,
     new_site,
 )
+from mjcf_model.nodes.base import AnyElement, get_attribute
 from serializers import dumps, to_etree
 
 Builder = Callable[..., Any]

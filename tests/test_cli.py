@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from mjcf_model.check import CheckResult
-from mjcf_model.cli import example_path, main
+from mjcf_model.tools.check import CheckResult
+from mjcf_model.tools.cli import example_path, main
 
 
 def test_example_is_identical(capsys: pytest.CaptureFixture[str]) -> None:
@@ -48,7 +48,7 @@ def test_a_difference_fails_the_run(
     monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
     """When the compiled models differ the fields are listed and the exit status is 1."""
-    import mjcf_model.cli as cli
+    import mjcf_model.tools.cli as cli
 
     def differing(path: str, *, inline_includes: bool = False) -> CheckResult:
         return CheckResult(path=str(path), status="different", differences=("geom_size",))
@@ -69,7 +69,7 @@ def test_written_model_that_does_not_compile_is_an_error(
 ) -> None:
     """check_file reports an error, not a crash, when the written text does not compile."""
     import serializers
-    from mjcf_model.check import check_file
+    from mjcf_model.tools.check import check_file
 
     path = tmp_path / "m.xml"
     path.write_text("<mujoco><worldbody><geom size='0.1'/></worldbody></mujoco>")

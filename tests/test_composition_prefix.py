@@ -10,12 +10,12 @@ import pytest
 from hypothesis import given
 
 from mjcf_model import Mujoco, compiled
-from mjcf_model.base import AnyElement
-from mjcf_model.compare import compiled_names
-from mjcf_model.composition import attach_all
-from mjcf_model.composition_prefix import MARK, PrefixPlan
-from mjcf_model.naming import declared_names, prefixed, prefixed_declared
+from mjcf_model.nodes.base import AnyElement
 from mjcf_model.strategies import models, names
+from mjcf_model.tools.compare import compiled_names
+from mjcf_model.transforms.composition.attach import attach_all
+from mjcf_model.transforms.naming.renaming import declared_names, prefixed, prefixed_declared
+from mjcf_model.transforms.naming.repeated import MARK, PrefixPlan
 from serializers import dumps, load, loads
 from serializers.skins import inline_skin_files
 from tests.conftest import compiling_corpus, corpus_id

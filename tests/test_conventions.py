@@ -16,21 +16,21 @@ import numpy as np
 import pytest
 
 from mjcf_model import compiled, find
-from mjcf_model.base import Node, attribute_items, get_attribute, with_attributes
-from mjcf_model.compare import compiled_names, model_differences
-from mjcf_model.conventions import (
+from mjcf_model.errors import MjcfError, MjcfValueError
+from mjcf_model.nodes.base import Node, attribute_items, get_attribute, with_attributes
+from mjcf_model.nodes.compiler import Compiler
+from mjcf_model.nodes.declaring import BASE_FIELDS
+from mjcf_model.nodes.root import Mujoco
+from mjcf_model.schema.namespaces import SCHEMA
+from mjcf_model.tools.compare import compiled_names, model_differences
+from mjcf_model.transforms.composition.conventions import (
     CONVERTED_SETTINGS,
     MODEL_WIDE_SETTINGS,
     PATH_SETTINGS,
     compiler_settings,
     in_conventions,
 )
-from mjcf_model.declaring import BASE_FIELDS
-from mjcf_model.errors import MjcfError, MjcfValueError
-from mjcf_model.namespaces import SCHEMA
-from mjcf_model.nodes.compiler import Compiler
-from mjcf_model.nodes.root import Mujoco
-from mjcf_model.traversal import with_children
+from mjcf_model.tree.traversal import with_children
 from serializers import load, loads
 from tests.conftest import FIXTURES, MUJOCO_VERSION, compiling_corpus, corpus_id, printed_schema
 

@@ -7,8 +7,8 @@ from pathlib import Path
 import pytest
 
 from mjcf_model import Comment, Include, Node
-from mjcf_model.base import Element
-from mjcf_model.check import check_file
+from mjcf_model.nodes.base import Element
+from mjcf_model.tools.check import check_file
 from serializers import dumps, load, loads
 from tests.conftest import compiling_corpus, corpus_files, corpus_id
 

@@ -34,7 +34,7 @@ from mjcf_model import (
     prefixed,
     scaled,
 )
-from mjcf_model.compare import model_differences
+from mjcf_model.tools.compare import model_differences
 from serializers import dump, dumps, from_dict, from_etree, load, loads, to_dict, to_etree
 
 #: The packages as imported: the installed wheel under tests/run_installed.py.

@@ -28,8 +28,8 @@ from mjcf_model import (
     Texture,
     Worldbody,
 )
-from mjcf_model.base import AnyElement, Element, get_attribute
-from mjcf_model.materials import (
+from mjcf_model.nodes.base import AnyElement, Element, get_attribute
+from mjcf_model.transforms.materials import (
     DEFAULT_MATERIAL,
     TEXTURE_FILES,
     CustomMaterial,

@@ -11,11 +11,11 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from mjcf_model import Body, Geom, Mujoco, compiled
-from mjcf_model.composition import attach
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.naming import declared_names, prefix_map, prefixed, renamed
-from mjcf_model.scaling import scaled
 from mjcf_model.strategies import models, names
+from mjcf_model.transforms.composition.attach import attach
+from mjcf_model.transforms.naming.renaming import declared_names, prefix_map, prefixed, renamed
+from mjcf_model.transforms.scaling.scaled import scaled
 from serializers import dumps, load, loads, to_dict
 from serializers.skins import inline_skin_files
 from tests.conftest import compiling_corpus, corpus_id

@@ -16,11 +16,11 @@ import mujoco
 import pytest
 
 from mjcf_model import GenericElement, Mujoco
-from mjcf_model.check import check_file
-from mjcf_model.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.errors import MjcfAssetError, MjcfValueError
-from mjcf_model.naming import declared_names, prefix_map, prefixed, renamed
-from mjcf_model.traversal import walk
+from mjcf_model.tools.check import check_file
+from mjcf_model.tools.compare import compile_text_beside, compiled_names, model_differences
+from mjcf_model.transforms.naming.renaming import declared_names, prefix_map, prefixed, renamed
+from mjcf_model.tree.traversal import walk
 from serializers import dumps, from_dict, from_etree, load, loads, to_dict, to_etree
 from serializers.skins import inline_skin_files
 from tests.conftest import FIXTURES, MUJOCO_VERSION

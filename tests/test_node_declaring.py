@@ -10,10 +10,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mjcf_model import Geom, Joint
-from mjcf_model.base import TypedElement, build_node
-from mjcf_model.declaring import declared_classes, node, reference, vec3
-from mjcf_model.namespaces import SCHEMA
-from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.nodes.base import TypedElement, build_node
+from mjcf_model.nodes.declaring import declared_classes, node, reference, vec3
+from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.strategies import element_values, elements
 
 TYPED_CLASSES = sorted(set(CLASS_BY_KEY.values()), key=lambda cls: cls.__name__)

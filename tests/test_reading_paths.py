@@ -13,10 +13,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mjcf_model import Geom, Joint
-from mjcf_model.base import TypedElement
-from mjcf_model.declaring import xml_name
-from mjcf_model.layout import Layout, SourceText, detail
-from mjcf_model.registry import CLASS_BY_KEY
+from mjcf_model.nodes.base import TypedElement
+from mjcf_model.nodes.declaring import xml_name
+from mjcf_model.nodes.layout import Layout, SourceText, detail
+from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.strategies import element_values
 from mjcf_model.values import Unparsed, format_value
 from serializers import from_etree, loads

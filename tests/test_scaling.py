@@ -12,13 +12,13 @@ from hypothesis import strategies as st
 
 from mjcf_model import Body, Geom, Mujoco, Site, compiled
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.namespaces import SCHEMA
-from mjcf_model.registry import CLASS_BY_KEY
-from mjcf_model.scaling import scaled
-from mjcf_model.scaling_rules import NO_LENGTHS
-from mjcf_model.scaling_table import RULES, UNSCALED_BY_DECISION
+from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.strategies import models
-from mjcf_model.traversal import map_tree
+from mjcf_model.transforms.scaling.pieces import NO_LENGTHS
+from mjcf_model.transforms.scaling.rules import RULES, UNSCALED_BY_DECISION
+from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.tree.traversal import map_tree
 from serializers import dumps, load, loads, to_dict
 from tests.conftest import MUJOCO_VERSION, compiling_corpus, corpus_id
 from tests.oracles import mass_problems, scaled_problems, trees_close

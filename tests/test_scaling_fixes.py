@@ -12,10 +12,10 @@ import mujoco
 import numpy as np
 import pytest
 
-from mjcf_model.check import check_file
-from mjcf_model.compare import compile_text_beside
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.scaling import MassPolicy, scaled
+from mjcf_model.tools.check import check_file
+from mjcf_model.tools.compare import compile_text_beside
+from mjcf_model.transforms.scaling.scaled import MassPolicy, scaled
 from serializers import dumps, load, loads
 from tests.conftest import MUJOCO_VERSION
 from tests.oracles import mass_problems, scaled_problems

@@ -6,16 +6,16 @@ import attrs
 import mujoco
 import pytest
 
-from mjcf_model import keywords
-from mjcf_model.base import field_table
-from mjcf_model.namespaces import (
+from mjcf_model.nodes.base import field_table
+from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.schema import keywords
+from mjcf_model.schema.namespaces import (
     NAMESPACES,
     OBJTYPE_NAMESPACES,
     SCHEMA,
     SCHEMA_RELEASE,
     child_key,
 )
-from mjcf_model.registry import CLASS_BY_KEY
 from mjcf_model.values import OneOf
 from tests.conftest import printed_schema
 

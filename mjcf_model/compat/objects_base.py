@@ -21,14 +21,14 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from mjcf_model.base import AnyElement, GenericElement
 from mjcf_model.compat.objects_bridge import RobosuiteCompatible
 from mjcf_model.compat.objects_document import ModelBacked, as_node
 from mjcf_model.compat.objects_etree import EtreeView
 from mjcf_model.compat.objects_naming import robosuite_prefixed, skeleton_memo
 from mjcf_model.compat.objects_quirks import attribute, robosuite_scaled
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.queries import categorized
+from mjcf_model.nodes.base import AnyElement, GenericElement
+from mjcf_model.tree.queries import categorized
 
 __all__ = [
     "GEOMTYPE2GROUP",

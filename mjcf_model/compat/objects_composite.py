@@ -18,7 +18,6 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.base import AnyElement
 from mjcf_model.compat.objects_base import Vector
 from mjcf_model.compat.objects_generated import MujocoGeneratedObject
 from mjcf_model.compat.objects_quirks import (
@@ -30,7 +29,8 @@ from mjcf_model.compat.objects_quirks import (
 )
 from mjcf_model.compat.utils_text import array_to_string
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.traversal import with_children
+from mjcf_model.nodes.base import AnyElement
+from mjcf_model.tree.traversal import with_children
 
 __all__ = ["CompositeObject"]
 

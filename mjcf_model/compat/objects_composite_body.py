@@ -24,7 +24,6 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.base import AnyElement, GenericElement, TypedElement
 from mjcf_model.compat.objects_base import MujocoObject, Vector
 from mjcf_model.compat.objects_composite import _name_unnamed as name_unnamed
 from mjcf_model.compat.objects_document import as_node
@@ -42,8 +41,9 @@ from mjcf_model.compat.objects_quirks import (
 from mjcf_model.compat.utils_constants import BLUE, RED
 from mjcf_model.compat.utils_text import array_to_string
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.materials import CustomMaterial
-from mjcf_model.traversal import Path, walk, with_children
+from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
+from mjcf_model.transforms.materials import CustomMaterial
+from mjcf_model.tree.traversal import Path, walk, with_children
 
 __all__ = ["CompositeBodyObject", "HingedBoxObject"]
 

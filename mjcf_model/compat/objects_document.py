@@ -24,12 +24,12 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable
 from typing import Any
 
-from mjcf_model.base import AnyElement, GenericElement, TypedElement
 from mjcf_model.compat.objects_etree import EtreeView, replaced_at, subtree_at
 from mjcf_model.compat.objects_quirks import attribute
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.queries import find
-from mjcf_model.traversal import Path, with_children
+from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
+from mjcf_model.tree.queries import find
+from mjcf_model.tree.traversal import Path, with_children
 from serializers import from_etree
 
 __all__ = ["ModelBacked", "as_node"]

@@ -31,8 +31,8 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
-from mjcf_model.base import AnyElement, Comment, GenericElement, Node, TypedElement
-from mjcf_model.traversal import Path, with_children
+from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, Node, TypedElement
+from mjcf_model.tree.traversal import Path, with_children
 from serializers import from_etree
 from serializers.writer import attribute_texts
 

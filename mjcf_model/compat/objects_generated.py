@@ -17,7 +17,6 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.base import AnyElement, GenericElement
 from mjcf_model.compat.objects_base import MujocoObject, Vector, joint_specs
 from mjcf_model.compat.objects_naming import robosuite_prefixed
 from mjcf_model.compat.objects_quirks import (
@@ -30,8 +29,9 @@ from mjcf_model.compat.objects_quirks import (
 )
 from mjcf_model.compat.utils_text import array_to_string
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.materials import CustomMaterial
-from mjcf_model.traversal import with_children
+from mjcf_model.nodes.base import AnyElement, GenericElement
+from mjcf_model.transforms.materials import CustomMaterial
+from mjcf_model.tree.traversal import with_children
 
 __all__ = ["MujocoGeneratedObject", "PrimitiveObject", "material_parts"]
 

@@ -23,14 +23,14 @@ from __future__ import annotations
 
 from typing import Any
 
-from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.compat.objects_base import MujocoModel, Vector, recorded_names
 from mjcf_model.compat.objects_naming import robosuite_prefixed
 from mjcf_model.compat.objects_quirks import attribute, with_texts
 from mjcf_model.compat.objects_xml import MujocoXML
 from mjcf_model.compat.utils_materials import recolored
 from mjcf_model.compat.utils_text import string_to_array
-from mjcf_model.traversal import with_children
+from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
+from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import to_vec4
 
 __all__ = ["MujocoXMLModel", "named_geoms"]

@@ -7,7 +7,7 @@ environment makes the same objects at every reset, and objects of one kind
 differ only in sizes and colours, not in the names prefixing reads: the
 *naming skeleton* of a tree (:func:`naming_skeleton`: its shape, tags and the
 attributes that name things) decides where the prefix goes, so that is traced
-once per skeleton (:class:`~mjcf_model.composition_prefix.PrefixPlan`) and then
+once per skeleton (:class:`~mjcf_model.transforms.naming.repeated.PrefixPlan`) and then
 only written. The skeleton also decides the names robosuite records
 (:func:`~mjcf_model.compat.objects_base.recorded_names`), which read the geom
 groups too.
@@ -27,12 +27,12 @@ from __future__ import annotations
 from collections.abc import Callable, Hashable
 from typing import Any
 
-from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement, attribute_items
 from mjcf_model.compat.objects_memo import Memo
 from mjcf_model.compat.utils_naming import already_prefixed
-from mjcf_model.composition_prefix import PrefixPlan
-from mjcf_model.namespaces import SCHEMA
-from mjcf_model.naming import prefixed
+from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, attribute_items
+from mjcf_model.schema.namespaces import SCHEMA
+from mjcf_model.transforms.naming.renaming import prefixed
+from mjcf_model.transforms.naming.repeated import PrefixPlan
 from mjcf_model.values import Value
 
 __all__ = ["naming_skeleton", "robosuite_prefixed", "skeleton_memo"]
@@ -92,7 +92,7 @@ def naming_skeleton(node: AnyElement) -> Hashable:
     Example:
         >>> from mjcf_model import GenericElement
         >>> naming_skeleton(GenericElement(tag="geom", attributes={"name": "g", "size": "1"}))
-        (<class 'mjcf_model.base.GenericElement'>, 'geom', (('name', 'g'),), ())
+        (<class 'mjcf_model.nodes.base.GenericElement'>, 'geom', (('name', 'g'),), ())
 
     """
     return _skeleton(node, 0)

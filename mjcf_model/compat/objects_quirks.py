@@ -32,7 +32,6 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.compat import utils_constants
 from mjcf_model.compat.utils_bridge import attribute
 from mjcf_model.compat.utils_builders import (
@@ -50,10 +49,11 @@ from mjcf_model.compat.utils_scaling import (
     scaled_site,
 )
 from mjcf_model.compat.utils_text import array_to_string, text_of, three_factors
-from mjcf_model.composition_prefix import with_texts as checked_texts
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.scaling import _factors as checked_factors
-from mjcf_model.traversal import with_children
+from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
+from mjcf_model.transforms.naming.repeated import with_texts as checked_texts
+from mjcf_model.transforms.scaling.scaled import _factors as checked_factors
+from mjcf_model.tree.traversal import with_children
 
 __all__ = [
     "OBJECT_COLLISION_COLOR",

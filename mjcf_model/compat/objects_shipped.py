@@ -21,7 +21,7 @@ from mjcf_model.compat.objects_quirks import attribute, with_texts
 from mjcf_model.compat.objects_xml import MujocoXMLObject
 from mjcf_model.compat.utils_text import array_to_string, assets_root
 from mjcf_model.errors import MjcfLookupError
-from mjcf_model.traversal import walk
+from mjcf_model.tree.traversal import walk
 
 __all__ = [
     "BottleObject",

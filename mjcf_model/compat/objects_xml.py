@@ -25,7 +25,6 @@ import xml.dom.minidom
 import xml.etree.ElementTree as ET
 from typing import Any
 
-from mjcf_model.base import AnyElement, GenericElement, TypedElement
 from mjcf_model.compat.objects_base import (
     GEOMTYPE2GROUP,
     MujocoObject,
@@ -52,7 +51,8 @@ from mjcf_model.compat.objects_xmlfile import (
 )
 from mjcf_model.compat.utils_text import array_to_string, string_to_array
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.traversal import Path, walk, with_children
+from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
+from mjcf_model.tree.traversal import Path, walk, with_children
 from serializers import from_etree, to_etree
 
 __all__ = ["MujocoXML", "MujocoXMLObject", "section_children"]

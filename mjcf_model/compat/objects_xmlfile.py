@@ -24,12 +24,12 @@ import os
 import xml.etree.ElementTree as ET
 from typing import Any
 
-from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.compat.objects_memo import Memo
 from mjcf_model.compat.objects_quirks import OBJECT_COLLISION_COLOR, attribute, with_texts
-from mjcf_model.defaults import MAIN, DefaultClasses
 from mjcf_model.errors import MjcfLookupError
-from mjcf_model.traversal import Path, with_children
+from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
+from mjcf_model.tree.defaults import MAIN, DefaultClasses
+from mjcf_model.tree.traversal import Path, with_children
 from serializers import from_etree
 from serializers.writer import attribute_texts
 

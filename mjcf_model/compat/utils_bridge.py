@@ -28,7 +28,7 @@ from __future__ import annotations
 import xml.etree.ElementTree as ET
 from collections.abc import Iterator, Mapping
 
-from mjcf_model.base import (
+from mjcf_model.nodes.base import (
     AnyElement,
     Comment,
     Element,
@@ -37,8 +37,8 @@ from mjcf_model.base import (
     TypedElement,
     get_attribute,
 )
-from mjcf_model.base import with_attributes as _with_attributes
-from mjcf_model.traversal import Path, with_children
+from mjcf_model.nodes.base import with_attributes as _with_attributes
+from mjcf_model.tree.traversal import Path, with_children
 from mjcf_model.values import format_value
 from serializers import from_etree
 

@@ -22,9 +22,9 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterable, Mapping
 from typing import Any
 
-from mjcf_model.base import AttributeMap, GenericElement, build_node
 from mjcf_model.compat.utils_constants import RED
 from mjcf_model.compat.utils_text import convert_to_string
+from mjcf_model.nodes.base import AttributeMap, GenericElement, build_node
 from serializers import to_etree
 
 __all__ = [

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import os
 
-from mjcf_model import materials
+from mjcf_model.transforms import materials
 
 __all__ = [
     "ALL_TEXTURES",

@@ -24,7 +24,6 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.compat.utils_bridge import (
     attribute,
     edited,
@@ -37,8 +36,9 @@ from mjcf_model.compat.utils_builders import new_element
 from mjcf_model.compat.utils_constants import ALL_TEXTURES, TEXTURES
 from mjcf_model.compat.utils_naming import already_prefixed
 from mjcf_model.compat.utils_text import array_to_string, parse_numbers, xml_path_completion
-from mjcf_model.materials import DEFAULT_MATERIAL, with_material
-from mjcf_model.materials import CustomMaterial as FrozenMaterial
+from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
+from mjcf_model.transforms.materials import DEFAULT_MATERIAL, with_material
+from mjcf_model.transforms.materials import CustomMaterial as FrozenMaterial
 
 __all__ = [
     "CustomMaterial",
@@ -168,7 +168,7 @@ class CustomMaterial:
 def _default_material() -> CustomMaterial:
     """The material ``add_material`` uses when given none: a white flat cube texture.
 
-    It is the library's :data:`~mjcf_model.materials.DEFAULT_MATERIAL`, with the
+    It is the library's :data:`~mjcf_model.transforms.materials.DEFAULT_MATERIAL`, with the
     colours as the numpy arrays robosuite passes (so they read ``"1.0 1.0 1.0"``).
     """
     tex_attrib: dict[str, Any] = dict(DEFAULT_MATERIAL.tex_attrib)

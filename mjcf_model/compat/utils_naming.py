@@ -26,7 +26,6 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable, Collection, Iterable
 from typing import Any
 
-from mjcf_model.base import GenericElement, Node, TypedElement, attribute_items
 from mjcf_model.compat.utils_bridge import (
     edited,
     element_index,
@@ -35,6 +34,7 @@ from mjcf_model.compat.utils_bridge import (
     write_back,
 )
 from mjcf_model.compat.utils_constants import MUJOCO_NAMED_ATTRIBUTES
+from mjcf_model.nodes.base import GenericElement, Node, TypedElement, attribute_items
 
 __all__ = ["add_prefix", "already_prefixed", "prefixed_attributes"]
 

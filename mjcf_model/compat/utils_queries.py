@@ -17,7 +17,6 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from mjcf_model.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.compat.utils_bridge import (
     attribute,
     element_index,
@@ -27,8 +26,9 @@ from mjcf_model.compat.utils_bridge import (
     shallow_node,
 )
 from mjcf_model.compat.utils_constants import SENSOR_TYPES
-from mjcf_model.queries import find_all, parent_of
-from mjcf_model.traversal import walk
+from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
+from mjcf_model.tree.queries import find_all, parent_of
+from mjcf_model.tree.traversal import walk
 
 __all__ = [
     "_element_filter",

@@ -47,9 +47,9 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from mjcf_model.base import GenericElement, Node, TypedElement, with_attributes
 from mjcf_model.compat.utils_bridge import attribute, shallow_node, write_attributes
 from mjcf_model.compat.utils_text import array_to_string, normalize_scale_array, parse_numbers
+from mjcf_model.nodes.base import GenericElement, Node, TypedElement, with_attributes
 
 __all__ = [
     "normalize_scale_array",

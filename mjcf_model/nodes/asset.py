@@ -8,8 +8,8 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from mjcf_model.base import TypedElement
-from mjcf_model.declaring import (
+from mjcf_model.nodes.base import TypedElement
+from mjcf_model.nodes.declaring import (
     boolean,
     integer,
     integers,

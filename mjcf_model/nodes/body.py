@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from mjcf_model.base import Node, TypedElement
-from mjcf_model.declaring import (
+from mjcf_model.nodes.base import Node, TypedElement
+from mjcf_model.nodes.declaring import (
     boolean,
     integer,
     keyword,
@@ -26,8 +26,8 @@ from mjcf_model.declaring import (
     vec3,
     vec6,
 )
-from mjcf_model.keywords import JOINT_TYPES, LIMITED
 from mjcf_model.nodes.geom import Camera, Geom, Light, Oriented, Site
+from mjcf_model.schema.keywords import JOINT_TYPES, LIMITED
 from mjcf_model.values import Floats
 
 __all__ = [

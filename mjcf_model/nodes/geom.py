@@ -8,8 +8,8 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from mjcf_model.base import TypedElement
-from mjcf_model.declaring import (
+from mjcf_model.nodes.base import TypedElement
+from mjcf_model.nodes.declaring import (
     boolean,
     integer,
     integers,
@@ -27,7 +27,7 @@ from mjcf_model.declaring import (
     vec4,
     vec6,
 )
-from mjcf_model.keywords import GEOM_TYPES, LIGHT_TYPES, TRACKING_MODES
+from mjcf_model.schema.keywords import GEOM_TYPES, LIGHT_TYPES, TRACKING_MODES
 from mjcf_model.values import Floats, Ints
 
 __all__ = ["Camera", "Geom", "Light", "Oriented", "Site"]

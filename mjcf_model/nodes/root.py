@@ -13,14 +13,14 @@ from typing import ClassVar
 
 import attrs
 
-from mjcf_model.base import TypedElement
-from mjcf_model.declaring import node, text
 from mjcf_model.nodes.actuator import Actuator
 from mjcf_model.nodes.asset import Asset
+from mjcf_model.nodes.base import TypedElement
 from mjcf_model.nodes.body import Worldbody
 from mjcf_model.nodes.compiler import Compiler, Option, Size, Statistic
 from mjcf_model.nodes.contact import Contact
 from mjcf_model.nodes.custom import Custom
+from mjcf_model.nodes.declaring import node, text
 from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.deformable import Deformable
 from mjcf_model.nodes.equality import Equality

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from mjcf_model.base import TypedElement
-from mjcf_model.declaring import (
+from mjcf_model.nodes.base import TypedElement
+from mjcf_model.nodes.declaring import (
     integer,
     keyword,
     node,
@@ -22,7 +22,7 @@ from mjcf_model.declaring import (
     vec2,
     vec4,
 )
-from mjcf_model.keywords import LIMITED
+from mjcf_model.schema.keywords import LIMITED
 from mjcf_model.values import Floats
 
 __all__ = [

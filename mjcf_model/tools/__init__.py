@@ -1,0 +1,1 @@
+"""Tools over whole models: comparing compiled models, the round-trip check, the command line."""

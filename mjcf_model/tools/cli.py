@@ -1,0 +1,142 @@
+"""The ``mjcf-model`` command line.
+
+``mjcf-model check FILE...`` loads each file, writes it back, compiles the
+original and the written model with MuJoCo and reports whether the two are
+identical field by field. It exits with status 1 when any file differs or
+fails, 0 otherwise. ``mjcf-model check --example`` runs it on the example
+model that ships with the package.
+
+Example:
+    >>> main(["check", "--example", "--quiet"])
+    0
+
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Iterable, Iterator, Sequence
+from importlib import resources
+from typing import TextIO, TypeVar
+
+from mjcf_model.tools.check import CheckResult, check_file
+
+__all__ = ["main"]
+
+_T = TypeVar("_T")
+
+#: Draw a progress bar when at least this many files are checked.
+_PROGRESS_FROM = 5
+
+
+def example_path() -> str:
+    """The path of the example model shipped with the package.
+
+    Example:
+        >>> example_path().endswith("arm.xml")
+        True
+
+    """
+    return str(resources.files("mjcf_model") / "examples" / "arm.xml")
+
+
+def _progress(items: Sequence[_T], stream: TextIO, enabled: bool) -> Iterator[_T]:
+    """Yield ``items``, drawing a one-line progress bar on ``stream`` as it goes."""
+    total = len(items)
+    for done, item in enumerate(items, start=1):
+        yield item
+        if enabled:
+            width = 30
+            filled = width * done // total
+            bar = "#" * filled + "-" * (width - filled)
+            stream.write(f"\r[{bar}] {done}/{total}")
+            stream.flush()
+    if enabled:
+        stream.write("\n")
+
+
+def _report(result: CheckResult, out: TextIO, verbose: bool) -> None:
+    if result.status == "identical":
+        if verbose:
+            out.write(f"identical     {result.path}\n")
+    elif result.status == "different":
+        fields = ", ".join(result.differences)
+        out.write(f"DIFFERENT     {result.path}\n              fields: {fields}\n")
+    elif result.status == "not-compiled":
+        out.write(f"not compiled  {result.path}\n              MuJoCo: {result.message}\n")
+    else:
+        out.write(f"ERROR         {result.path}\n              {result.message}\n")
+
+
+def _summary(results: Iterable[CheckResult]) -> dict[str, int]:
+    counts = {"identical": 0, "different": 0, "not-compiled": 0, "error": 0}
+    for result in results:
+        counts[result.status] += 1
+    return counts
+
+
+def _check(arguments: argparse.Namespace) -> int:
+    files: list[str] = list(arguments.files)
+    if arguments.example:
+        files.append(example_path())
+    if not files:
+        sys.stderr.write("mjcf-model check: no files given (try --example)\n")
+        return 2
+    show_bar = len(files) >= _PROGRESS_FROM and not arguments.quiet and sys.stderr.isatty()
+    results = []
+    for path in _progress(files, sys.stderr, show_bar):
+        result = check_file(path, inline_includes=arguments.inline_includes)
+        results.append(result)
+        if not arguments.quiet:
+            if show_bar:
+                sys.stderr.write("\r\033[K")
+            _report(result, sys.stdout, verbose=True)
+    counts = _summary(results)
+    if not arguments.quiet:
+        parts = ", ".join(f"{n} {status}" for status, n in counts.items() if n)
+        sys.stdout.write(f"{len(results)} files: {parts}\n")
+    failed = counts["different"] + counts["error"]
+    if arguments.strict:
+        failed += counts["not-compiled"]
+    return 1 if failed else 0
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="mjcf-model", description="Typed, immutable MJCF: command-line tools."
+    )
+    commands = parser.add_subparsers(dest="command", required=True)
+    check = commands.add_parser(
+        "check",
+        help="round-trip MJCF files and compare the compiled models",
+        description=(
+            "Load each file, write it back, compile the original and the written "
+            "model with MuJoCo and compare every field. Exit status 1 if any file "
+            "differs or fails."
+        ),
+    )
+    check.add_argument("files", nargs="*", help="MJCF files to check")
+    check.add_argument("--example", action="store_true", help="also check the bundled example")
+    check.add_argument(
+        "--inline-includes", action="store_true", help="inline <include> files before writing"
+    )
+    check.add_argument(
+        "--strict", action="store_true", help="count files MuJoCo itself rejects as failures"
+    )
+    check.add_argument("-q", "--quiet", action="store_true", help="print nothing; exit status only")
+    check.set_defaults(run=_check)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; return the exit status.
+
+    Example:
+        >>> main(["check", "--example", "--quiet"])
+        0
+
+    """
+    arguments = _parser().parse_args(argv)
+    status: int = arguments.run(arguments)
+    return status

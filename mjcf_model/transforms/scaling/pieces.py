@@ -1,0 +1,296 @@
+"""The pieces scaling rules are made of.
+
+A rule reads an element (and the classes it inherits from) and returns the
+attribute changes that scale it, given the
+:class:`~mjcf_model.transforms.scaling.context.ScaleContext` of the scaling;
+:mod:`mjcf_model.transforms.scaling.rules` assembles one per schema key from these
+pieces.
+
+>>> from mjcf_model import Body
+>>> points("pos")[0](Body(pos=[1, 2, 3]), (), ScaleContext(factors=(2.0, 1.0, 1.0)))
+{'pos': (2.0, 2.0, 3.0)}
+"""
+
+from __future__ import annotations
+
+import functools
+import operator
+from collections.abc import Callable, Sequence
+from typing import Any
+
+import numpy as np
+
+from mjcf_model.nodes.base import AnyElement, get_attribute
+from mjcf_model.transforms.scaling.context import ScaleContext, numbers, times, times_cycle
+from mjcf_model.tree.defaults import DefaultClasses
+from mjcf_model.tree.queries import attribute_values
+from mjcf_model.values import Value
+
+__all__ = [
+    "NO_LENGTHS",
+    "Changes",
+    "Rule",
+    "ValueRule",
+    "ValueScale",
+    "builtin_default",
+    "combine",
+    "inertias",
+    "lengths",
+    "masses",
+    "parts",
+    "points",
+    "with_builtin",
+]
+
+Changes = dict[str, Value | None]
+
+
+#: ``rule(element, ancestors, context)``: the attribute changes that scale ``element``.
+Rule = Callable[[AnyElement, Sequence[AnyElement], ScaleContext], Changes]
+
+
+@functools.cache
+def builtin_default(tag: str, attribute: str) -> tuple[float, ...]:
+    """MuJoCo's built-in default of an attribute, read from an empty ``MjSpec``.
+
+    Values MuJoCo keeps in single precision are given by their shortest text
+    (``0.02``, not ``0.019999999552965164``).
+
+    Example:
+        >>> builtin_default("site", "size"), builtin_default("geom", "density")
+        ((0.005, 0.005, 0.005), (1000.0,))
+
+    """
+    import mujoco
+
+    value = getattr(getattr(mujoco.MjSpec().default, tag), attribute)
+    values = []
+    for number in np.atleast_1d(np.asarray(value, dtype=float)):
+        single = np.float32(number)
+        values.append(float(str(single)) if float(single) == number else float(number))
+    return tuple(values)
+
+
+def _in_default(ancestors: Sequence[AnyElement]) -> bool:
+    return bool(ancestors) and ancestors[-1].tag == "default"
+
+
+#: ``scale(value, context)``: the scaled value of one written attribute, ``None`` to keep it.
+ValueScale = Callable[[Value, ScaleContext], Value | None]
+
+
+class ValueRule:
+    """The rule that scales one attribute, where written, by a function of its value alone.
+
+    :func:`combine` reads the attributes of all the value rules it holds at once.
+
+    Example:
+        >>> from mjcf_model import Body
+        >>> rule = ValueRule("pos", lambda value, context: value[:2] + (0.0,))
+        >>> rule(Body(pos=[1, 2, 3]), (), ScaleContext(factors=(2.0, 2.0, 2.0)))
+        {'pos': (1.0, 2.0, 0.0)}
+
+    """
+
+    __slots__ = ("attribute", "scale")
+
+    def __init__(self, attribute: str, scale: ValueScale) -> None:
+        #: The attribute scaled.
+        self.attribute = attribute
+        #: Its scaled value, given the written one.
+        self.scale = scale
+
+    def __call__(
+        self, element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+    ) -> Changes:
+        """The change of :attr:`attribute` on ``element``."""
+        value = get_attribute(element, self.attribute)
+        new = None if value is None else self.scale(value, context)
+        return {} if new is None else {self.attribute: new}
+
+
+def _readable(value: Value) -> bool:
+    """Whether ``value`` holds numbers (text a typed field keeps may not)."""
+    return type(value) is tuple or type(value) is float or numbers(value) is not None
+
+
+def _by_cycle(cycle: str) -> ValueScale:
+    """Multiply by the factors ``context.cycles`` keeps under the name ``cycle``."""
+    read = operator.attrgetter(cycle)
+
+    def scale(value: Value, context: ScaleContext) -> Value | None:
+        factors: tuple[float, ...] = read(context.cycles)
+        if type(value) is tuple and len(factors) == 1:  # the common case, inline
+            factor = factors[0]
+            return tuple([v * factor for v in value])
+        return times_cycle(value, factors) if _readable(value) else None
+
+    return scale
+
+
+_POINTS, _LENGTHS, _MASSES, _INERTIAS = map(_by_cycle, ("per_axis", "mean", "mass", "inertia"))
+
+
+def points(*attributes: str) -> list[Rule]:
+    """Positions: x, y and z (repeated for lists of points) scale per axis."""
+    return [ValueRule(a, _POINTS) for a in attributes]
+
+
+def lengths(*attributes: str) -> list[Rule]:
+    """Lengths without a direction: the mean factor."""
+    return [ValueRule(a, _LENGTHS) for a in attributes]
+
+
+def parts(attribute: str, unit: tuple[float, ...], start: int) -> Rule:
+    """Multiply the values from index ``start`` on (friction: torsion and rolling)."""
+
+    def scale(value: Value, context: ScaleContext) -> Value | None:
+        found = numbers(value)
+        if found is None:
+            return None
+        factors = [*unit[:start], *[context.mean] * (len(found) - start)][: len(found)]
+        return tuple(n * f for n, f in zip(found, factors, strict=True))
+
+    return ValueRule(attribute, scale)
+
+
+def masses(*attributes: str) -> list[Rule]:
+    """Masses: unchanged, or with the volume under ``mass="volume"``."""
+    return [ValueRule(a, _MASSES) for a in attributes]
+
+
+def inertias(*attributes: str) -> list[Rule]:
+    """Inertias: length squared, times the mass factor (per axis an approximation)."""
+    return [ValueRule(a, _INERTIAS) for a in attributes]
+
+
+def with_builtin(
+    attribute: str,
+    tag: str,
+    builtin: Callable[[], tuple[float, ...]],
+    factors: Callable[[AnyElement, Sequence[AnyElement], ScaleContext], Any],
+) -> Rule:
+    """Scale ``attribute``; where nothing sets it, write MuJoCo's default (``builtin()``) scaled.
+
+    A partial value (a sphere site's one size) is completed from its classes and
+    the built-in default first, because the values it leaves out are lengths too.
+    In a default class only what is written is scaled.
+    """
+
+    def rule(
+        element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+    ) -> Changes:
+        value = get_attribute(element, attribute)
+        own = numbers(value)
+        full = None if _in_default(ancestors) else _unwritten(element, ancestors, context, own)
+        if full is not None:
+            return {attribute: times(_completed(full, own), factors(element, ancestors, context))}
+        if value is None or own is None:
+            return {}
+        return {attribute: times(value, factors(element, ancestors, context))}
+
+    def _unwritten(
+        element: AnyElement,
+        ancestors: Sequence[AnyElement],
+        context: ScaleContext,
+        own: tuple[float, ...] | None,
+    ) -> tuple[float, ...] | None:
+        """The full value the element's classes and MuJoCo give it; ``None`` if it is not needed.
+
+        It is not needed when the element writes every value, or its classes do.
+        """
+        full = builtin()
+        if own is not None and len(own) >= len(full):
+            return None
+        classes = context.classes
+        if not classes.sets(tag):
+            return full
+        name = classes.class_of(element, ancestors)
+        full, covered = context.cached(
+            ("builtin", tag, attribute, name),
+            lambda: _class_values(classes, name, tag, attribute),
+        )
+        return None if covered >= len(full) else full
+
+    def _class_values(
+        classes: DefaultClasses, name: str, tag: str, attribute: str
+    ) -> tuple[tuple[float, ...], int]:
+        """The built-in value completed by class ``name``, and how many values classes write."""
+        full = list(builtin())
+        covered = 0  # how many leading values the classes write (and scale themselves)
+        for current in reversed(classes.chain(name)):
+            setting = classes.settings.get((current, tag))
+            inherited = numbers(get_attribute(setting, attribute)) if setting else None
+            if inherited:
+                full[: len(inherited)] = inherited
+                covered = max(covered, len(inherited))
+        return tuple(full), covered
+
+    return rule
+
+
+def _completed(full: tuple[float, ...], own: tuple[float, ...] | None) -> float | tuple[float, ...]:
+    """``full`` with its first values replaced by ``own``; one number alone."""
+    values = list(full)
+    values[: len(own or ())] = own or ()
+    return tuple(values) if len(values) > 1 else values[0]
+
+
+def combine(*rules: Rule | list[Rule]) -> Rule:
+    """One rule applying several.
+
+    The attributes of the :class:`ValueRule` parts are read at once and scaled
+    first (a value that scales to itself, such as a zero position, is left out);
+    the other rules follow in order, so one of them may overwrite such an
+    attribute. Combined rules given here are merged into this one.
+
+    Example:
+        >>> from mjcf_model import Geom
+        >>> rule = combine(points("pos"), lengths("margin"))
+        >>> rule(Geom(pos=[1, 0, 0], margin=0.5), (), ScaleContext(factors=(2.0, 2.0, 2.0)))
+        {'pos': (2.0, 0.0, 0.0), 'margin': 1.0}
+
+    """
+    flat: list[Rule] = []
+    for given in rules:
+        for part in given if isinstance(given, list) else [given]:
+            flat.extend(part.parts if isinstance(part, _Combined) else [part])
+    return _Combined(flat)
+
+
+class _Combined:
+    """The rule :func:`combine` makes."""
+
+    __slots__ = ("names", "others", "parts", "scales")
+
+    def __init__(self, parts: list[Rule]) -> None:
+        self.parts = parts
+        values = [part for part in parts if isinstance(part, ValueRule)]
+        self.names = tuple(part.attribute for part in values)
+        self.scales = tuple(part.scale for part in values)
+        self.others = [part for part in parts if not isinstance(part, ValueRule)]
+
+    def __call__(
+        self, element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+    ) -> Changes:
+        changes: Changes = {}
+        if self.names:
+            written = attribute_values(element, self.names)
+            for name, value, scale in zip(self.names, written, self.scales, strict=True):
+                if value is not None:
+                    new = scale(value, context)
+                    if new is not None and new != value:  # ``0 0 0`` stays: the node is shared
+                        changes[name] = new
+        for part in self.others:
+            changes.update(part(element, ancestors, context))
+        return changes
+
+
+def _no_lengths(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> Changes:
+    return {}
+
+
+#: The rule of elements without lengths.
+NO_LENGTHS: Rule = _no_lengths

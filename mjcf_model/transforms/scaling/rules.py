@@ -1,0 +1,385 @@
+"""The scaling rule of every schema key, built from :mod:`mjcf_model.transforms.scaling.pieces`.
+
+>>> from mjcf_model import Site
+>>> from mjcf_model.transforms.scaling.context import ScaleContext
+>>> RULES["body/site"](Site(pos=[1, 0, 0]), (), ScaleContext(factors=(2.0, 2.0, 2.0)))
+{'pos': (2.0, 0.0, 0.0), 'size': (0.01, 0.01, 0.01)}
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Mapping, Sequence
+from types import MappingProxyType
+
+import numpy as np
+
+from mjcf_model.errors import MjcfValueError
+from mjcf_model.nodes.base import AnyElement, get_attribute
+from mjcf_model.schema.namespaces import SCHEMA
+from mjcf_model.transforms.scaling.context import ScaleContext, numbers, times
+from mjcf_model.transforms.scaling.mass import geom_density
+from mjcf_model.transforms.scaling.pieces import (
+    NO_LENGTHS,
+    Changes,
+    Rule,
+    ValueRule,
+    builtin_default,
+    combine,
+    inertias,
+    lengths,
+    masses,
+    parts,
+    points,
+    with_builtin,
+)
+from mjcf_model.transforms.scaling.plugins import makes_sdf, sdf_config, sdf_mesh_scale
+from mjcf_model.tree.queries import attribute_values
+from mjcf_model.values import Value, format_value
+
+__all__ = ["RULES", "UNSCALED_BY_DECISION"]
+
+#: Elements with a length-sounding attribute that are deliberately left alone, and why.
+UNSCALED_BY_DECISION: Mapping[str, str] = MappingProxyType(
+    {
+        "default/tendon": "shared by spatial and fixed tendons; each tendon writes its own "
+        "scaled lengths instead",
+        "custom/numeric": "size is a count of values, not a length",
+    }
+)
+
+
+def _mean(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext) -> float:
+    return context.mean
+
+
+def _per_axis(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> tuple[float, float, float]:
+    return context.factors
+
+
+def _builtin_length(attribute: str, tag: str) -> Rule:
+    """A length MuJoCo gives a non-zero default (camera ``ipd``, light ``bulbradius``)."""
+    return with_builtin(attribute, tag, functools.partial(builtin_default, tag, attribute), _mean)
+
+
+def _size_factors(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> tuple[float, ...]:
+    """The factors of a geom's or site's size, by how many values it writes (see ``Cycles``)."""
+    written = len(numbers(get_attribute(element, "size")) or ())
+    return context.cycles.sizes[written] if written < 4 else ()
+
+
+def _scaled_size(value: Value, context: ScaleContext) -> Value | None:
+    """A geom's ``size`` scaled (every value is a length, whatever the type)."""
+    size = value if type(value) is tuple else numbers(value)
+    if size is None:
+        return None
+    factors = context.cycles.sizes[len(size)] if len(size) < 4 else ()
+    return tuple([n * f for n, f in zip(size, factors, strict=False)])
+
+
+_geom_size = ValueRule("size", _scaled_size)
+
+
+_site_size = with_builtin(
+    "size", "site", functools.partial(builtin_default, "site", "size"), _size_factors
+)
+
+
+def _slide_factor(kind: object, axis: object, context: ScaleContext) -> float:
+    if kind != "slide":
+        return 1.0
+    return context.along(numbers(axis) or (0.0, 0.0, 1.0))  # type: ignore[arg-type]
+
+
+_JOINT_LENGTHS = ("range", "ref", "springref", "margin")
+_JOINT_READ = ("type", "axis", *_JOINT_LENGTHS)
+
+
+def _joint(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext) -> Changes:
+    """Ranges, references and margins are lengths for slide joints only.
+
+    A value a joint inherits was scaled in its class when that class's joints
+    slide; where the joint's own type differs, the right value is written on it.
+    """
+    classes = context.classes
+    kind, axis, *lengths_written = attribute_values(element, _JOINT_READ)
+    inherited = classes.inherited(element, ancestors, "joint")
+    if kind is None and "type" in inherited:
+        kind = inherited["type"][0]
+    if axis is None and "axis" in inherited:
+        axis = inherited["axis"][0]
+    factor = _slide_factor(kind, axis, context)
+    changes: Changes = {}
+    for attribute, own in zip(_JOINT_LENGTHS, lengths_written, strict=True):
+        if own is not None:
+            if factor != 1.0:
+                changes[attribute] = times(own, factor)
+            continue
+        found = inherited.get(attribute)
+        if found is None:
+            continue
+        value, provider = found
+        provider_given = classes.given(provider, "joint")
+        provider_kind = provider_given.get("type")
+        provider_axis = provider_given.get("axis")
+        provider_factor = _slide_factor(
+            provider_kind and provider_kind[0], provider_axis and provider_axis[0], context
+        )
+        if provider_factor != factor:
+            changes[attribute] = times(value, factor)
+    return changes
+
+
+def _materialized(attribute: str, tag: str) -> Rule:
+    """Write a tendon length scaled on the element, whether its own or inherited.
+
+    The default tendon is shared by spatial and fixed tendons, so it is left alone.
+    """
+
+    def rule(
+        element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+    ) -> Changes:
+        value = context.classes.resolve(element, ancestors, attribute, tag)
+        if numbers(value) is None:
+            return {}
+        assert value is not None
+        return {attribute: times(value, context.mean)}
+
+    return rule
+
+
+_TENDON_LENGTHS = [_materialized(a, "tendon") for a in ("range", "springlength", "margin")]
+
+
+def _spatial_tendon(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> Changes:
+    changes = combine(*_TENDON_LENGTHS)(element, ancestors, context)
+    width = numbers(context.classes.resolve(element, ancestors, "width", "tendon"))
+    changes["width"] = (width or builtin_default("tendon", "width"))[0] * context.mean
+    return changes
+
+
+def _fixed_tendon(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> Changes:
+    """A fixed tendon's length is a length only when every joint in it slides."""
+    joints = [context.joint(get_attribute(c, "joint")) for c in element.elements]
+    if not joints or any(j is None or j.type != "slide" for j in joints):
+        return {}
+    return combine(*_TENDON_LENGTHS)(element, ancestors, context)
+
+
+def _position_ctrlrange(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> Changes:
+    """A position actuator on a slide joint takes targets in length units."""
+    info = context.joint(get_attribute(element, "joint"))
+    value = get_attribute(element, "ctrlrange")
+    if info is None or info.type != "slide" or value is None:
+        return {}
+    return {"ctrlrange": times(value, context.along(info.axis))}
+
+
+def _keyframe(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> Changes:
+    """Mocap positions, and the slide and free-joint parts of ``qpos`` and ``qvel``."""
+    changes = points("mpos")[0](element, ancestors, context)
+    if context.layout is None:
+        return changes
+    qpos: list[float] = []
+    qvel: list[float] = []
+    for joint in context.layout:
+        if joint.type == "free":
+            qpos += [*context.factors, 1, 1, 1, 1]
+            qvel += [*context.factors, 1, 1, 1]
+        elif joint.type == "ball":
+            qpos += [1, 1, 1, 1]
+            qvel += [1, 1, 1]
+        else:
+            factor = context.along(joint.axis) if joint.type == "slide" else 1.0
+            qpos.append(factor)
+            qvel.append(factor)
+    for attribute, factors in (("qpos", qpos), ("qvel", qvel)):
+        value = numbers(get_attribute(element, attribute))
+        if value is not None and len(value) == len(factors):
+            changes[attribute] = tuple(v * f for v, f in zip(value, factors, strict=True))
+    return changes
+
+
+def _hfield(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext) -> Changes:
+    size = numbers(get_attribute(element, "size"))
+    if size is None:
+        return {}
+    x, y, z = context.factors
+    return {"size": tuple(n * f for n, f in zip(size, (x, y, z, z), strict=False))}
+
+
+def _weld_relpose(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> Changes:
+    """The first three of ``relpose`` are a position; the rest a quaternion."""
+    pose = numbers(get_attribute(element, "relpose"))
+    if pose is None:
+        return {}
+    return {
+        "relpose": tuple(v * f for v, f in zip(pose, (*context.factors, 1, 1, 1, 1), strict=False))
+    }
+
+
+def _cylinder_area(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> Changes:
+    area = get_attribute(element, "area")
+    return {} if area is None else {"area": times(area, context.mean**2)}
+
+
+_GEOM = combine(
+    points("pos", "fromto"),
+    _geom_size,
+    lengths("margin", "gap"),
+    parts("friction", (1.0,), 1),
+    masses("mass"),
+)
+_SITE = combine(points("pos", "fromto"), _site_size)
+_CAMERA = combine(
+    points("pos"),
+    _builtin_length("ipd", "camera"),
+    lengths("focal", "sensorsize", "principal"),
+)
+_LIGHT = combine(
+    points("pos"),
+    _builtin_length("bulbradius", "light"),
+    _builtin_length("range", "light"),
+)
+_CONTACT = combine(lengths("margin", "gap"), parts("friction", (1.0, 1.0), 2))
+_ACTUATOR = combine(lengths("cranklength"))
+_MESH_SCALE = with_builtin(
+    "scale", "mesh", functools.partial(builtin_default, "mesh", "scale"), _per_axis
+)
+
+
+def _mesh(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext) -> Changes:
+    """A mesh made by an SDF plugin scales through the plugin's settings, not ``scale``."""
+    rule = sdf_mesh_scale if makes_sdf(element) else _MESH_SCALE
+    return rule(element, ancestors, context)
+
+
+#: The flexcomp types whose points MuJoCo multiplies by ``scale`` (the others ignore it).
+_POINT_TYPES = frozenset({"direct", "mesh", "gmsh"})
+#: MuJoCo's default flexcomp ``spacing`` and ``inertiabox`` (``user_flexcomp.cc``).
+_FLEXCOMP_SPACING, _FLEXCOMP_INERTIABOX = (0.02, 0.02, 0.02), (0.005,)
+_FLEX_RADIUS = with_builtin(
+    "radius", "flex", functools.partial(builtin_default, "flex", "radius"), _mean
+)
+_FLEXCOMP_COMMON = combine(points("pos"), _FLEX_RADIUS, masses("mass"))
+_FLEXCOMP_SCALE = with_builtin(
+    "scale", "flexcomp", functools.partial(builtin_default, "mesh", "scale"), _per_axis
+)
+
+
+def _flexcomp(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> Changes:
+    """Each generated point once: through ``scale`` or through ``spacing``, never both.
+
+    MuJoCo multiplies the points of the ``direct``, ``mesh`` and ``gmsh`` types
+    (``point``, the file's vertices, and ``origin``) by ``scale``, and builds the
+    other types from ``spacing`` alone. A ``disc``'s points grow with the square
+    of its spacing, so that spacing takes the square root of the factors; it must
+    still exceed twice the radius plus the margin, which grow linearly.
+    """
+    changes = _FLEXCOMP_COMMON(element, ancestors, context)
+    box = numbers(get_attribute(element, "inertiabox")) or _FLEXCOMP_INERTIABOX
+    changes["inertiabox"] = format_value(box[0] * context.mean)  # a text field
+    kind = get_attribute(element, "type") or "grid"
+    if kind in _POINT_TYPES:
+        return {**changes, **_FLEXCOMP_SCALE(element, ancestors, context)}
+    spacing = numbers(get_attribute(element, "spacing")) or _FLEXCOMP_SPACING
+    factors = np.sqrt(context.factors) if kind == "disc" else np.asarray(context.factors)
+    changes["spacing"] = times(tuple(spacing), factors)
+    radius = (numbers(changes.get("radius")) or (0.0,))[0]
+    margin = sum(
+        (numbers(get_attribute(c, "margin")) or (0.0,))[0]
+        for c in element.elements
+        if c.tag == "contact"
+    )
+    if (
+        kind == "disc"
+        and min(numbers(changes["spacing"]) or ()) < 2 * radius + margin * context.mean
+    ):
+        raise MjcfValueError(
+            f"cannot scale the disc flexcomp {get_attribute(element, 'name')!r} by "
+            f"{context.factors}: its spacing grows with the square root of the factor but "
+            "must exceed twice its radius plus its margin, which grow with the factor; "
+            "use a smaller factor or a larger spacing"
+        )
+    return changes
+
+
+_EXPLICIT: dict[str, Rule] = {
+    "option": combine(lengths("o_margin")),
+    "compiler": combine(masses("boundmass", "settotalmass"), inertias("boundinertia")),
+    "statistic": combine(
+        points("center"), lengths("extent", "meansize"), masses("meanmass"), inertias("meaninertia")
+    ),
+    "default/mesh": combine(points("scale")),
+    "default/joint": combine(points("pos"), _joint),
+    "default/geom": _GEOM,
+    "default/site": _SITE,
+    "default/camera": _CAMERA,
+    "default/light": _LIGHT,
+    "default/pair": _CONTACT,
+    "asset/mesh": _mesh,
+    "asset/mesh/plugin/config": sdf_config,
+    "body/geom/plugin/config": sdf_config,
+    "extension/plugin/instance/config": sdf_config,
+    "asset/hfield": _hfield,
+    "asset/skin": combine(points("vertex"), lengths("inflate")),
+    "asset/skin/bone": combine(points("bindpos")),
+    "body": combine(points("pos")),
+    "body/inertial": combine(points("pos"), masses("mass"), inertias("diaginertia", "fullinertia")),
+    "body/joint": combine(points("pos"), _joint),
+    "body/geom": combine(_GEOM, geom_density),
+    "body/site": _SITE,
+    "body/camera": _CAMERA,
+    "body/light": _LIGHT,
+    "body/flexcomp": _flexcomp,
+    "body/flexcomp/elasticity": combine(lengths("thickness")),
+    "body/flexcomp/contact": combine(lengths("margin", "gap")),
+    "body/frame": combine(points("pos")),
+    "body/replicate": combine(points("offset")),
+    "deformable/flex": combine(points("vertex", "nodecoord"), _FLEX_RADIUS),
+    "deformable/flex/contact": combine(lengths("margin", "gap")),
+    "deformable/flex/elasticity": combine(lengths("thickness")),
+    "deformable/skin": combine(points("vertex"), lengths("inflate")),
+    "deformable/skin/bone": combine(points("bindpos")),
+    "contact/pair": _CONTACT,
+    "tendon/spatial": _spatial_tendon,
+    "tendon/fixed": _fixed_tendon,
+    "equality/connect": combine(points("anchor")),
+    "equality/weld": combine(points("anchor"), _weld_relpose),
+    "actuator/position": combine(_ACTUATOR, _position_ctrlrange),
+    "actuator/cylinder": combine(_ACTUATOR, lengths("diameter"), _cylinder_area),
+    "default/cylinder": combine(_ACTUATOR, lengths("diameter"), _cylinder_area),
+    "keyframe/key": _keyframe,
+}
+
+
+def _rule_of(key: str) -> Rule:
+    if key in _EXPLICIT:
+        return _EXPLICIT[key]
+    section = key.split("/")[0]
+    actuator_default = section == "default" and "cranklength" in SCHEMA[key].attributes
+    if (section == "actuator" and not key.endswith("/config")) or actuator_default:
+        return _ACTUATOR
+    return NO_LENGTHS
+
+
+#: The scaling rule of every schema key (``NO_LENGTHS`` where nothing is a length).
+RULES: Mapping[str, Rule] = MappingProxyType({key: _rule_of(key) for key in SCHEMA})
