@@ -58,6 +58,9 @@ def build_wheel() -> Path:
     """Build the wheel of this checkout into ``WORK/dist`` and return its path."""
     dist = WORK / "dist"
     shutil.rmtree(dist, ignore_errors=True)
+    # setuptools builds in build/lib and keeps what an earlier build left there: a
+    # module since moved or deleted would still be packed into the wheel
+    shutil.rmtree(SOURCE_TREE / "build" / "lib", ignore_errors=True)
     run(
         [sys.executable, "-m", "pip", "wheel", "--no-deps", "--quiet", "-w", str(dist), "."],
         cwd=SOURCE_TREE,

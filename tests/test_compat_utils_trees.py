@@ -21,7 +21,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mjcf_model.compat.utils_constants import MUJOCO_NAMED_ATTRIBUTES
+from mjcf_model.compat.mjcf_utils.constants import MUJOCO_NAMED_ATTRIBUTES
 from mjcf_model.nodes import Body, Geom, Joint, Mesh, Site
 from mjcf_model.strategies import elements
 from serializers import to_etree

@@ -13,6 +13,7 @@ import importlib.metadata
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import sysconfig
@@ -46,6 +47,7 @@ def wheel() -> Path:
     if given:
         return Path(given)
     dist = Path(tempfile.mkdtemp(prefix="mjcf-model-wheel-"))
+    shutil.rmtree(source_tree() / "build" / "lib", ignore_errors=True)  # stale modules
     subprocess.run(
         [sys.executable, "-m", "pip", "wheel", "--no-deps", "--quiet", "-w", str(dist), "."],
         cwd=source_tree(),
@@ -82,7 +84,7 @@ def test_wheel_holds_every_package_file_and_nothing_else() -> None:
         if path.is_file() and "__pycache__" not in path.parts
     }
     packaged = {name for name in _wheel_names() if ".dist-info/" not in name}
-    assert {"mjcf_model/nodes/body.py", "mjcf_model/compat/objects.py"} <= sources
+    assert {"mjcf_model/nodes/body.py", "mjcf_model/compat/objects/__init__.py"} <= sources
     assert {"mjcf_model/py.typed", "serializers/py.typed", "mjcf_model/examples/arm.xml"} <= sources
     assert sorted(sources - packaged) == []
     assert sorted(packaged - sources) == []

@@ -9,7 +9,7 @@ differ only in sizes and colours, not in the names prefixing reads: the
 attributes that name things) decides where the prefix goes, so that is traced
 once per skeleton (:class:`~mjcf_model.transforms.naming.repeated.PrefixPlan`) and then
 only written. The skeleton also decides the names robosuite records
-(:func:`~mjcf_model.compat.objects_base.recorded_names`), which read the geom
+(:func:`~mjcf_model.compat.objects.base.recorded_names`), which read the geom
 groups too.
 
 >>> from mjcf_model import GenericElement
@@ -27,8 +27,8 @@ from __future__ import annotations
 from collections.abc import Callable, Hashable
 from typing import Any
 
-from mjcf_model.compat.objects_memo import Memo
-from mjcf_model.compat.utils_naming import already_prefixed
+from mjcf_model.compat.mjcf_utils.naming import already_prefixed
+from mjcf_model.compat.objects.memo import Memo
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, attribute_items
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.transforms.naming.renaming import prefixed
@@ -125,14 +125,14 @@ def robosuite_prefixed(
 
     :func:`mjcf_model.prefixed` with every reference prefixed (also to names
     the subtree does not declare, as robosuite does) and, as ``exclude``,
-    robosuite's test (:func:`~mjcf_model.compat.utils_naming.already_prefixed`)
+    robosuite's test (:func:`~mjcf_model.compat.mjcf_utils.naming.already_prefixed`)
     or the caller's predicate. The namespace table decides which attributes
     are names, so a few differ from robosuite's fixed attribute list, on
     purpose: equality ``site1``/``site2``, actuator ``refsite`` and sensor
     ``refname`` are prefixed too (robosuite leaves them and MuJoCo then cannot
     find them), and a file asset without a ``name`` gets one (its file stem,
     prefixed) so references to it still work. The compatible
-    ``mjcf_utils.add_prefix`` (:mod:`~mjcf_model.compat.utils_naming`) keeps
+    ``mjcf_utils.add_prefix`` (:mod:`~mjcf_model.compat.mjcf_utils.naming`) keeps
     robosuite's attribute list exactly, because its callers expect robosuite's
     text; the objects want a model MuJoCo loads.
 

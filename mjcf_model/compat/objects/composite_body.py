@@ -24,22 +24,22 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.compat.objects_base import MujocoObject, Vector
-from mjcf_model.compat.objects_composite import _name_unnamed as name_unnamed
-from mjcf_model.compat.objects_document import as_node
-from mjcf_model.compat.objects_etree import replaced_at, subtree_at
-from mjcf_model.compat.objects_generated import MujocoGeneratedObject
-from mjcf_model.compat.objects_naming import robosuite_prefixed
-from mjcf_model.compat.objects_primitives import BoxObject, CylinderObject
-from mjcf_model.compat.objects_quirks import (
+from mjcf_model.compat.mjcf_utils.constants import BLUE, RED
+from mjcf_model.compat.mjcf_utils.text import array_to_string
+from mjcf_model.compat.objects.base import MujocoObject, Vector
+from mjcf_model.compat.objects.composite import _name_unnamed as name_unnamed
+from mjcf_model.compat.objects.document import as_node
+from mjcf_model.compat.objects.etree_view import replaced_at, subtree_at
+from mjcf_model.compat.objects.generated import MujocoGeneratedObject
+from mjcf_model.compat.objects.habits import (
     attribute,
     rs_body,
     rs_joint,
     rs_site,
     with_texts,
 )
-from mjcf_model.compat.utils_constants import BLUE, RED
-from mjcf_model.compat.utils_text import array_to_string
+from mjcf_model.compat.objects.naming import robosuite_prefixed
+from mjcf_model.compat.objects.primitives import BoxObject, CylinderObject
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
 from mjcf_model.transforms.materials import CustomMaterial

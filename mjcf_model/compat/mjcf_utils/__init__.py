@@ -46,7 +46,7 @@ set, and the hash seed).
 
 from __future__ import annotations
 
-from mjcf_model.compat.utils_builders import (
+from mjcf_model.compat.mjcf_utils.builders import (
     new_actuator,
     new_body,
     new_element,
@@ -55,7 +55,7 @@ from mjcf_model.compat.utils_builders import (
     new_joint,
     new_site,
 )
-from mjcf_model.compat.utils_constants import (
+from mjcf_model.compat.mjcf_utils.constants import (
     ALL_TEXTURES,
     BLUE,
     CYAN,
@@ -72,24 +72,24 @@ from mjcf_model.compat.utils_constants import (
     TEXTURE_FILES,
     TEXTURES,
 )
-from mjcf_model.compat.utils_materials import (
+from mjcf_model.compat.mjcf_utils.materials import (
     CustomMaterial,
     add_material,
     recolor_collision_geoms,
     set_alpha,
 )
-from mjcf_model.compat.utils_naming import add_prefix
-from mjcf_model.compat.utils_queries import (
+from mjcf_model.compat.mjcf_utils.naming import add_prefix
+from mjcf_model.compat.mjcf_utils.queries import (
     _element_filter as _element_filter,
 )
-from mjcf_model.compat.utils_queries import (
+from mjcf_model.compat.mjcf_utils.queries import (
     find_elements,
     find_elements_by_substring,
     find_parent,
     get_elements,
     sort_elements,
 )
-from mjcf_model.compat.utils_scaling import (
+from mjcf_model.compat.mjcf_utils.scaling import (
     scale_body_element,
     scale_geom_element,
     scale_joint_element,
@@ -97,7 +97,7 @@ from mjcf_model.compat.utils_scaling import (
     scale_mjcf_model,
     scale_site_element,
 )
-from mjcf_model.compat.utils_text import (
+from mjcf_model.compat.mjcf_utils.text import (
     add_to_dict,
     array_to_string,
     convert_to_string,

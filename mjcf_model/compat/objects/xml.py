@@ -25,31 +25,31 @@ import xml.dom.minidom
 import xml.etree.ElementTree as ET
 from typing import Any
 
-from mjcf_model.compat.objects_base import (
+from mjcf_model.compat.mjcf_utils.text import array_to_string, string_to_array
+from mjcf_model.compat.objects.base import (
     GEOMTYPE2GROUP,
     MujocoObject,
     Vector,
     check_obj_type,
     joint_specs,
 )
-from mjcf_model.compat.objects_bridge import RobosuiteCompatible
-from mjcf_model.compat.objects_document import ModelBacked
-from mjcf_model.compat.objects_etree import replaced_at, subtree_at
-from mjcf_model.compat.objects_memo import Memo
-from mjcf_model.compat.objects_naming import robosuite_prefixed
-from mjcf_model.compat.objects_quirks import (
+from mjcf_model.compat.objects.class_face import RobosuiteCompatible
+from mjcf_model.compat.objects.document import ModelBacked
+from mjcf_model.compat.objects.etree_view import replaced_at, subtree_at
+from mjcf_model.compat.objects.habits import (
     attribute,
     robosuite_scaled,
     rs_joint,
     with_texts,
 )
-from mjcf_model.compat.objects_xmlfile import (
+from mjcf_model.compat.objects.memo import Memo
+from mjcf_model.compat.objects.naming import robosuite_prefixed
+from mjcf_model.compat.objects.reading import (
     absolute_files,
     read_like_robosuite,
     split_geoms,
     visual_twin,
 )
-from mjcf_model.compat.utils_text import array_to_string, string_to_array
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
 from mjcf_model.tree.traversal import Path, walk, with_children

@@ -5,7 +5,7 @@ An object's state is one immutable model, a ``<mujoco>`` document node
 (the object body, the asset section...). Every change (prefixing, scaling, a
 new material, ``set_pos``) computes a new document with the pure transforms and
 installs it; the ElementTree robosuite's code receives is kept in step by an
-:class:`~mjcf_model.compat.objects_etree.EtreeView`.
+:class:`~mjcf_model.compat.objects.etree_view.EtreeView`.
 
 >>> from mjcf_model.compat.objects import BoxObject
 >>> box = BoxObject("cube", size=[0.02, 0.02, 0.02])
@@ -21,11 +21,11 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from mjcf_model.compat.objects_bridge import RobosuiteCompatible
-from mjcf_model.compat.objects_document import ModelBacked, as_node
-from mjcf_model.compat.objects_etree import EtreeView
-from mjcf_model.compat.objects_naming import robosuite_prefixed, skeleton_memo
-from mjcf_model.compat.objects_quirks import attribute, robosuite_scaled
+from mjcf_model.compat.objects.class_face import RobosuiteCompatible
+from mjcf_model.compat.objects.document import ModelBacked, as_node
+from mjcf_model.compat.objects.etree_view import EtreeView
+from mjcf_model.compat.objects.habits import attribute, robosuite_scaled
+from mjcf_model.compat.objects.naming import robosuite_prefixed, skeleton_memo
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement
 from mjcf_model.tree.queries import categorized

@@ -1,7 +1,7 @@
 """``BoxObject``, ``BallObject``, ``CylinderObject`` and ``CapsuleObject``, as robosuite makes them.
 
 Sizes are given, or drawn uniformly between ``size_min`` and ``size_max``
-(the compatible ``get_size``, :func:`~mjcf_model.compat.utils_text.get_size`,
+(the compatible ``get_size``, :func:`~mjcf_model.compat.mjcf_utils.text.get_size`,
 as robosuite's classes call it: one ``rng.uniform`` call per value, in order,
 so a seeded generator gives robosuite's sizes).
 
@@ -18,9 +18,9 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from mjcf_model.compat.objects_base import Vector
-from mjcf_model.compat.objects_generated import MujocoGeneratedObject, PrimitiveObject
-from mjcf_model.compat.utils_text import get_size
+from mjcf_model.compat.mjcf_utils.text import get_size
+from mjcf_model.compat.objects.base import Vector
+from mjcf_model.compat.objects.generated import MujocoGeneratedObject, PrimitiveObject
 from mjcf_model.errors import MjcfValueError
 
 __all__ = ["BallObject", "BoxObject", "CapsuleObject", "CylinderObject"]

@@ -10,7 +10,7 @@ writes numbers in their shortest form, so robosuite's rules live here as pure
 functions on one node each (``scaled_geom``...), and the ``scale_*_element``
 wrappers write the result back onto the element. The object classes scale
 their models with the same functions
-(:func:`~mjcf_model.compat.objects_quirks.robosuite_scaled`), as robosuite's
+(:func:`~mjcf_model.compat.objects.habits.robosuite_scaled`), as robosuite's
 objects call ``scale_mjcf_model``.
 
 Numbers separated by any white space are read (robosuite's ``string_to_array``
@@ -47,8 +47,8 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from mjcf_model.compat.utils_bridge import attribute, shallow_node, write_attributes
-from mjcf_model.compat.utils_text import array_to_string, normalize_scale_array, parse_numbers
+from mjcf_model.compat.mjcf_utils.etree_sync import attribute, shallow_node, write_attributes
+from mjcf_model.compat.mjcf_utils.text import array_to_string, normalize_scale_array, parse_numbers
 from mjcf_model.nodes.base import GenericElement, Node, TypedElement, with_attributes
 
 __all__ = [
@@ -249,7 +249,7 @@ def scale_mjcf_model(
         scale_slide_joints: Also scale slide joints' ranges.
 
     Example:
-        >>> from mjcf_model.compat.utils_queries import get_elements
+        >>> from mjcf_model.compat.mjcf_utils.queries import get_elements
         >>> obj = ET.fromstring('<body pos="0 0 1">'
         ...                     '<body pos="1 0 0"><geom size="1"/></body></body>')
         >>> scale_mjcf_model(obj, ET.Element("asset"), 2, get_elements)

@@ -4,7 +4,7 @@
 the paths of the places robosuite's API talks about (``asset``, ``worldbody``,
 the object body...). A change computes a new document with the pure transforms
 and installs it; the ElementTree handed to robosuite's code is kept in step by
-an :class:`~mjcf_model.compat.objects_etree.EtreeView`.
+an :class:`~mjcf_model.compat.objects.etree_view.EtreeView`.
 
 >>> from mjcf_model import GenericElement
 >>> class Doc(ModelBacked):
@@ -24,8 +24,8 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable
 from typing import Any
 
-from mjcf_model.compat.objects_etree import EtreeView, replaced_at, subtree_at
-from mjcf_model.compat.objects_quirks import attribute
+from mjcf_model.compat.objects.etree_view import EtreeView, replaced_at, subtree_at
+from mjcf_model.compat.objects.habits import attribute
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
 from mjcf_model.tree.queries import find

@@ -17,9 +17,9 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.compat.objects_base import MujocoObject, Vector, joint_specs
-from mjcf_model.compat.objects_naming import robosuite_prefixed
-from mjcf_model.compat.objects_quirks import (
+from mjcf_model.compat.mjcf_utils.text import array_to_string
+from mjcf_model.compat.objects.base import MujocoObject, Vector, joint_specs
+from mjcf_model.compat.objects.habits import (
     OBJECT_COLLISION_COLOR,
     rs_body,
     rs_geom,
@@ -27,7 +27,7 @@ from mjcf_model.compat.objects_quirks import (
     rs_site,
     value_text,
 )
-from mjcf_model.compat.utils_text import array_to_string
+from mjcf_model.compat.objects.naming import robosuite_prefixed
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement
 from mjcf_model.transforms.materials import CustomMaterial

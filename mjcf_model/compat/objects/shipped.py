@@ -16,10 +16,10 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.compat.objects_etree import replaced_at
-from mjcf_model.compat.objects_quirks import attribute, with_texts
-from mjcf_model.compat.objects_xml import MujocoXMLObject
-from mjcf_model.compat.utils_text import array_to_string, assets_root
+from mjcf_model.compat.mjcf_utils.text import array_to_string, assets_root
+from mjcf_model.compat.objects.etree_view import replaced_at
+from mjcf_model.compat.objects.habits import attribute, with_texts
+from mjcf_model.compat.objects.xml import MujocoXMLObject
 from mjcf_model.errors import MjcfLookupError
 from mjcf_model.tree.traversal import walk
 

@@ -17,7 +17,8 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from mjcf_model.compat.utils_bridge import (
+from mjcf_model.compat.mjcf_utils.constants import SENSOR_TYPES
+from mjcf_model.compat.mjcf_utils.etree_sync import (
     attribute,
     element_index,
     node_index,
@@ -25,7 +26,6 @@ from mjcf_model.compat.utils_bridge import (
     preorder,
     shallow_node,
 )
-from mjcf_model.compat.utils_constants import SENSOR_TYPES
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.tree.queries import find_all, parent_of
 from mjcf_model.tree.traversal import walk

@@ -10,7 +10,7 @@ so it gives different text; these quirks live here only, in
 with robosuite, that a value already starting with the prefix is left alone,
 is :func:`already_prefixed`; the object classes use it with the namespace
 table instead of the attribute list
-(:func:`~mjcf_model.compat.objects_quirks.robosuite_prefixed`), on purpose: there,
+(:func:`~mjcf_model.compat.objects.habits.robosuite_prefixed`), on purpose: there,
 references robosuite's list misses are prefixed too, so MuJoCo finds them.
 
 >>> import xml.etree.ElementTree as ET
@@ -26,14 +26,14 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable, Collection, Iterable
 from typing import Any
 
-from mjcf_model.compat.utils_bridge import (
+from mjcf_model.compat.mjcf_utils.constants import MUJOCO_NAMED_ATTRIBUTES
+from mjcf_model.compat.mjcf_utils.etree_sync import (
     edited,
     element_index,
     node_of,
     preorder,
     write_back,
 )
-from mjcf_model.compat.utils_constants import MUJOCO_NAMED_ATTRIBUTES
 from mjcf_model.nodes.base import GenericElement, Node, TypedElement, attribute_items
 
 __all__ = ["add_prefix", "already_prefixed", "prefixed_attributes"]
@@ -84,7 +84,8 @@ def prefixed_attributes(
     iteration order of ``attribs``).
 
     Args:
-        node: The tree, as generic nodes (see :func:`~mjcf_model.compat.utils_bridge.node_of`).
+        node: The tree, as generic nodes
+            (see :func:`~mjcf_model.compat.mjcf_utils.etree_sync.node_of`).
         prefix: The prefix.
         tags: The tags to prefix, or ``None`` for every element.
         attribs: The attribute names whose values get the prefix.

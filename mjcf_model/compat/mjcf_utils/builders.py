@@ -7,7 +7,7 @@ first, then the named parameters, then ``name``), and returns it as a new
 ElementTree element. The node builders (:func:`geom_node`, :func:`site_node`,
 :func:`joint_node`, :func:`body_node`) hold that order once; the object
 classes build their nodes with them too, with their more tolerant text rule
-(:func:`~mjcf_model.compat.objects_quirks.value_text`). The library's
+(:func:`~mjcf_model.compat.objects.habits.value_text`). The library's
 :mod:`mjcf_model.builders` give the same elements as typed nodes with numbers
 in their shortest form.
 
@@ -22,8 +22,8 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterable, Mapping
 from typing import Any
 
-from mjcf_model.compat.utils_constants import RED
-from mjcf_model.compat.utils_text import convert_to_string
+from mjcf_model.compat.mjcf_utils.constants import RED
+from mjcf_model.compat.mjcf_utils.text import convert_to_string
 from mjcf_model.nodes.base import AttributeMap, GenericElement, build_node
 from serializers import to_etree
 

@@ -18,16 +18,16 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.compat.objects_base import Vector
-from mjcf_model.compat.objects_generated import MujocoGeneratedObject
-from mjcf_model.compat.objects_quirks import (
+from mjcf_model.compat.mjcf_utils.text import array_to_string
+from mjcf_model.compat.objects.base import Vector
+from mjcf_model.compat.objects.generated import MujocoGeneratedObject
+from mjcf_model.compat.objects.habits import (
     OBJECT_COLLISION_COLOR,
     rs_body,
     rs_geom,
     rs_joint,
     rs_site,
 )
-from mjcf_model.compat.utils_text import array_to_string
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement
 from mjcf_model.tree.traversal import with_children

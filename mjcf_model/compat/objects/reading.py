@@ -24,8 +24,8 @@ import os
 import xml.etree.ElementTree as ET
 from typing import Any
 
-from mjcf_model.compat.objects_memo import Memo
-from mjcf_model.compat.objects_quirks import OBJECT_COLLISION_COLOR, attribute, with_texts
+from mjcf_model.compat.objects.habits import OBJECT_COLLISION_COLOR, attribute, with_texts
+from mjcf_model.compat.objects.memo import Memo
 from mjcf_model.errors import MjcfLookupError
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.tree.defaults import MAIN, DefaultClasses

@@ -151,7 +151,7 @@ def text_of(value: Any, *, exact: bool) -> str | None:
     ints, floats and booleans are ``str(x).lower()``. With ``exact``, the
     types are checked exactly, as robosuite checks them (numpy scalars and
     subclasses have no rule): this is :func:`convert_to_string`. Without, as
-    the object classes want it (:func:`~mjcf_model.compat.objects_quirks.value_text`),
+    the object classes want it (:func:`~mjcf_model.compat.objects.habits.value_text`),
     subclasses count and numpy scalars are read as Python's numbers first.
 
     Example:

@@ -3,22 +3,22 @@
 The object classes must produce the very XML robosuite produces, so the habits
 that decide it live here, each a function from nodes to nodes. Where robosuite's
 objects call a function of ``mjcf_utils``, the compatible one
-(``mjcf_model.compat.utils_*``) is the one implementation, called here:
+(``mjcf_model.compat.mjcf_utils``) is the one implementation, called here:
 
 * numbers as robosuite writes them: ``array_to_string`` of
-  :mod:`~mjcf_model.compat.utils_text` (``"{}".format`` of each value, so numpy
+  :mod:`~mjcf_model.compat.mjcf_utils.text` (``"{}".format`` of each value, so numpy
   floats give ``"0.0"``) and :func:`value_text` (``convert_to_string``'s rule,
   more tolerant);
 * elements with robosuite's attribute order (the ``rs_*`` builders, mirroring
   ``new_geom``, ``new_site``... with the node builders of
-  :mod:`~mjcf_model.compat.utils_builders`), as generic elements holding that
+  :mod:`~mjcf_model.compat.mjcf_utils.builders`), as generic elements holding that
   exact text;
 * prefixing that skips values already starting with the prefix
-  (:func:`~mjcf_model.compat.objects_naming.robosuite_prefixed`);
+  (:func:`~mjcf_model.compat.objects.naming.robosuite_prefixed`);
 * scaling of only the attributes robosuite scales (:func:`robosuite_scaled`,
-  with the rules of :mod:`~mjcf_model.compat.utils_scaling`);
+  with the rules of :mod:`~mjcf_model.compat.mjcf_utils.scaling`);
 * default classes written inline (:func:`inline_defaults`) and the geom split
-  of XML objects (:func:`split_geoms`) in :mod:`mjcf_model.compat.objects_xml`.
+  of XML objects (:func:`split_geoms`) in :mod:`mjcf_model.compat.objects.xml`.
 
 >>> print(rs_geom("g", "box", [0.5, 0, 1]).attributes["size"], "|", value_text(np.float32(0.5)))
 0.5 0 1 | 0.5
@@ -32,23 +32,23 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from mjcf_model.compat import utils_constants
-from mjcf_model.compat.utils_bridge import attribute
-from mjcf_model.compat.utils_builders import (
+from mjcf_model.compat.mjcf_utils import constants as utils_constants
+from mjcf_model.compat.mjcf_utils.builders import (
     body_node,
     element_node,
     geom_node,
     joint_node,
     site_node,
 )
-from mjcf_model.compat.utils_scaling import (
+from mjcf_model.compat.mjcf_utils.etree_sync import attribute
+from mjcf_model.compat.mjcf_utils.scaling import (
     scaled_body,
     scaled_geom,
     scaled_joint,
     scaled_mesh,
     scaled_site,
 )
-from mjcf_model.compat.utils_text import array_to_string, text_of, three_factors
+from mjcf_model.compat.mjcf_utils.text import array_to_string, text_of, three_factors
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.transforms.naming.repeated import with_texts as checked_texts
@@ -86,7 +86,7 @@ _SCALING_RULES: Mapping[str, Callable[[Node, Any], Node]] = {
 def value_text(value: Any) -> str:
     """Like robosuite's ``convert_to_string``, also accepting numpy scalars (robosuite raises).
 
-    :func:`~mjcf_model.compat.utils_text.text_of` without exact types:
+    :func:`~mjcf_model.compat.mjcf_utils.text.text_of` without exact types:
     lists, tuples and arrays (subclasses too) go through ``array_to_string``;
     numbers and booleans (numpy's too) are ``str(x).lower()``; text is kept.
     The compatible ``convert_to_string`` keeps robosuite's exact type checks.
@@ -223,7 +223,7 @@ def robosuite_scaled(
 
     Each element whose tag is in ``tags`` (``node`` itself only with
     ``include_root``) gets the rule of the compatible ``scale_mjcf_model``
-    (:mod:`~mjcf_model.compat.utils_scaling`): geom and site ``pos`` and
+    (:mod:`~mjcf_model.compat.mjcf_utils.scaling`): geom and site ``pos`` and
     ``size`` (sizes by their count of values), body and joint ``pos``, and
     mesh ``scale`` (written as the factors when the mesh has none). Every
     other length stays, as in robosuite (slide joint ranges, margins, the root

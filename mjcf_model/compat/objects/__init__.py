@@ -18,24 +18,24 @@ functions behind the compatible ``mjcf_utils``'s ``scale_mjcf_model`` and
 (:func:`~mjcf_model.categorized`). robosuite's habits (number text such as
 ``"0.0 0.0 0.0"``, attribute order, visual twins of collision geoms, unnamed
 geoms numbered ``g<i>``, default classes written inline) are small functions
-on nodes in :mod:`~mjcf_model.compat.objects_quirks` and
-:mod:`~mjcf_model.compat.objects_xmlfile`, built on the compatible
-``mjcf_utils`` (``mjcf_model.compat.utils_*``) wherever robosuite's objects
+on nodes in :mod:`~mjcf_model.compat.objects.habits` and
+:mod:`~mjcf_model.compat.objects.reading`, built on the compatible
+``mjcf_utils`` (``mjcf_model.compat.mjcf_utils``) wherever robosuite's objects
 call it. Attribute text is kept exactly (nodes are generic elements), because
 robosuite passes it on unchanged.
 
 **Made again and again.** Environments make the same objects at every reset,
 and nodes never change, so what an object computes from its input alone is
-remembered (:mod:`~mjcf_model.compat.objects_memo`): a file is read once per
+remembered (:mod:`~mjcf_model.compat.objects.memo`): a file is read once per
 modification, an XML object's geom split once per file and choice of joints,
 and where the name prefix goes and which names robosuite records once per
-*naming skeleton* (:mod:`~mjcf_model.compat.objects_naming`), which objects of
+*naming skeleton* (:mod:`~mjcf_model.compat.objects.naming`), which objects of
 one kind share whatever their sizes; each new object then only writes its
 prefix.
 
 **What** ``get_obj()``, ``asset``, ``root``... **return.** Live ElementTree
 elements of one view of the model, built when first read and then patched in
-place whenever the model changes (:class:`~mjcf_model.compat.objects_etree.EtreeView`):
+place whenever the model changes (:class:`~mjcf_model.compat.objects.etree_view.EtreeView`):
 ``get_obj()`` is the same element on every call, ``set_pos`` or
 ``set_scale`` after ``task.worldbody.append(obj.get_obj())`` shows in the
 task, and ``get_obj()`` of an XML object is the very element inside ``root``,
@@ -46,7 +46,7 @@ them) stay in the elements but are not read back: the model is the truth.
 **robosuite's** ``isinstance`` **checks.** Instances answer
 ``isinstance(obj, robosuite.models.objects.MujocoObject)`` (and every
 robosuite twin of their class) through a ``__class__`` property: see
-:mod:`~mjcf_model.compat.objects_bridge`. robosuite is never imported by the
+:mod:`~mjcf_model.compat.objects.class_face`. robosuite is never imported by the
 library and may be imported before or after objects are made.
 
 **Where this differs from robosuite on purpose.** Where robosuite crashes on
@@ -91,23 +91,22 @@ white space is stripped); an element-level
 
 from __future__ import annotations
 
-from mjcf_model.compat.objects_base import (
+from mjcf_model.compat.objects.base import (
     GEOM_GROUPS,
     GEOMTYPE2GROUP,
     MujocoModel,
     MujocoObject,
 )
-from mjcf_model.compat.objects_composite import CompositeObject
-from mjcf_model.compat.objects_composite_body import CompositeBodyObject, HingedBoxObject
-from mjcf_model.compat.objects_generated import MujocoGeneratedObject, PrimitiveObject
-from mjcf_model.compat.objects_model import MujocoXMLModel
-from mjcf_model.compat.objects_primitives import (
+from mjcf_model.compat.objects.composite import CompositeObject
+from mjcf_model.compat.objects.composite_body import CompositeBodyObject, HingedBoxObject
+from mjcf_model.compat.objects.generated import MujocoGeneratedObject, PrimitiveObject
+from mjcf_model.compat.objects.primitives import (
     BallObject,
     BoxObject,
     CapsuleObject,
     CylinderObject,
 )
-from mjcf_model.compat.objects_shipped import (
+from mjcf_model.compat.objects.shipped import (
     BottleObject,
     BreadObject,
     BreadVisualObject,
@@ -123,7 +122,8 @@ from mjcf_model.compat.objects_shipped import (
     RoundNutObject,
     SquareNutObject,
 )
-from mjcf_model.compat.objects_xml import MujocoXML, MujocoXMLObject
+from mjcf_model.compat.objects.xml import MujocoXML, MujocoXMLObject
+from mjcf_model.compat.objects.xml_model import MujocoXMLModel
 
 __all__ = [
     "GEOMTYPE2GROUP",

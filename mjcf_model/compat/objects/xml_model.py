@@ -23,12 +23,12 @@ from __future__ import annotations
 
 from typing import Any
 
-from mjcf_model.compat.objects_base import MujocoModel, Vector, recorded_names
-from mjcf_model.compat.objects_naming import robosuite_prefixed
-from mjcf_model.compat.objects_quirks import attribute, with_texts
-from mjcf_model.compat.objects_xml import MujocoXML
-from mjcf_model.compat.utils_materials import recolored
-from mjcf_model.compat.utils_text import string_to_array
+from mjcf_model.compat.mjcf_utils.materials import recolored
+from mjcf_model.compat.mjcf_utils.text import string_to_array
+from mjcf_model.compat.objects.base import MujocoModel, Vector, recorded_names
+from mjcf_model.compat.objects.habits import attribute, with_texts
+from mjcf_model.compat.objects.naming import robosuite_prefixed
+from mjcf_model.compat.objects.xml import MujocoXML
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import to_vec4
@@ -100,7 +100,8 @@ class MujocoXMLModel(MujocoXML, MujocoModel):
     def _recolored(world: AnyElement, rgba: Any) -> AnyElement:
         """Paint the collision geoms as robosuite's ``recolor_collision_geoms`` does.
 
-        The compatible function's pure part, :func:`~mjcf_model.compat.utils_materials.recolored`.
+        The compatible function's pure part,
+        :func:`~mjcf_model.compat.mjcf_utils.materials.recolored`.
         Unlike robosuite, ``rgba`` must be four numbers (as in the library).
         """
         to_vec4(rgba)  # raises MjcfValueError for anything else

@@ -24,7 +24,9 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.compat.utils_bridge import (
+from mjcf_model.compat.mjcf_utils.builders import new_element
+from mjcf_model.compat.mjcf_utils.constants import ALL_TEXTURES, TEXTURES
+from mjcf_model.compat.mjcf_utils.etree_sync import (
     attribute,
     edited,
     element_index,
@@ -32,10 +34,8 @@ from mjcf_model.compat.utils_bridge import (
     preorder,
     write_back,
 )
-from mjcf_model.compat.utils_builders import new_element
-from mjcf_model.compat.utils_constants import ALL_TEXTURES, TEXTURES
-from mjcf_model.compat.utils_naming import already_prefixed
-from mjcf_model.compat.utils_text import array_to_string, parse_numbers, xml_path_completion
+from mjcf_model.compat.mjcf_utils.naming import already_prefixed
+from mjcf_model.compat.mjcf_utils.text import array_to_string, parse_numbers, xml_path_completion
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.transforms.materials import DEFAULT_MATERIAL, with_material
 from mjcf_model.transforms.materials import CustomMaterial as FrozenMaterial
