@@ -24,7 +24,7 @@ import attrs
 from mjcf_model.nodes.base import field_table
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import child_key
-from mjcf_model.values import NOT_XML_CHARACTER
+from mjcf_model.values.kinds import NOT_XML_CHARACTER
 
 __all__ = [
     "NUMERIC_ATTRIBUTES",

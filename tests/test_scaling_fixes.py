@@ -6,6 +6,7 @@ each scaled copy, and the oracle compares the compiled arrays.
 
 from __future__ import annotations
 
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import mujoco
@@ -16,7 +17,7 @@ from mjcf_model.errors import MjcfValueError
 from mjcf_model.tools.check import check_file
 from mjcf_model.tools.compare import compile_text_beside
 from mjcf_model.transforms.scaling.scaled import MassPolicy, scaled
-from serializers import dumps, load, loads
+from serializers import dumps, from_etree, load, loads
 from tests.conftest import MUJOCO_VERSION
 from tests.oracles import mass_problems, scaled_problems
 
@@ -180,3 +181,14 @@ def test_attach_fixture_compiles_but_scaling_refuses_it() -> None:
     assert mujoco.MjModel.from_xml_path(str(path)).body("arm_lower").id > 0
     with pytest.raises(MjcfValueError, match="attach"):
         scaled(load(path), 2)
+
+
+@pytest.mark.parametrize("tag", ["geom", "site"])
+def test_a_size_of_more_than_three_numbers_is_refused_as_mujoco_refuses_it(tag: str) -> None:
+    """Four size values are not MJCF (MuJoCo: "too much data"): scaling says so, writes nothing."""
+    text = f'<mujoco><worldbody><body><{tag} size="1 2 3 4"/></body></worldbody></mujoco>'
+    with pytest.raises(ValueError, match="too much data"):
+        mujoco.MjModel.from_xml_string(text)
+    generic = from_etree(ET.fromstring(text), typed=False)
+    with pytest.raises(MjcfValueError, match="at most 3"):
+        scaled(generic, 2)

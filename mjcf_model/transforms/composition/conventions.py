@@ -88,10 +88,9 @@ from mjcf_model.transforms.composition.rotations import (
     orientation_radians,
     quat_distance,
 )
-from mjcf_model.transforms.scaling.context import numbers
 from mjcf_model.tree.defaults import DefaultClasses
 from mjcf_model.tree.traversal import keyed_walk, map_elements, refuse_opaque, with_children
-from mjcf_model.values import Value
+from mjcf_model.values import Value, numbers_of
 
 __all__ = [
     "CONVERTED_SETTINGS",
@@ -116,7 +115,7 @@ _LIMIT_FLAGS = {
 def _differing(mine: Settings, theirs: Settings) -> set[str]:
     def reading(name: str, settings: Settings) -> object:
         text = settings[name].strip()
-        return numbers(text) if name in NUMERIC_SETTINGS else text
+        return numbers_of(text) if name in NUMERIC_SETTINGS else text
 
     return {name for name in CONVERTED_SETTINGS if reading(name, mine) != reading(name, theirs)}
 
@@ -204,7 +203,7 @@ class _Rewriter:
         """
         mine, theirs = self.mine["eulerseq"], self.theirs["eulerseq"]
         turned = euler_angles(euler_quat(radians, mine), theirs)
-        count = numbers(get_attribute(element, "count")) if element.tag == "replicate" else None
+        count = numbers_of(get_attribute(element, "count")) if element.tag == "replicate" else None
         multiples = range(2, int(count[0]) if count else 0)
         if turned is None or any(
             quat_distance(
@@ -225,7 +224,7 @@ class _Rewriter:
         kind = self.classes.resolve(element, ancestors, "type") or "hinge"
         changes: Changes = {}
         for name in _JOINT_ANGLES.get(str(kind), ()):
-            value = numbers(self.classes.resolve(element, ancestors, name))
+            value = numbers_of(self.classes.resolve(element, ancestors, name))
             if value is None or (
                 name == "range" and not self.limited(element, ancestors, "limited")
             ):
@@ -242,10 +241,10 @@ class _Rewriter:
         in_tendons = bool(ancestors) and ancestors[-1].tag == "tendon"
         if flag == "actuatorfrclimited" and in_tendons and not _infers_tendon_force_limits():
             return False
-        bounds = numbers(self.resolve(element, ancestors, _LIMIT_FLAGS[flag]))
+        bounds = numbers_of(self.resolve(element, ancestors, _LIMIT_FLAGS[flag]))
         if bounds is not None and len(bounds) == 2 and bounds[0] < bounds[1]:
             return True
-        inherit = numbers(self.resolve(element, ancestors, "inheritrange"))
+        inherit = numbers_of(self.resolve(element, ancestors, "inheritrange"))
         return flag == "ctrllimited" and bool(inherit and inherit[0] > 0)
 
     def limits(self, element: AnyElement, ancestors: Sequence[AnyElement], key: str) -> Changes:
@@ -331,7 +330,7 @@ def _infers_tendon_force_limits() -> bool:
 
 def _numbers(element: AnyElement, name: str) -> tuple[float, ...] | None:
     value = get_attribute(element, name)
-    found = numbers(value)
+    found = numbers_of(value)
     if value is not None and found is None:
         raise MjcfValueError(f"cannot convert <{element.tag} {name}={value!r}>: not numbers")
     return found

@@ -32,9 +32,10 @@ from mjcf_model.nodes.base import (
     with_attributes,
 )
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.transforms.scaling.context import joint_type, numbers
 from mjcf_model.tree.defaults import DefaultClasses
+from mjcf_model.tree.joints import joint_type
 from mjcf_model.tree.traversal import keyed_walk
+from mjcf_model.values import numbers_of
 
 __all__ = ["keys_of", "merged_keyframes"]
 
@@ -76,7 +77,7 @@ def _qpos0(
     joint: AnyElement, kind: str, ancestors: Sequence[AnyElement], classes: DefaultClasses
 ) -> tuple[float, ...] | str:
     if kind in ("hinge", "slide"):
-        return numbers(classes.resolve(joint, ancestors, "ref")) or (0.0,)
+        return numbers_of(classes.resolve(joint, ancestors, "ref")) or (0.0,)
     if kind == "ball":
         return (1.0, 0.0, 0.0, 0.0)
     body = ancestors[-1]
@@ -86,8 +87,8 @@ def _qpos0(
             "cannot complete a keyframe: a free joint's initial position is known here only "
             "for a body directly in the world placed with pos and quat"
         )
-    pos = numbers(get_attribute(body, "pos")) or (0.0, 0.0, 0.0)
-    quat = numbers(get_attribute(body, "quat")) or (1.0, 0.0, 0.0, 0.0)
+    pos = numbers_of(get_attribute(body, "pos")) or (0.0, 0.0, 0.0)
+    quat = numbers_of(get_attribute(body, "quat")) or (1.0, 0.0, 0.0, 0.0)
     return (*pos, *quat)
 
 
@@ -139,7 +140,7 @@ def merged_keyframes(parent: Mujoco, child: Mujoco, target: AnyElement | None) -
     for key in parent_keys:
         changes: dict[str, tuple[float, ...]] = {}
         for attribute, sizes, initial in (("qpos", _QPOS_SIZE, True), ("qvel", _QVEL_SIZE, False)):
-            given = numbers(get_attribute(key, attribute))
+            given = numbers_of(get_attribute(key, attribute))
             split = sum(sizes[j.type] for j in before)
             if given is not None and len(given) > split:
                 inserted = _flat(child_joints, sizes, initial)
@@ -154,7 +155,7 @@ def merged_keyframes(parent: Mujoco, child: Mujoco, target: AnyElement | None) -
             raise MjcfValueError("cannot merge a child keyframe with mocap values yet")
         changes = {}
         for attribute, sizes, initial in (("qpos", _QPOS_SIZE, True), ("qvel", _QVEL_SIZE, False)):
-            given = numbers(get_attribute(key, attribute))
+            given = numbers_of(get_attribute(key, attribute))
             if given is None:
                 continue
             own = _completed(given, _flat(child_joints, sizes, initial)) if after else list(given)
@@ -163,7 +164,7 @@ def merged_keyframes(parent: Mujoco, child: Mujoco, target: AnyElement | None) -
                 *own,
                 *_flat(after, sizes, initial),
             )
-        ctrl = numbers(get_attribute(key, "ctrl"))
+        ctrl = numbers_of(get_attribute(key, "ctrl"))
         if ctrl is not None:
             changes["ctrl"] = (*(0.0,) * _actuator_count(parent), *ctrl)
         merged.append(_evolved(key, changes))

@@ -12,42 +12,26 @@ joints (for keyframes and actuators); :func:`numbers`, :func:`times` and
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable
 from typing import Any, TypeVar
 
 import attrs
 import numpy as np
 
-from mjcf_model.nodes.base import AnyElement, get_attribute
+from mjcf_model.nodes.base import AnyElement
 from mjcf_model.tree.defaults import DefaultClasses
-from mjcf_model.tree.traversal import keyed_walk
-from mjcf_model.values import Value, format_value
+from mjcf_model.tree.joints import JointInfo, joint_layout
+from mjcf_model.values import Value, format_value, numbers_of
 
 __all__ = [
     "Cycles",
-    "JointInfo",
     "ScaleContext",
     "factor_cycle",
-    "joint_layout",
-    "joint_type",
-    "numbers",
     "times",
     "times_cycle",
 ]
 
 _T = TypeVar("_T")
-
-
-@attrs.frozen(kw_only=True)
-class JointInfo:
-    """A joint as the scaling of keyframes and actuators needs it."""
-
-    #: Its name, or ``None``.
-    name: str | None
-    #: ``free``, ``ball``, ``slide`` or ``hinge`` (its own or its class's).
-    type: str
-    #: Its axis (its own, its class's, or MuJoCo's default ``0 0 1``).
-    axis: tuple[float, ...]
 
 
 @attrs.frozen(kw_only=True)
@@ -170,30 +154,6 @@ class ScaleContext:
         return float(np.linalg.norm(direction / norm * np.asarray(self.factors)))
 
 
-def numbers(value: Value | None) -> tuple[float, ...] | None:
-    """The numbers in an attribute value, typed or text; ``None`` when it has none.
-
-    Example:
-        >>> numbers("1 2.5"), numbers(3), numbers("x")
-        ((1.0, 2.5), (3.0,), None)
-
-    """
-    if value is None:
-        return None
-    if type(value) is tuple:
-        return tuple(map(float, value))
-    if type(value) is float:
-        return (value,)
-    if isinstance(value, str):
-        try:
-            return tuple(float(part) for part in value.split())
-        except ValueError:
-            return None
-    if isinstance(value, (int, float)):
-        return (float(value),)
-    return tuple(float(v) for v in value)
-
-
 def times(value: Value, factors: Any) -> Value:
     """``value`` multiplied by ``factors`` (cycled), in the value's own shape.
 
@@ -223,7 +183,7 @@ def times_cycle(value: Value, cycle: tuple[float, ...]) -> Value:
             return tuple([v * f for v, f in zip(value, cycle, strict=True)])
     elif type(value) is float:
         return value * cycle[0]
-    found = numbers(value)
+    found = numbers_of(value)
     assert found is not None
     result = tuple(n * cycle[i % len(cycle)] for i, n in enumerate(found))
     if isinstance(value, str):
@@ -251,65 +211,3 @@ def factor_cycle(factors: Any) -> tuple[float, ...]:
     if len(cycle) > 1 and all(f == cycle[0] for f in cycle):
         return cycle[:1]  # the same products, one multiplication each
     return cycle
-
-
-def joint_layout(node: AnyElement, classes: DefaultClasses) -> tuple[JointInfo, ...] | None:
-    """The joints of ``node`` in ``qpos`` order; ``None`` when replicate or flexcomp hide some.
-
-    Example:
-        >>> from mjcf_model import Body, Joint
-        >>> body = Body(children=[Joint(type="slide")])
-        >>> [j.type for j in joint_layout(body, DefaultClasses.empty())]
-        ['slide']
-
-    """
-    joints: list[JointInfo] = []
-    for element, key, ancestors in _body_walk(node):
-        if key in ("body/replicate", "body/flexcomp", "body/attach"):
-            return None
-        if key == "body/freejoint":
-            joints.append(JointInfo(name=_name(element), type="free", axis=(0.0, 0.0, 1.0)))
-        elif key == "body/joint":
-            kind, axis = classes.resolve_many(element, ancestors, ("type", "axis"))
-            kind = str(kind or "hinge")
-            direction = numbers(axis) if kind != "free" else None
-            joints.append(
-                JointInfo(name=_name(element), type=kind, axis=direction or (0.0, 0.0, 1.0))
-            )
-    return tuple(joints)
-
-
-def _body_walk(node: AnyElement) -> Iterator[tuple[AnyElement, str | None, Sequence[AnyElement]]]:
-    """:func:`keyed_walk` of the bodies: of a whole model, only its ``<worldbody>`` sections."""
-    if node.tag != "mujoco":
-        yield from keyed_walk(node)
-        return
-    for section in node.elements:
-        if section.tag == "worldbody":
-            yield from keyed_walk(section, "mujoco")
-
-
-def joint_type(
-    element: AnyElement, key: str | None, ancestors: Sequence[AnyElement], classes: DefaultClasses
-) -> str | None:
-    """The type of a body's joint: ``free``, ``ball``, ``slide`` or ``hinge``.
-
-    Its own type or its class's (MuJoCo's default is ``hinge``); ``None`` for an
-    element that is not a body's joint.
-
-    Example:
-        >>> from mjcf_model import Joint
-        >>> joint_type(Joint(type="slide"), "body/joint", (), DefaultClasses.empty())
-        'slide'
-
-    """
-    if key == "body/freejoint":
-        return "free"
-    if key != "body/joint":
-        return None
-    return str(classes.resolve(element, ancestors, "type") or "hinge")
-
-
-def _name(element: AnyElement) -> str | None:
-    name = get_attribute(element, "name")
-    return name if isinstance(name, str) else None

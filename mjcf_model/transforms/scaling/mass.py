@@ -21,8 +21,9 @@ from collections.abc import Sequence
 
 from mjcf_model.files.provenance import file_stem
 from mjcf_model.nodes.base import AnyElement, get_attribute
-from mjcf_model.transforms.scaling.context import ScaleContext, numbers
+from mjcf_model.transforms.scaling.context import ScaleContext
 from mjcf_model.transforms.scaling.pieces import Changes, builtin_default
+from mjcf_model.values import numbers_of
 
 __all__ = ["geom_density", "is_shell"]
 
@@ -124,6 +125,6 @@ def geom_density(
     mass, density, kind, mesh, shell = context.classes.resolve_many(geom, ancestors, _DENSITY_READ)
     if mass is not None:
         return {}
-    value = (numbers(density) or builtin_default("geom", "density"))[0]
+    value = (numbers_of(density) or builtin_default("geom", "density"))[0]
     factor = context.area if _is_shell(kind, mesh, shell, context) else context.volume
     return {"density": value / factor}

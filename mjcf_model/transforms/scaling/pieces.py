@@ -21,10 +21,10 @@ from typing import Any
 import numpy as np
 
 from mjcf_model.nodes.base import AnyElement, get_attribute
-from mjcf_model.transforms.scaling.context import ScaleContext, numbers, times, times_cycle
+from mjcf_model.transforms.scaling.context import ScaleContext, times, times_cycle
 from mjcf_model.tree.defaults import DefaultClasses
 from mjcf_model.tree.queries import attribute_values
-from mjcf_model.values import Value
+from mjcf_model.values import Value, numbers_of
 
 __all__ = [
     "NO_LENGTHS",
@@ -111,7 +111,7 @@ class ValueRule:
 
 def _readable(value: Value) -> bool:
     """Whether ``value`` holds numbers (text a typed field keeps may not)."""
-    return type(value) is tuple or type(value) is float or numbers(value) is not None
+    return type(value) is tuple or type(value) is float or numbers_of(value) is not None
 
 
 def _by_cycle(cycle: str) -> ValueScale:
@@ -145,7 +145,7 @@ def parts(attribute: str, unit: tuple[float, ...], start: int) -> Rule:
     """Multiply the values from index ``start`` on (friction: torsion and rolling)."""
 
     def scale(value: Value, context: ScaleContext) -> Value | None:
-        found = numbers(value)
+        found = numbers_of(value)
         if found is None:
             return None
         factors = [*unit[:start], *[context.mean] * (len(found) - start)][: len(found)]
@@ -181,7 +181,7 @@ def with_builtin(
         element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
     ) -> Changes:
         value = get_attribute(element, attribute)
-        own = numbers(value)
+        own = numbers_of(value)
         full = None if _in_default(ancestors) else _unwritten(element, ancestors, context, own)
         if full is not None:
             return {attribute: times(_completed(full, own), factors(element, ancestors, context))}
@@ -220,7 +220,7 @@ def with_builtin(
         covered = 0  # how many leading values the classes write (and scale themselves)
         for current in reversed(classes.chain(name)):
             setting = classes.settings.get((current, tag))
-            inherited = numbers(get_attribute(setting, attribute)) if setting else None
+            inherited = numbers_of(get_attribute(setting, attribute)) if setting else None
             if inherited:
                 full[: len(inherited)] = inherited
                 covered = max(covered, len(inherited))

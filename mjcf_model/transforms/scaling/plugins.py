@@ -23,10 +23,10 @@ from types import MappingProxyType
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, get_attribute
 from mjcf_model.nodes.plugin import PluginConfig
-from mjcf_model.transforms.scaling.context import ScaleContext, numbers, times
+from mjcf_model.transforms.scaling.context import ScaleContext, times
 from mjcf_model.transforms.scaling.pieces import Changes
 from mjcf_model.tree.traversal import keyed_walk, with_children
-from mjcf_model.values import format_value
+from mjcf_model.values import format_value, numbers_of
 
 __all__ = [
     "SDF_LENGTHS",
@@ -108,7 +108,7 @@ def sdf_config(
         owner = ancestors[-2] if len(ancestors) > 1 else None
     plugin = get_attribute(owner, "plugin") if owner is not None else None
     key, value = get_attribute(element, "key"), get_attribute(element, "value")
-    if key not in SDF_LENGTHS.get(str(plugin), {}) or value is None or numbers(value) is None:
+    if key not in SDF_LENGTHS.get(str(plugin), {}) or value is None or numbers_of(value) is None:
         return {}
     return {"value": times(value, context.mean)}
 

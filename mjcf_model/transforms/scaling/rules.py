@@ -17,7 +17,7 @@ import numpy as np
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, get_attribute
 from mjcf_model.schema.namespaces import SCHEMA
-from mjcf_model.transforms.scaling.context import ScaleContext, numbers, times
+from mjcf_model.transforms.scaling.context import ScaleContext, times
 from mjcf_model.transforms.scaling.mass import geom_density
 from mjcf_model.transforms.scaling.pieces import (
     NO_LENGTHS,
@@ -35,7 +35,7 @@ from mjcf_model.transforms.scaling.pieces import (
 )
 from mjcf_model.transforms.scaling.plugins import makes_sdf, sdf_config, sdf_mesh_scale
 from mjcf_model.tree.queries import attribute_values
-from mjcf_model.values import Value, format_value
+from mjcf_model.values import Value, format_value, numbers_of
 
 __all__ = ["RULES", "UNSCALED_BY_DECISION"]
 
@@ -68,17 +68,25 @@ def _size_factors(
     element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> tuple[float, ...]:
     """The factors of a geom's or site's size, by how many values it writes (see ``Cycles``)."""
-    written = len(numbers(get_attribute(element, "size")) or ())
-    return context.cycles.sizes[written] if written < 4 else ()
+    return _factors_of_size(len(numbers_of(get_attribute(element, "size")) or ()), context)
 
 
 def _scaled_size(value: Value, context: ScaleContext) -> Value | None:
     """A geom's ``size`` scaled (every value is a length, whatever the type)."""
-    size = value if type(value) is tuple else numbers(value)
+    size = value if type(value) is tuple else numbers_of(value)
     if size is None:
         return None
-    factors = context.cycles.sizes[len(size)] if len(size) < 4 else ()
+    factors = _factors_of_size(len(size), context)
     return tuple([n * f for n, f in zip(size, factors, strict=False)])
+
+
+def _factors_of_size(count: int, context: ScaleContext) -> tuple[float, ...]:
+    """The factors of a size of ``count`` values; more than three is not MJCF."""
+    if count > 3:
+        raise MjcfValueError(
+            f"a size of {count} numbers cannot be scaled: MuJoCo reads at most 3 ('too much data')"
+        )
+    return context.cycles.sizes[count]
 
 
 _geom_size = ValueRule("size", _scaled_size)
@@ -92,7 +100,7 @@ _site_size = with_builtin(
 def _slide_factor(kind: object, axis: object, context: ScaleContext) -> float:
     if kind != "slide":
         return 1.0
-    return context.along(numbers(axis) or (0.0, 0.0, 1.0))  # type: ignore[arg-type]
+    return context.along(numbers_of(axis) or (0.0, 0.0, 1.0))  # type: ignore[arg-type]
 
 
 _JOINT_LENGTHS = ("range", "ref", "springref", "margin")
@@ -144,7 +152,7 @@ def _materialized(attribute: str, tag: str) -> Rule:
         element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
     ) -> Changes:
         value = context.classes.resolve(element, ancestors, attribute, tag)
-        if numbers(value) is None:
+        if numbers_of(value) is None:
             return {}
         assert value is not None
         return {attribute: times(value, context.mean)}
@@ -159,7 +167,7 @@ def _spatial_tendon(
     element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
     changes = combine(*_TENDON_LENGTHS)(element, ancestors, context)
-    width = numbers(context.classes.resolve(element, ancestors, "width", "tendon"))
+    width = numbers_of(context.classes.resolve(element, ancestors, "width", "tendon"))
     changes["width"] = (width or builtin_default("tendon", "width"))[0] * context.mean
     return changes
 
@@ -206,14 +214,14 @@ def _keyframe(
             qpos.append(factor)
             qvel.append(factor)
     for attribute, factors in (("qpos", qpos), ("qvel", qvel)):
-        value = numbers(get_attribute(element, attribute))
+        value = numbers_of(get_attribute(element, attribute))
         if value is not None and len(value) == len(factors):
             changes[attribute] = tuple(v * f for v, f in zip(value, factors, strict=True))
     return changes
 
 
 def _hfield(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext) -> Changes:
-    size = numbers(get_attribute(element, "size"))
+    size = numbers_of(get_attribute(element, "size"))
     if size is None:
         return {}
     x, y, z = context.factors
@@ -224,7 +232,7 @@ def _weld_relpose(
     element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
     """The first three of ``relpose`` are a position; the rest a quaternion."""
-    pose = numbers(get_attribute(element, "relpose"))
+    pose = numbers_of(get_attribute(element, "relpose"))
     if pose is None:
         return {}
     return {
@@ -295,23 +303,23 @@ def _flexcomp(
     still exceed twice the radius plus the margin, which grow linearly.
     """
     changes = _FLEXCOMP_COMMON(element, ancestors, context)
-    box = numbers(get_attribute(element, "inertiabox")) or _FLEXCOMP_INERTIABOX
+    box = numbers_of(get_attribute(element, "inertiabox")) or _FLEXCOMP_INERTIABOX
     changes["inertiabox"] = format_value(box[0] * context.mean)  # a text field
     kind = get_attribute(element, "type") or "grid"
     if kind in _POINT_TYPES:
         return {**changes, **_FLEXCOMP_SCALE(element, ancestors, context)}
-    spacing = numbers(get_attribute(element, "spacing")) or _FLEXCOMP_SPACING
+    spacing = numbers_of(get_attribute(element, "spacing")) or _FLEXCOMP_SPACING
     factors = np.sqrt(context.factors) if kind == "disc" else np.asarray(context.factors)
     changes["spacing"] = times(tuple(spacing), factors)
-    radius = (numbers(changes.get("radius")) or (0.0,))[0]
+    radius = (numbers_of(changes.get("radius")) or (0.0,))[0]
     margin = sum(
-        (numbers(get_attribute(c, "margin")) or (0.0,))[0]
+        (numbers_of(get_attribute(c, "margin")) or (0.0,))[0]
         for c in element.elements
         if c.tag == "contact"
     )
     if (
         kind == "disc"
-        and min(numbers(changes["spacing"]) or ()) < 2 * radius + margin * context.mean
+        and min(numbers_of(changes["spacing"]) or ()) < 2 * radius + margin * context.mean
     ):
         raise MjcfValueError(
             f"cannot scale the disc flexcomp {get_attribute(element, 'name')!r} by "

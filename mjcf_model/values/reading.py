@@ -1,48 +1,35 @@
-"""Attribute values: the one place where MJCF text becomes Python values and back.
-
-Node fields hold ``str``, ``int``, ``float``, ``bool`` or tuples of numbers. The
-converters below are the attrs converters of those fields: they accept MJCF
-text (as the reader hands it over), Python numbers, any sequence and numpy
-arrays, and raise :class:`~mjcf_model.errors.MjcfValueError` on a wrong count
-or a non-number. :func:`format_value` is their inverse and the only place that
-formats numbers: floats are written with the shortest text that reads back to
-the same double, so MuJoCo compiles the written model bit for bit the same.
-
->>> to_vec3("0 0.1 2")
-(0.0, 0.1, 2.0)
->>> format_value((0.0, 0.1, 2.0))
-'0 0.1 2'
->>> format_value(True)
-'true'
-"""
+"""MJCF text (or Python values) into field values: the attrs converters of every node field."""
 
 from __future__ import annotations
 
 import functools
 import math
-import re
 from collections.abc import Callable, Collection, Iterable, Iterator
 from typing import Any
 
 import numpy as np
 
 from mjcf_model.errors import MjcfValueError
+from mjcf_model.values.kinds import (
+    _CHUNK,
+    _ONLY_FLOATS,
+    _ONLY_INTS,
+    _SPACES,
+    NAN,
+    Floats,
+    Ints,
+    Unparsed,
+    Value,
+    _shortened,
+    check_text,
+)
 
 __all__ = [
-    "Floats",
-    "Ints",
     "OneOf",
-    "Unparsed",
-    "Value",
-    "check_name",
-    "check_text",
     "float_from_text",
-    "float_key",
     "floats_from_text",
-    "format_float",
-    "format_value",
+    "numbers_of",
     "one_of",
-    "plain_value",
     "text_reader",
     "to_bool",
     "to_float",
@@ -58,31 +45,6 @@ __all__ = [
     "to_vec4",
     "to_vec6",
 ]
-
-#: A vector of numbers as a node stores it.
-Floats = tuple[float, ...]
-#: A vector of integers as a node stores it.
-Ints = tuple[int, ...]
-
-
-#: The one NaN every field holds. ``nan != nan``, but tuples compare items by
-#: identity first: with a single NaN object, two nodes holding NaN are equal
-#: and hash alike, as their compiled models are identical.
-NAN = float("nan")
-
-
-def float_key(value: float | None) -> tuple[float | None]:
-    """What ``==`` and ``hash`` compare of a one-number field: NaN equals NaN.
-
-    ``float`` compares NaN unequal even to itself; a 1-tuple compares its item
-    by identity first, and every field holds the same :data:`NAN` object.
-
-    Example:
-        >>> NAN == NAN, float_key(NAN) == float_key(NAN)
-        (False, True)
-
-    """
-    return (value,)
 
 
 def _one_nan(items: Floats) -> Floats:
@@ -137,10 +99,6 @@ def _count_phrase(lo: int, hi: int | None) -> str:
     return f"{lo} to {hi} numbers"
 
 
-_ONLY_FLOATS = frozenset({float})
-_ONLY_INTS = frozenset({int})
-
-
 def _floats(value: object, lo: int, hi: int | None) -> Floats:
     items: Floats
     if type(value) is str:
@@ -191,12 +149,6 @@ def _counted(items: Floats, lo: int, hi: int | None, found: object) -> Floats:
     return items
 
 
-#: Longer text is split a piece at a time, so a 50 MB attribute never becomes
-#: millions of token strings at once.
-_CHUNK = 1 << 20
-_SPACES = (" ", "\n", "\t", "\r", "\f", "\v")
-
-
 def _chunks(text: str) -> Iterator[str]:
     """``text`` in pieces of about ``_CHUNK`` characters, cut at white space."""
     start = 0
@@ -213,124 +165,6 @@ def _reads_as_float(token: str) -> bool:
     except ValueError:
         return False
     return True
-
-
-def _shortened(value: object, limit: int = 80) -> object:
-    """``value`` for an error message: long text is cut, so a 50 MB attribute is not copied."""
-    if isinstance(value, str) and len(value) > limit:
-        return f"{value[:limit]}... ({len(value)} characters)"
-    if isinstance(value, tuple) and len(value) > limit // 8:
-        return (*value[: limit // 8], "...")
-    return value
-
-
-class Unparsed:
-    """Attribute text a typed field cannot read, kept verbatim because MuJoCo may read it.
-
-    MuJoCo reads some spellings the typed fields refuse (``size="0x10"`` is 16,
-    ``pos=""`` is "use the default"). The readers keep such text as it was and
-    the writers write it back unchanged, so the model compiles exactly as the
-    file did. Using the value (iterating, indexing, converting it to a number)
-    raises the :class:`~mjcf_model.errors.MjcfValueError` that reading it found,
-    with the file, line and element path it came from.
-
-    Example:
-        >>> from serializers import loads
-        >>> model = loads('<mujoco><worldbody><geom size="0x10"/></worldbody></mujoco>')
-        >>> geom = model.worldbody.geoms[0]
-        >>> geom.size
-        Unparsed('0x10')
-        >>> geom.size[0]
-        Traceback (most recent call last):
-        ...
-        mjcf_model.errors.MjcfValueError: <string>:1: /mujoco/worldbody/geom: attribute 'size': \
-expected a number, found '0x10' (kept verbatim: MuJoCo may read what mjcf-model cannot)
-
-    """
-
-    __slots__ = ("problem", "text")
-
-    def __init__(self, text: str, problem: MjcfValueError | None = None) -> None:
-        #: The attribute text exactly as read.
-        self.text = check_text(text, "unparsed text")
-        #: Why the typed field could not read it, located where it was read.
-        self.problem = problem
-
-    def __eq__(self, other: object) -> bool:
-        return type(other) is Unparsed and other.text == self.text
-
-    def __hash__(self) -> int:
-        return hash((Unparsed, self.text))
-
-    def __repr__(self) -> str:
-        return f"Unparsed({_shortened(self.text)!r})"
-
-    def fail(self, *_args: object) -> Any:
-        """Raise the error reading this value found."""
-        problem = self.problem or MjcfValueError(f"cannot read {_shortened(self.text)!r}")
-        raise MjcfValueError(
-            f"{problem.detail} (kept verbatim: MuJoCo may read what mjcf-model cannot)",
-            file=problem.file,
-            line=problem.line,
-            path=problem.path,
-        )
-
-    __iter__ = __len__ = __getitem__ = __float__ = __int__ = __index__ = fail
-    __add__ = __radd__ = __sub__ = __rsub__ = __mul__ = __rmul__ = __truediv__ = fail
-    __neg__ = __lt__ = __le__ = __gt__ = __ge__ = __array__ = fail
-
-
-#: Anything a node field may hold.
-Value = str | int | float | bool | Floats | Ints | Unparsed
-
-
-#: One character XML 1.0 cannot carry. Every pattern in the library is a single
-#: character class, which cannot backtrack (tests/test_values.py checks this).
-NOT_XML_CHARACTER = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
-_NOT_NAME_CHARACTER = re.compile(
-    "[^-.0-9:A-Z_a-z\xb7\xc0-\xd6\xd8-\xf6\xf8-\u037d\u037f-\u1fff\u200c\u200d"
-    "\u203f\u2040\u2070-\u218f\u2c00-\u2fef\u3001-\ud7ff\uf900-\ufdcf\ufdf0-\ufffd"
-    "\U00010000-\U000effff]"
-)
-_NOT_NAME_START = frozenset("-.0123456789\xb7\u203f\u2040") | {chr(c) for c in range(0x300, 0x370)}
-
-
-def check_text(value: str, what: str = "text") -> str:
-    r"""Return ``value``, or raise when it holds a character XML cannot carry.
-
-    Such text (NUL and other control characters, lone surrogates) could be
-    built but not written and read back, so no node accepts it.
-
-    Example:
-        >>> check_text("arm\x00")
-        Traceback (most recent call last):
-        ...
-        mjcf_model.errors.MjcfValueError: text 'arm\x00' holds U+0000, which XML cannot carry
-
-    """
-    bad = NOT_XML_CHARACTER.search(value)
-    if bad is not None:
-        raise MjcfValueError(
-            f"{what} {_shortened(value)!r} holds U+{ord(bad.group()):04X}, which XML cannot carry"
-        )
-    return value
-
-
-def check_name(value: str, what: str = "name") -> str:
-    """Return ``value``, or raise unless it is an XML name (a tag or an attribute name).
-
-    Example:
-        >>> check_name("geom"), check_name("xmlns:mj")
-        ('geom', 'xmlns:mj')
-        >>> check_name("1st")
-        Traceback (most recent call last):
-        ...
-        mjcf_model.errors.MjcfValueError: name '1st' is not an XML name
-
-    """
-    if not value or value[0] in _NOT_NAME_START or _NOT_NAME_CHARACTER.search(value):
-        raise MjcfValueError(f"{what} {_shortened(value)!r} is not an XML name")
-    return value
 
 
 def to_str(value: str | Unparsed | None) -> str | None:
@@ -547,71 +381,25 @@ def one_of(choices: Collection[str]) -> OneOf:
     return OneOf(choices)
 
 
-def format_float(value: float) -> str:
-    """Write a float as the shortest text that reads back to the same double.
-
-    Integral values drop the ``.0`` (``1.0`` becomes ``"1"``); ``-0.0`` keeps its sign.
+def numbers_of(value: Value | None) -> tuple[float, ...] | None:
+    """The numbers in an attribute value, typed or text; ``None`` when it has none.
 
     Example:
-        >>> format_float(0.1), format_float(2.0), format_float(-0.0), format_float(1e-08)
-        ('0.1', '2', '-0', '1e-08')
+        >>> numbers_of("1 2.5"), numbers_of(3), numbers_of("x")
+        ((1.0, 2.5), (3.0,), None)
 
     """
-    if value.is_integer() and abs(value) < 1e16:
-        if value == 0.0 and math.copysign(1.0, value) < 0:
-            return "-0"
-        return str(int(value))
-    return repr(value)
-
-
-def format_value(value: Value) -> str:
-    """Write a field value as MJCF attribute text.
-
-    Example:
-        >>> format_value((1.0, 0.5)), format_value(3), format_value(False), format_value("a")
-        ('1 0.5', '3', 'false', 'a')
-
-    """
+    if value is None:
+        return None
+    if type(value) is tuple:
+        return tuple(map(float, value))
+    if type(value) is float:
+        return (value,)
     if isinstance(value, str):
-        return value
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, float):
-        return format_float(value)
-    if isinstance(value, int):
-        return str(value)
-    if isinstance(value, Unparsed):
-        return value.text
-    if len(value) > _CHUNK // 8:  # a piece at a time: no list of millions of strings
-        step = _CHUNK // 8
-        return " ".join(_format_items(value[i : i + step]) for i in range(0, len(value), step))
-    return _format_items(value)
-
-
-def _format_items(values: Floats | Ints) -> str:
-    kinds = set(map(type, values))
-    if kinds == _ONLY_FLOATS:
-        # What format_float does, in C: repr is the shortest text, and an integral
-        # float below 1e16 is the only one whose repr ends in ".0", which goes.
-        return (" ".join(map(repr, values)) + " ").replace(".0 ", " ")[:-1]
-    if kinds == _ONLY_INTS:
-        return " ".join(map(str, values))
-    return " ".join(format_float(v) if isinstance(v, float) else str(v) for v in values)
-
-
-def plain_value(value: Any) -> Any:
-    """Numpy arrays and scalars as plain Python values, lists as tuples.
-
-    Example:
-        >>> import numpy as np
-        >>> plain_value(np.array([1.5, 2.0])), plain_value(np.int64(3))
-        ((1.5, 2.0), 3)
-
-    """
-    if isinstance(value, np.ndarray):
-        return plain_value(value.tolist())
-    if isinstance(value, np.generic):
-        return value.item()
-    if isinstance(value, (list, tuple)):
-        return tuple(plain_value(v) for v in value)
-    return value
+        try:
+            return tuple(float(part) for part in value.split())
+        except ValueError:
+            return None
+    if isinstance(value, (int, float)):
+        return (float(value),)
+    return tuple(float(v) for v in value)

@@ -1,0 +1,86 @@
+"""Field values into MJCF text: the one place numbers are formatted."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from mjcf_model.values.kinds import _CHUNK, _ONLY_FLOATS, _ONLY_INTS, Floats, Ints, Unparsed, Value
+
+__all__ = [
+    "format_float",
+    "format_value",
+    "plain_value",
+]
+
+
+def format_float(value: float) -> str:
+    """Write a float as the shortest text that reads back to the same double.
+
+    Integral values drop the ``.0`` (``1.0`` becomes ``"1"``); ``-0.0`` keeps its sign.
+
+    Example:
+        >>> format_float(0.1), format_float(2.0), format_float(-0.0), format_float(1e-08)
+        ('0.1', '2', '-0', '1e-08')
+
+    """
+    if value.is_integer() and abs(value) < 1e16:
+        if value == 0.0 and math.copysign(1.0, value) < 0:
+            return "-0"
+        return str(int(value))
+    return repr(value)
+
+
+def format_value(value: Value) -> str:
+    """Write a field value as MJCF attribute text.
+
+    Example:
+        >>> format_value((1.0, 0.5)), format_value(3), format_value(False), format_value("a")
+        ('1 0.5', '3', 'false', 'a')
+
+    """
+    if isinstance(value, str):
+        return value
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return format_float(value)
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, Unparsed):
+        return value.text
+    if len(value) > _CHUNK // 8:  # a piece at a time: no list of millions of strings
+        step = _CHUNK // 8
+        return " ".join(_format_items(value[i : i + step]) for i in range(0, len(value), step))
+    return _format_items(value)
+
+
+def _format_items(values: Floats | Ints) -> str:
+    kinds = set(map(type, values))
+    if kinds == _ONLY_FLOATS:
+        # What format_float does, in C: repr is the shortest text, and an integral
+        # float below 1e16 is the only one whose repr ends in ".0", which goes.
+        return (" ".join(map(repr, values)) + " ").replace(".0 ", " ")[:-1]
+    if kinds == _ONLY_INTS:
+        return " ".join(map(str, values))
+    return " ".join(format_float(v) if isinstance(v, float) else str(v) for v in values)
+
+
+def plain_value(value: Any) -> Any:
+    """Numpy arrays and scalars as plain Python values, lists as tuples.
+
+    Example:
+        >>> import numpy as np
+        >>> plain_value(np.array([1.5, 2.0])), plain_value(np.int64(3))
+        ((1.5, 2.0), 3)
+
+    """
+    if isinstance(value, np.ndarray):
+        return plain_value(value.tolist())
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, (list, tuple)):
+        return tuple(plain_value(v) for v in value)
+    return value
