@@ -84,8 +84,8 @@ def _converter_and_union() -> tuple[cattrs.Converter, tuple[type, ...]]:
     built.register_structure_hook(AttributeMap, lambda value, _: AttributeMap(value))
     # A layout (how a loaded element was written) is not part of the value: to_dict drops it.
     built.register_unstructure_hook(Layout, lambda _layout: None)
-    members = _union_members()  # what include_subclasses finds, at the same moment
-    include_subclasses(Node, built, union_strategy=_union)
+    members = _union_members()
+    include_subclasses(Node, built, subclasses=members[1:], union_strategy=_union)
     return built, members
 
 
@@ -204,14 +204,24 @@ class _Codec:
 
 
 def _union_members() -> tuple[type, ...]:
-    """The classes of the converter's union: ``Node`` and every subclass, as cattrs finds them."""
+    """The classes of the converter's union: ``Node`` and every subclass whose types resolve.
+
+    A subclass declared where its annotations cannot be resolved (in a function, a
+    doctest, a module that imports its types only for type checkers) is left out:
+    converting one of its nodes raises, and every other node still converts.
+    """
     seen: dict[type, None] = {}
     stack: list[type] = [Node]
     while stack:
         cls = stack.pop()
-        if cls not in seen:
-            seen[cls] = None
-            stack.extend(cls.__subclasses__())
+        if cls in seen:
+            continue
+        try:
+            attrs.resolve_types(cls)
+        except Exception:  # NameError, TypeError...: any failure to resolve
+            continue
+        seen[cls] = None
+        stack.extend(cls.__subclasses__())
     return tuple(seen)
 
 

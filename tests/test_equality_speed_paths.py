@@ -355,3 +355,29 @@ def test_bad_dicts_are_explained(data: dict[str, Any], message: str) -> None:
     """A dict the fast path cannot build still fails with the converter's message and path."""
     with pytest.raises(MjcfValueError, match=message):
         from_dict(data)
+
+
+def test_a_node_class_whose_types_do_not_resolve_leaves_dicts_working() -> None:
+    """A subclass declared where its annotations cannot resolve does not break ``to_dict``.
+
+    Such a class (declared in a function or a doctest, its types imported only for
+    type checkers) used to make the converter fail for every node.
+    """
+    namespace: dict[str, Any] = {}
+    exec(  # a class whose annotation names a type nothing defines
+        "from __future__ import annotations\n"
+        "import attrs\n"
+        "from mjcf_model.nodes.base import TypedElement\n"
+        "@attrs.frozen(kw_only=True)\n"
+        "class Unresolvable(TypedElement):\n"
+        "    thing: NowhereDefined | None = None\n",
+        namespace,
+    )
+    dicts._converter_and_union.cache_clear()
+    dicts._codec.cache_clear()
+    try:
+        geom = Geom(name="g", size=[0.1])
+        assert from_dict(to_dict(geom)) == geom
+    finally:
+        dicts._converter_and_union.cache_clear()
+        dicts._codec.cache_clear()

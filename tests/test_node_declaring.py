@@ -11,7 +11,8 @@ from hypothesis import strategies as st
 
 from mjcf_model import Geom, Joint
 from mjcf_model.nodes.base import TypedElement, build_node
-from mjcf_model.nodes.declaring import declared_classes, node, reference, vec3
+from mjcf_model.nodes.declaring import declared_classes, node
+from mjcf_model.nodes.fields import reference, vec3
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.strategies import element_values, elements

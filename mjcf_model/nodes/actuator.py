@@ -9,11 +9,11 @@ from __future__ import annotations
 from typing import ClassVar
 
 from mjcf_model.nodes.base import TypedElement
-from mjcf_model.nodes.declaring import (
+from mjcf_model.nodes.declaring import node
+from mjcf_model.nodes.fields import (
     boolean,
     integer,
     keyword,
-    node,
     number,
     numbers,
     reference,

@@ -9,17 +9,8 @@ from __future__ import annotations
 from typing import ClassVar
 
 from mjcf_model.nodes.base import TypedElement
-from mjcf_model.nodes.declaring import (
-    integer,
-    integers,
-    node,
-    number,
-    numbers,
-    text,
-    vec1to2,
-    vec1to5,
-    vec3,
-)
+from mjcf_model.nodes.declaring import node
+from mjcf_model.nodes.fields import integer, integers, number, numbers, text, vec1to2, vec1to5, vec3
 from mjcf_model.values import Floats, Ints
 
 __all__ = ["Compiler", "LengthRange", "Option", "OptionFlag", "Size", "Statistic"]

@@ -1,4 +1,4 @@
-"""Declaring node classes: one decorator, one helper per kind of field, one metadata object.
+"""Declaring node classes: one decorator and one metadata object per class.
 
 Every node class is written as::
 
@@ -9,10 +9,11 @@ Every node class is written as::
         #: Size parameters; their number and meaning depend on ``type``.
         size: Floats | None = vec1to3()
 
-:func:`node` makes the class a frozen attrs class whose instances store only
-the fields that were given (absent fields read their default from the class),
-and builds its :class:`NodeInfo` once: the MJCF attribute table, converters,
-validators and defaults that the readers, writers and the fast builder use.
+:func:`node` (with the field helpers of :mod:`mjcf_model.nodes.fields`) makes
+the class a frozen attrs class whose instances store only the fields that were
+given (absent fields read their default from the class), and builds its
+:class:`NodeInfo` once: the MJCF attribute table, converters, validators and
+defaults that the readers, writers and the fast builder use.
 
 >>> from mjcf_model import Geom
 >>> info = Geom.__node_info__
@@ -24,52 +25,24 @@ from __future__ import annotations
 
 import inspect
 import operator
-from collections.abc import Callable, Collection
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, TypeVar
 
 import attrs
 
 from mjcf_model.values import (
     float_key,
-    one_of,
     text_reader,
-    to_bool,
-    to_float,
-    to_floats,
-    to_int,
-    to_ints,
     to_str,
-    to_vec1to2,
-    to_vec1to3,
-    to_vec1to5,
-    to_vec2,
-    to_vec3,
-    to_vec4,
-    to_vec6,
 )
 
 __all__ = [
     "BASE_FIELDS",
     "NodeInfo",
-    "boolean",
     "declare",
     "declared_classes",
-    "integer",
-    "integers",
-    "keyword",
     "node",
-    "number",
-    "numbers",
-    "reference",
-    "text",
     "tuple_getter",
-    "vec1to2",
-    "vec1to3",
-    "vec1to5",
-    "vec2",
-    "vec3",
-    "vec4",
-    "vec6",
     "xml_name",
 ]
 
@@ -274,6 +247,7 @@ def declare(cls: _C) -> _C:
     Example:
         >>> from typing import ClassVar
         >>> from mjcf_model.nodes.base import TypedElement
+        >>> from mjcf_model.nodes.fields import vec3
         >>> @node
         ... class Thing(TypedElement):
         ...     tag: ClassVar[str] = "thing"
@@ -328,176 +302,3 @@ if TYPE_CHECKING:
     from attrs import frozen as node
 else:
     node = declare
-
-
-def _field(converter: Callable[[Any], Any], xml: str | None, **more: Any) -> Any:
-    metadata = more.pop("metadata", {})
-    if xml is not None:
-        metadata = {**metadata, "xml": xml}
-    return attrs.field(default=None, converter=converter, metadata=metadata, **more)
-
-
-def text(*, xml: str | None = None) -> Any:
-    """A text attribute (a name, a file, a free-form string); ``xml`` if MJCF spells it otherwise.
-
-    Example:
-        >>> text(xml="class").metadata["xml"]
-        'class'
-
-    """
-    return _field(to_str, xml)
-
-
-def keyword(choices: Collection[str], *, xml: str | None = None) -> Any:
-    """A text attribute that takes one of MJCF's keywords.
-
-    Example:
-        >>> from mjcf_model import Joint
-        >>> "hinge" in attrs.fields(Joint).type.validator.allowed
-        True
-
-    """
-    return _field(to_str, xml, validator=one_of(choices))
-
-
-def reference(namespace: str, *, xml: str | None = None) -> Any:
-    """A text attribute that names an element of ``namespace`` (``"joint"``, ``"class"``...).
-
-    Example:
-        >>> reference("mesh").metadata["namespace"]
-        'mesh'
-
-    """
-    return _field(to_str, xml, metadata={"namespace": namespace})
-
-
-def number() -> Any:
-    """One real number (``==`` holds NaN equal to NaN).
-
-    Example:
-        >>> number().converter("1e-3")
-        0.001
-
-    """
-    return _field(to_float, None, eq=float_key)
-
-
-def integer() -> Any:
-    """One integer.
-
-    Example:
-        >>> integer().converter("3")
-        3
-
-    """
-    return _field(to_int, None)
-
-
-def boolean() -> Any:
-    """MJCF's ``"true"``/``"false"``.
-
-    Example:
-        >>> boolean().converter("true")
-        True
-
-    """
-    return _field(to_bool, None)
-
-
-def numbers() -> Any:
-    """Any number of real numbers.
-
-    Example:
-        >>> numbers().converter("1 2")
-        (1.0, 2.0)
-
-    """
-    return _field(to_floats, None)
-
-
-def integers() -> Any:
-    """Any number of integers.
-
-    Example:
-        >>> integers().converter("1 2")
-        (1, 2)
-
-    """
-    return _field(to_ints, None)
-
-
-def vec2() -> Any:
-    """Exactly two real numbers (ranges).
-
-    Example:
-        >>> vec2().converter("-1 1")
-        (-1.0, 1.0)
-
-    """
-    return _field(to_vec2, None)
-
-
-def vec3() -> Any:
-    """Exactly three real numbers (positions, axes).
-
-    Example:
-        >>> vec3().converter([0, 0, 1])
-        (0.0, 0.0, 1.0)
-
-    """
-    return _field(to_vec3, None)
-
-
-def vec4() -> Any:
-    """Exactly four real numbers (quaternions, colours).
-
-    Example:
-        >>> vec4().converter("1 0 0 0")
-        (1.0, 0.0, 0.0, 0.0)
-
-    """
-    return _field(to_vec4, None)
-
-
-def vec6() -> Any:
-    """Exactly six real numbers (``fromto``, ``xyaxes``).
-
-    Example:
-        >>> len(vec6().converter("0 0 0 1 1 1"))
-        6
-
-    """
-    return _field(to_vec6, None)
-
-
-def vec1to2() -> Any:
-    """One or two real numbers (``solref``).
-
-    Example:
-        >>> vec1to2().converter("0.02")
-        (0.02,)
-
-    """
-    return _field(to_vec1to2, None)
-
-
-def vec1to3() -> Any:
-    """One to three real numbers (``size``, ``friction``).
-
-    Example:
-        >>> vec1to3().converter("0.1 0.2")
-        (0.1, 0.2)
-
-    """
-    return _field(to_vec1to3, None)
-
-
-def vec1to5() -> Any:
-    """One to five real numbers (``solimp``).
-
-    Example:
-        >>> vec1to5().converter("0.9 0.95")
-        (0.9, 0.95)
-
-    """
-    return _field(to_vec1to5, None)

@@ -9,9 +9,9 @@ from __future__ import annotations
 from typing import ClassVar
 
 from mjcf_model.nodes.base import TypedElement
-from mjcf_model.nodes.declaring import (
+from mjcf_model.nodes.declaring import node
+from mjcf_model.nodes.fields import (
     boolean,
-    node,
     number,
     numbers,
     reference,

@@ -9,7 +9,8 @@ from __future__ import annotations
 from typing import ClassVar
 
 from mjcf_model.nodes.base import TypedElement
-from mjcf_model.nodes.declaring import node, reference, text
+from mjcf_model.nodes.declaring import node
+from mjcf_model.nodes.fields import reference, text
 
 __all__ = ["Extension", "ExtensionPlugin", "Plugin", "PluginConfig", "PluginInstance", "PluginUse"]
 

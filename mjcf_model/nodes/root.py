@@ -20,10 +20,11 @@ from mjcf_model.nodes.body import Worldbody
 from mjcf_model.nodes.compiler import Compiler, Option, Size, Statistic
 from mjcf_model.nodes.contact import Contact
 from mjcf_model.nodes.custom import Custom
-from mjcf_model.nodes.declaring import node, text
+from mjcf_model.nodes.declaring import node
 from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.deformable import Deformable
 from mjcf_model.nodes.equality import Equality
+from mjcf_model.nodes.fields import text
 from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.nodes.plugin import Extension
 from mjcf_model.nodes.sensor import Sensor

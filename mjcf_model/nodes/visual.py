@@ -9,7 +9,8 @@ from __future__ import annotations
 from typing import ClassVar
 
 from mjcf_model.nodes.base import TypedElement
-from mjcf_model.nodes.declaring import node, text
+from mjcf_model.nodes.declaring import node
+from mjcf_model.nodes.fields import text
 
 __all__ = [
     "Visual",
