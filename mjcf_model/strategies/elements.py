@@ -1,0 +1,185 @@
+"""Strategies for single elements: geoms, joints, sites, materials, and any typed class."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import attrs
+from hypothesis import strategies as st
+
+from mjcf_model.nodes import (
+    Geom,
+    Material,
+    Site,
+)
+from mjcf_model.nodes import Joint as JointNode
+from mjcf_model.nodes.base import TypedElement, field_table
+from mjcf_model.strategies.primitives import (
+    _E,
+    _Draw,
+    _length,
+    _number,
+    _rgba,
+    _unit_quat,
+    _vec,
+    names,
+)
+
+__all__ = [
+    "element_values",
+    "elements",
+    "geoms",
+    "joints",
+    "materials",
+    "sites",
+]
+
+
+_SIZE_COUNT = {"sphere": 1, "capsule": 2, "cylinder": 2, "box": 3, "ellipsoid": 3}
+
+
+_FLOAT = st.floats(allow_nan=False, allow_infinity=False, width=64)
+
+
+_VALUE_BY_CONVERTER: dict[str, st.SearchStrategy[Any]] = {
+    "to_str": names(),
+    "to_float": _FLOAT,
+    "to_int": st.integers(-1000, 1000),
+    "to_bool": st.booleans(),
+    "to_floats": st.lists(_FLOAT, max_size=6).map(tuple),
+    "to_ints": st.lists(st.integers(0, 100), max_size=6).map(tuple),
+    "to_vec2": st.tuples(_FLOAT, _FLOAT),
+    "to_vec3": st.tuples(_FLOAT, _FLOAT, _FLOAT),
+    "to_vec4": st.tuples(_FLOAT, _FLOAT, _FLOAT, _FLOAT),
+    "to_vec6": st.tuples(*[_FLOAT] * 6),
+    "to_vec1to3": st.lists(_FLOAT, min_size=1, max_size=3).map(tuple),
+    "to_vec1to2": st.lists(_FLOAT, min_size=1, max_size=2).map(tuple),
+    "to_vec1to5": st.lists(_FLOAT, min_size=1, max_size=5).map(tuple),
+}
+
+
+@st.composite
+def geoms(draw: _Draw[Any], name: str | None = None, material: str | None = None) -> Geom:
+    """A primitive geom (sphere, capsule, cylinder, box, ellipsoid) with a valid size.
+
+    Example:
+        >>> geoms().example().type in {"sphere", "capsule", "cylinder", "box", "ellipsoid"}
+        True
+
+    """
+    geom_type = draw(st.sampled_from(sorted(_SIZE_COUNT)))
+    size = draw(st.tuples(*[_length() for _ in range(_SIZE_COUNT[geom_type])]))
+    return Geom(
+        name=name,
+        type=geom_type,
+        size=size,
+        pos=draw(st.none() | _vec(3)),
+        quat=draw(st.none() | _unit_quat()),
+        rgba=draw(st.none() | _rgba()),
+        material=material,
+        group=draw(st.none() | st.integers(0, 5)),
+        friction=draw(st.none() | st.tuples(_length(0.1, 2.0), _length(0.001, 0.1))),
+    )
+
+
+@st.composite
+def joints(draw: _Draw[Any], name: str | None = None, scalar: bool = False) -> JointNode:
+    """A hinge, slide or (unless ``scalar``) ball joint.
+
+    Example:
+        >>> joints(scalar=True).example().type in {"hinge", "slide"}
+        True
+
+    """
+    kinds = ["hinge", "slide"] if scalar else ["hinge", "slide", "ball"]
+    joint_type = draw(st.sampled_from(kinds))
+    limits = None
+    if joint_type != "ball" and draw(st.booleans()):
+        low = draw(_number(-2.0, 0.0))
+        limits = (low, low + draw(_length(0.1, 2.0)))
+    return JointNode(
+        name=name,
+        type=joint_type,
+        axis=draw(st.none() | _vec(3).filter(lambda a: sum(v * v for v in a) > 0.1)),
+        pos=draw(st.none() | _vec(3)),
+        range=limits,
+        damping=draw(st.none() | st.tuples(_length(0.0, 2.0))),
+        armature=draw(st.none() | _length(0.0, 0.1)),
+    )
+
+
+@st.composite
+def sites(draw: _Draw[Any], name: str | None = None) -> Site:
+    """A small spherical site.
+
+    Example:
+        >>> sites(name="tip").example().name
+        'tip'
+
+    """
+    return Site(name=name, pos=draw(st.none() | _vec(3)), size=(draw(_length(0.005, 0.05)),))
+
+
+@st.composite
+def materials(draw: _Draw[Any], name: str, texture: str | None = None) -> Material:
+    """A material, optionally using a texture.
+
+    Example:
+        >>> materials(name="m").example().name
+        'm'
+
+    """
+    return Material(
+        name=name,
+        texture=texture,
+        rgba=draw(st.none() | _rgba()),
+        specular=draw(st.none() | _length(0.0, 1.0)),
+        texrepeat=(1.0, 1.0) if texture else None,
+    )
+
+
+def _field_values(cls: type[TypedElement]) -> dict[str, st.SearchStrategy[Any]]:
+    """A strategy per field of ``cls`` that produces values its converter accepts."""
+    strategies: dict[str, st.SearchStrategy[Any]] = {}
+    fields = {f.name: f for f in attrs.fields(cls)}
+    for field_name in field_table(cls).values():
+        field = fields[field_name]
+        converter = getattr(field.converter, "__name__", "")
+        strategies[field_name] = _VALUE_BY_CONVERTER.get(converter, st.none())
+    return strategies
+
+
+def element_values(cls: type[TypedElement]) -> st.SearchStrategy[dict[str, Any]]:
+    """Keyword arguments for ``cls``: some of its attribute fields, each with a value it accepts.
+
+    Keyword fields (``Geom.type``...) draw from their valid keywords.
+
+    Example:
+        >>> values = element_values(Geom).example()
+        >>> Geom(**values).tag
+        'geom'
+
+    """
+    values = {name: st.none() | strategy for name, strategy in _field_values(cls).items()}
+    validated = {
+        f.name: f for f in attrs.fields(cls) if f.validator is not None and f.name in values
+    }
+    for name, field in validated.items():
+        allowed = getattr(field.validator, "allowed", None)
+        if allowed:
+            values[name] = st.none() | st.sampled_from(sorted(allowed))
+    return st.fixed_dictionaries({}, optional=values)
+
+
+def elements(cls: type[_E]) -> st.SearchStrategy[_E]:
+    """Any instance of a typed node class, with arbitrary well-formed attribute values.
+
+    Keyword fields (``Geom.type``...) draw from their valid keywords. The values
+    need not make physical sense: use this for serializer round trips.
+
+    Example:
+        >>> elements(Geom).example().tag
+        'geom'
+
+    """
+    return element_values(cls).map(lambda values: cls(**values))
