@@ -1,47 +1,36 @@
 """robosuite 1.5.2's ``robosuite.utils.mjcf_utils``, over the immutable model.
 
-Every public name of robosuite's module is here with the same signature and
-the same observable behaviour: the same return values (``None`` from
-``find_elements`` when nothing matches, lists of the *live* ElementTree
-elements), the same in-place changes (attributes set where robosuite sets them,
-so ``ET.tostring`` gives the same bytes), the same number text
-(``"{}".format(x)``: numpy floats print as ``0.0``). Code written for
-robosuite runs unchanged after replacing the import::
+Every public name of robosuite's module is here with the same signature and the
+same observable behaviour (return values, in-place edits of the live ElementTree
+elements, number text), so robosuite code runs after replacing the import::
 
     from mjcf_model.compat import mjcf_utils  # instead of robosuite.utils.mjcf_utils
 
-Each tree function is a thin wrapper: it converts the ElementTree element to
-generic nodes (``from_etree(typed=False)``, which keeps attribute text exactly),
-calls a pure function on the nodes, and writes the result back onto the same
-ElementTree elements (never replacing one: robosuite code holds references to
-them). robosuite's quirks (prefixing by attribute name, skipping values that
-already start with the prefix, sizes scaled by their count) live in those pure
-functions of the ``utils_*`` modules only, not in the library.
+Each tree function converts the element to generic nodes, calls a pure function
+on them, and writes the result back onto the same elements (never replacing one).
 
-Where robosuite crashes on valid MJCF, these functions do the right thing
-instead, as each docstring says: the tree functions read numbers separated by
-any white space (robosuite's ``string_to_array`` needs single spaces; that
-function itself keeps robosuite's behaviour), ``find_elements_by_substring``
-skips unnamed elements and honours ``return_first``, and a function that
-fails leaves what it was changing (the tree, or the one element of a
-``scale_*_element``) unchanged instead of half edited. Named textures and
-relative paths need robosuite's asset files: robosuite is found without being
-imported, and ``MjcfLookupError`` says when it is missing.
+Deliberate differences from robosuite:
 
-Deliberate differences that are not crashes: an ``exclude`` callable sees the
-tree as it was when the function was called (robosuite has already edited the
-elements before the one it asks about), and sets such as
-``MUJOCO_NAMED_ATTRIBUTES`` hold robosuite's items but may iterate in another
-order (which robosuite's own order depends on: how the interpreter built the
-set, and the hash seed).
+* The tree functions read numbers separated by any white space (robosuite raises
+  ``ValueError`` on valid MJCF such as ``pos="0  0 1"``); ``string_to_array``
+  itself keeps robosuite's behaviour.
+* ``find_elements_by_substring`` skips unnamed elements (robosuite raises
+  ``TypeError``) and with ``return_first`` returns the first match (robosuite
+  searches the children of the first element with the tag).
+* A function that raises leaves what it was changing (the tree, or the element a
+  ``scale_*`` function was scaling) unchanged instead of half edited.
+* An ``exclude`` callable sees the tree as it was when the function was called
+  (robosuite has already edited the elements before the one it asks about).
+* Named textures and relative paths need robosuite's asset files: robosuite is
+  found without being imported, and ``MjcfLookupError`` says when it is missing.
+* Sets such as ``MUJOCO_NAMED_ATTRIBUTES`` hold robosuite's items but may iterate
+  in another order (robosuite's own depends on the interpreter and the hash seed).
 
 >>> import xml.etree.ElementTree as ET
 >>> obj = ET.fromstring('<body name="can"><geom name="g" mesh="can_mesh"/></body>')
 >>> add_prefix(obj, "can_")
 >>> ET.tostring(obj, encoding="unicode")
 '<body name="can_can"><geom name="can_g" mesh="can_mesh" /></body>'
->>> [e.get("name") for e in find_elements(obj, "geom", return_first=False)]
-['can_g']
 """
 
 from __future__ import annotations
@@ -109,8 +98,7 @@ from mjcf_model.compat.mjcf_utils.text import (
     xml_path_completion,
 )
 
-# ``_element_filter`` (imported above) is importable by name, as in robosuite, but,
-# being private, not part of ``from mjcf_utils import *``.
+# ``_element_filter`` is importable by name, as in robosuite, but private: not in ``__all__``.
 __all__ = [
     "ALL_TEXTURES",
     "BLUE",

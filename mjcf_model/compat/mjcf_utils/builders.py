@@ -1,19 +1,7 @@
-"""robosuite's element constructors: ``new_element``, ``new_joint``, ``new_geom``...
+"""robosuite's element constructors (``new_element``, ``new_geom``...) and their node builders.
 
-Each builds a generic node whose attribute text is robosuite's
-(:func:`convert_to_string`: ``"0 0 0"`` for a tuple of ints, ``"1.0 1.0"`` for a
-float array, ``"true"`` for ``True``) in robosuite's order (keyword arguments
-first, then the named parameters, then ``name``), and returns it as a new
-ElementTree element. The node builders (:func:`geom_node`, :func:`site_node`,
-:func:`joint_node`, :func:`body_node`) hold that order once; the object
-classes build their nodes with them too, with their more tolerant text rule
-(:func:`~mjcf_model.compat.objects.habits.value_text`). The library's
-:mod:`mjcf_model.builders` give the same elements as typed nodes with numbers
-in their shortest form.
-
->>> import xml.etree.ElementTree as ET
->>> ET.tostring(new_geom("g", "box", [0.1, 0.1, 0.1]), encoding="unicode")
-'<geom type="box" size="0.1 0.1 0.1" pos="0 0 0" group="0" name="g" />'
+Attribute text is :func:`convert_to_string`'s, in robosuite's order: keyword
+arguments, then the named parameters, then ``name``.
 """
 
 from __future__ import annotations
@@ -50,32 +38,16 @@ TextRule = Callable[[Any], str]
 def element_node(
     tag: str, attributes: Iterable[tuple[str, Any]], text: TextRule = convert_to_string
 ) -> GenericElement:
-    """A generic node with ``attributes`` in order, ``None`` values dropped, written by ``text``.
-
-    Raises:
-        ValueError: A value ``convert_to_string`` refuses (numpy scalars, dicts...).
-
-    Example:
-        >>> element_node("body", [("pos", (0, 0, 1)), ("quat", None), ("flag", True)]).attributes
-        AttributeMap({'pos': '0 0 1', 'flag': 'true'})
-
-    """
+    """A generic node with ``attributes`` in order, ``None`` values dropped, written by ``text``."""
     values = {key: text(value) for key, value in attributes if value is not None}
-    # robosuite's ElementTree takes text XML cannot carry, and so does this layer:
-    # the text is kept as it is, unchecked.
+    # Unchecked, as robosuite's ElementTree takes text XML cannot carry.
     return build_node(GenericElement, {"tag": tag, "attributes": AttributeMap.unchecked(values)})
 
 
 def joint_node(
     name: str | None, kwargs: Mapping[str, Any], text: TextRule = convert_to_string
 ) -> GenericElement:
-    """The node of robosuite's ``new_joint``: ``kwargs``, then ``name``.
-
-    Example:
-        >>> joint_node("j", {"type": "free"}).attributes
-        AttributeMap({'type': 'free', 'name': 'j'})
-
-    """
+    """The node of ``new_joint``: ``kwargs``, then ``name``."""
     return element_node("joint", [*kwargs.items(), ("name", name)], text)
 
 
@@ -87,13 +59,7 @@ def site_node(
     kwargs: Mapping[str, Any],
     text: TextRule = convert_to_string,
 ) -> GenericElement:
-    """The node of robosuite's ``new_site``: ``kwargs``, ``pos``, ``size``, ``rgba``, ``name``.
-
-    Example:
-        >>> site_node("s", RED, (0, 0, 0), (0.005,), {}).attributes
-        AttributeMap({'pos': '0 0 0', 'size': '0.005', 'rgba': '1 0 0 1', 'name': 's'})
-
-    """
+    """The node of ``new_site``: ``kwargs``, ``pos``, ``size``, ``rgba``, ``name``."""
     named = [("pos", pos), ("size", size), ("rgba", rgba), ("name", name)]
     return element_node("site", [*kwargs.items(), *named], text)
 
@@ -107,14 +73,7 @@ def geom_node(
     kwargs: Mapping[str, Any],
     text: TextRule = convert_to_string,
 ) -> GenericElement:
-    """The node of robosuite's ``new_geom``: ``kwargs``, type, size, pos, group, ``name``.
-
-    Example:
-        >>> geom = geom_node("g", "box", [0.1], (0, 0, 0), None, {"rgba": None, "material": "m"})
-        >>> geom.attributes
-        AttributeMap({'material': 'm', 'type': 'box', 'size': '0.1', 'pos': '0 0 0', 'name': 'g'})
-
-    """
+    """The node of ``new_geom``: ``kwargs``, ``type``, ``size``, ``pos``, ``group``, ``name``."""
     named = [("type", type), ("size", size), ("pos", pos), ("group", group), ("name", name)]
     return element_node("geom", [*kwargs.items(), *named], text)
 
@@ -122,13 +81,7 @@ def geom_node(
 def body_node(
     name: str | None, pos: Any, kwargs: Mapping[str, Any], text: TextRule = convert_to_string
 ) -> GenericElement:
-    """The node of robosuite's ``new_body``: ``kwargs``, ``pos``, ``name``.
-
-    Example:
-        >>> body_node("b", (0, 0, 1), {"quat": None}).attributes
-        AttributeMap({'pos': '0 0 1', 'name': 'b'})
-
-    """
+    """The node of ``new_body``: ``kwargs``, ``pos``, ``name``."""
     return element_node("body", [*kwargs.items(), ("pos", pos), ("name", name)], text)
 
 
@@ -136,7 +89,7 @@ def new_element(tag: str, name: str | None, **kwargs: Any) -> ET.Element:
     """A new element: ``kwargs`` as attributes (``None`` dropped), then ``name`` unless ``None``.
 
     Raises:
-        ValueError: A value ``convert_to_string`` refuses: numpy scalars, ``dict``...
+        ValueError: A value ``convert_to_string`` refuses (numpy scalars, ``dict``...).
 
     Example:
         >>> body = new_element("body", None, pos=[0, 0, 1], quat=None, mass=0.5, flag=True)
@@ -161,10 +114,7 @@ def new_joint(name: str | None, **kwargs: Any) -> ET.Element:
 def new_actuator(
     name: str | None, joint: Any, act_type: str = "actuator", **kwargs: Any
 ) -> ET.Element:
-    """A new actuator of tag ``act_type``: ``kwargs``, then ``name``, then ``joint``.
-
-    ``joint`` is set as given (robosuite does not convert it). The default tag
-    ``"actuator"`` is robosuite's, though MuJoCo has no such actuator.
+    """A new actuator of tag ``act_type``: ``kwargs``, ``name``, then ``joint`` as given.
 
     Example:
         >>> actuator = new_actuator(joint="gz", act_type="position", name="a", kp="500")
@@ -202,10 +152,7 @@ def new_geom(
     group: Any = 0,
     **kwargs: Any,
 ) -> ET.Element:
-    """A new ``<geom>`` (group 0, at the origin).
-
-    The attributes come in robosuite's order: ``kwargs``, ``type``, ``size``,
-    ``pos``, ``group``, ``name``.
+    """A new ``<geom>``: ``kwargs``, ``type``, ``size``, ``pos``, ``group``, ``name``.
 
     Example:
         >>> geom = new_geom("g", "sphere", [0.1], group=None, rgba=None, material="m")
@@ -217,11 +164,11 @@ def new_geom(
 
 
 def new_body(name: str | None, pos: Any = (0, 0, 0), **kwargs: Any) -> ET.Element:
-    """A new ``<body>`` at the origin: ``kwargs``, ``pos``, ``name``.
+    """A new ``<body>``: ``kwargs``, ``pos``, ``name``.
 
     Example:
-        >>> ET.tostring(new_body("b"), encoding="unicode"), ET.tostring(new_body(None, pos=None))
-        ('<body pos="0 0 0" name="b" />', b'<body />')
+        >>> ET.tostring(new_body("b"), encoding="unicode")
+        '<body pos="0 0 0" name="b" />'
 
     """
     return to_etree(body_node(name, pos, kwargs))

@@ -1,15 +1,4 @@
-"""The constants of robosuite's ``mjcf_utils``: colours, tag and attribute sets, textures.
-
-They have robosuite's types, because code compares, prints and extends them:
-colours are lists of Python numbers (``array_to_string(RED)`` is ``"1 0 0 1"``),
-``TEXTURES`` is a plain dict and ``ALL_TEXTURES`` its live key view, so adding
-a texture to ``TEXTURES`` makes it valid for ``CustomMaterial``.
-
->>> RED, OBJECT_COLLISION_COLOR
-([1, 0, 0, 1], [0.5, 0, 0, 1])
->>> TEXTURES["WoodDark"], "WoodDark" in ALL_TEXTURES
-('textures/dark-wood.png', True)
-"""
+"""robosuite's constants: colours, tag and attribute sets, textures, with robosuite's types."""
 
 from __future__ import annotations
 
@@ -45,8 +34,7 @@ GRIPPER_COLLISION_COLOR: list[float] = [0, 0, 0.5, 1]
 OBJECT_COLLISION_COLOR: list[float] = [0.5, 0, 0, 1]
 ENVIRONMENT_COLLISION_COLOR: list[float] = [0.5, 0.5, 0, 1]
 
-#: The tags ``_element_filter`` files under ``"sensors"`` (robosuite's list: 35 tags).
-#: Written in robosuite's order, so the set iterates in the same order as robosuite's.
+#: The tags ``_element_filter`` files under ``"sensors"`` (robosuite's 35, in its order).
 SENSOR_TYPES: set[str] = {
     "touch",
     "accelerometer",
@@ -85,9 +73,7 @@ SENSOR_TYPES: set[str] = {
     "user",
 }
 
-#: The attributes ``add_prefix`` prefixes by default (robosuite's list; its literal names
-#: ``objname`` twice, which changes nothing). Attributes not in it (``refname``,
-#: ``refsite``, ``site1``...) are never prefixed, as in robosuite.
+#: The attributes ``add_prefix`` prefixes by default (robosuite's list, in its order).
 MUJOCO_NAMED_ATTRIBUTES: set[str] = {
     "class",
     "childclass",

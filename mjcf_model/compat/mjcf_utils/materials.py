@@ -1,16 +1,7 @@
-"""robosuite's colours and materials: ``CustomMaterial``, ``add_material``, recolouring, alpha.
+"""robosuite's materials and colours: ``CustomMaterial``, ``add_material``, recolouring, alpha.
 
-:class:`CustomMaterial` is robosuite's mutable record (``add_material`` and
-robosuite's objects change and read its dicts), not the library's frozen
-:class:`mjcf_model.CustomMaterial`, whose text differs (``"true"`` where
-robosuite writes ``"True"``; a built-in flat texture where robosuite writes a
-PNG file). The tree functions are thin wrappers over pure functions on nodes.
-
->>> import xml.etree.ElementTree as ET
->>> body = ET.fromstring('<body><geom name="c" material="m"/><geom name="v" group="1"/></body>')
->>> recolor_collision_geoms(body, [0.5, 0, 0, 1])
->>> ET.tostring(body[0], encoding="unicode")
-'<geom name="c" rgba="0.5 0 0 1" />'
+``CustomMaterial`` is robosuite's mutable record, not the library's frozen
+:class:`mjcf_model.CustomMaterial` (whose text differs).
 """
 
 from __future__ import annotations
@@ -75,12 +66,8 @@ def _png(width: int, height: int, pixel: bytes) -> bytes:
 def _pixel(channels: tuple[Any, ...]) -> bytes:
     """The RGBA bytes Pillow's ``Image.new("RGBA", size, channels)`` fills an image with.
 
-    Each channel is clipped to 0..255; like Pillow, the green, blue and alpha
-    values must fit a C ``int`` (a NaN colour becomes the smallest int64).
-
-    Raises:
-        OverflowError: A green, blue or alpha value outside the C ``int`` range.
-
+    Channels are clipped to 0..255; as in Pillow, green, blue and alpha must fit a C
+    ``int`` (else ``OverflowError``; a NaN colour becomes the smallest int64).
     """
     for value in channels[1:]:
         if not -(2**31) <= value < 2**31:
@@ -91,32 +78,19 @@ def _pixel(channels: tuple[Any, ...]) -> bytes:
 class CustomMaterial:
     """A texture and a material: robosuite's ``CustomMaterial``, with the same attributes and text.
 
-    ``texture`` is a name from ``ALL_TEXTURES`` (robosuite's image file), a path
-    containing ``"/"`` (relative paths are joined to robosuite's assets
-    directory), an RGBA (a 100 x 100 PNG of that colour is written to
-    ``/tmp/robosuite_temp_tex/<tex_name>.png`` now, as robosuite does), or
-    ``None`` (no file). ``tex_attrib`` and ``mat_attrib`` are copied, get
-    ``name`` (and ``texture``), and their values become text: iterables with
-    ``array_to_string``, the rest with ``str`` (so ``True`` is ``"True"``).
-
-    Attributes:
-        name: The material name (``add_material`` prefixes it in place).
-        shared: Whether the names never get a prefix.
-        tex_attrib: The ``<texture>`` attributes (text).
-        mat_attrib: The ``<material>`` attributes (text).
+    ``texture`` is a name from ``ALL_TEXTURES``, a path containing ``"/"`` (a relative
+    one is joined to robosuite's assets), an RGBA (its 100 x 100 PNG is written to
+    ``/tmp/robosuite_temp_tex/<tex_name>.png``, as robosuite does) or ``None``.
+    Attribute values become text: iterables with ``array_to_string``, the rest with
+    ``str`` (so ``True`` is ``"True"``).
 
     Raises:
         AssertionError: An unknown texture name, or an RGBA that is not four values.
 
     Example:
-        >>> wood = CustomMaterial("WoodDark", "dark_wood", "dark_wood_mat",
-        ...                       tex_attrib={"type": "cube"}, mat_attrib={"specular": 0.4})
+        >>> wood = CustomMaterial("WoodDark", "wood", "wood_mat", mat_attrib={"specular": 0.4})
         >>> wood.mat_attrib
-        {'specular': '0.4', 'name': 'dark_wood_mat', 'texture': 'dark_wood'}
-        >>> wood.tex_attrib["file"].endswith("textures/dark-wood.png")
-        True
-        >>> CustomMaterial([0.2, 0.4, 0.6, 1.0], "tex", "mat").tex_attrib["file"]
-        '/tmp/robosuite_temp_tex/tex.png'
+        {'specular': '0.4', 'name': 'wood_mat', 'texture': 'wood'}
 
     """
 
@@ -166,11 +140,7 @@ class CustomMaterial:
 
 
 def _default_material() -> CustomMaterial:
-    """The material ``add_material`` uses when given none: a white flat cube texture.
-
-    It is the library's :data:`~mjcf_model.transforms.materials.DEFAULT_MATERIAL`, with the
-    colours as the numpy arrays robosuite passes (so they read ``"1.0 1.0 1.0"``).
-    """
+    """``add_material``'s default: the library's ``DEFAULT_MATERIAL``, colours as numpy arrays."""
     tex_attrib: dict[str, Any] = dict(DEFAULT_MATERIAL.tex_attrib)
     tex_attrib["rgb1"] = tex_attrib["rgb2"] = np.ones(3)
     return CustomMaterial(
@@ -186,22 +156,13 @@ def add_material(
 ) -> tuple[ET.Element, ET.Element, CustomMaterial, bool]:
     """Give each visual geom (group ``"1"``) without a material the material, in place.
 
-    robosuite's rules, kept: ``root`` itself counts; a geom without ``group``
-    is not visual; unless the material is ``shared`` or its name already
-    starts with ``naming_prefix``, the material object itself is changed:
-    ``naming_prefix`` is put before its name, texture name and the material's
-    texture reference (only the material name is checked: a material named
-    ``p_m`` with texture ``t`` keeps ``t``). The geoms are found by the
-    library's :func:`mjcf_model.with_material`.
-
-    Args:
-        root: The element to start from.
-        naming_prefix: The prefix of the material and texture names.
-        custom_material: The material; by default robosuite's white ``default_mat``.
+    robosuite's rules, kept: ``root`` itself counts; unless the material is
+    ``shared`` or its name already starts with ``naming_prefix``, the material
+    object itself gets the prefix (name, texture name, texture reference).
+    ``custom_material`` defaults to robosuite's white ``default_mat``.
 
     Returns:
-        ``(texture element, material element, the material, whether a geom took it)``;
-        the elements list ``name`` last, as robosuite's ``new_element`` does.
+        ``(texture element, material element, the material, whether a geom took it)``.
 
     Example:
         >>> body = ET.fromstring('<body><geom group="1"/><geom group="0"/></body>')
@@ -233,19 +194,9 @@ def add_material(
 
 
 def recolored(node: Node, rgba: Any, exclude: Callable[[AnyElement], Any] | None = None) -> Node:
-    """``node`` with each collision geom painted ``rgba`` and stripped of its material.
+    """``node`` with each collision geom (group ``"0"`` or none, not excluded) painted ``rgba``.
 
-    A collision geom is a ``geom`` (``node`` included) whose group is absent or
-    ``"0"`` and for which ``exclude(geom)`` is not true. ``rgba`` is written
-    with ``array_to_string`` (so a numpy colour gives ``"0.5 0.0 0.0 1.0"``).
-    The library's :func:`mjcf_model.recolored_collision_geoms` picks the same
-    geoms but writes numbers in their shortest form, so it is not used here.
-
-    Example:
-        >>> geom = GenericElement(tag="geom", attributes={"material": "m"})
-        >>> recolored(geom, (1, 0, 0, 1)).attributes
-        AttributeMap({'rgba': '1 0 0 1'})
-
+    The colour is ``array_to_string(rgba)``, and the geom's material is removed.
     """
     text: str | None = None
     edits: dict[tuple[int, ...], dict[str, str | None]] = {}
@@ -264,10 +215,9 @@ def recolor_collision_geoms(
 ) -> None:
     """Paint every collision geom of ``root`` (itself included) ``rgba`` and drop its material.
 
-    See :func:`recolored`; ``exclude`` receives the live elements.
+    Unlike robosuite, ``exclude`` sees the geoms as they were before the call.
 
     Example:
-        >>> import numpy as np
         >>> tree = ET.fromstring('<body><geom name="floor"/><geom name="g" group="0"/></body>')
         >>> floor = lambda geom: geom.get("name") == "floor"
         >>> recolor_collision_geoms(tree, np.array([0.5, 0, 0, 1]), floor)
@@ -288,20 +238,7 @@ def recolor_collision_geoms(
 
 
 def with_alpha(node: Node, alpha: Any) -> Node:
-    """``node`` with the alpha of every descendant's ``rgba`` set to ``alpha`` (not ``node``'s own).
-
-    The colour is rewritten with numpy floats, as robosuite does: ``"1 0 0 1"``
-    becomes ``"1.0 0.0 0.0 0.3"``. Numbers separated by any white space are
-    read (robosuite raises ``ValueError`` on valid ``rgba="1  0 0 1"``).
-
-    Example:
-        >>> tree = GenericElement(tag="body", attributes={"rgba": "1 1 1 1"},
-        ...     children=[GenericElement(tag="geom", attributes={"rgba": "1 0 0 1"})])
-        >>> new = with_alpha(tree, 0.3)
-        >>> new.attributes["rgba"], new.children[0].attributes["rgba"]
-        ('1 1 1 1', '1.0 0.0 0.0 0.3')
-
-    """
+    """``node`` with the alpha of every descendant's ``rgba`` (not ``node``'s) set to ``alpha``."""
     edits: dict[tuple[int, ...], dict[str, str | None]] = {}
     for parent, current, path in preorder(node):
         rgba = attribute(current, "rgba")
@@ -313,8 +250,8 @@ def with_alpha(node: Node, alpha: Any) -> Node:
 def set_alpha(node: ET.Element, alpha: Any = 0.1) -> None:
     """Set the alpha of every ``rgba`` below ``node`` (not its own) to ``alpha``, in place.
 
-    See :func:`with_alpha`. If a colour cannot be read, nothing is changed
-    (robosuite has already changed the colours before it).
+    Colours are rewritten as numpy floats, as robosuite does. Unlike robosuite, any
+    white space separates numbers, and an unreadable colour leaves the tree unchanged.
 
     Example:
         >>> tree = ET.fromstring('<body><geom rgba="1 0 0 1"/></body>')

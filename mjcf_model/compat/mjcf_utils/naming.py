@@ -1,24 +1,4 @@
-"""robosuite's ``add_prefix``: prefixing by attribute name, with its quirks.
-
-robosuite does not know namespaces: it prefixes every attribute whose *name* is
-in :data:`MUJOCO_NAMED_ATTRIBUTES` (or the ``attribs`` given), on every element,
-unless the value already starts with the prefix. The library's
-:func:`mjcf_model.prefixed` follows the namespace table instead (``refname``,
-``site1``, ``objname`` by ``objtype``...) and prefixes every name exactly once,
-so it gives different text; these quirks live here only, in
-:func:`prefixed_attributes`, a pure function on nodes. The rule both share
-with robosuite, that a value already starting with the prefix is left alone,
-is :func:`already_prefixed`; the object classes use it with the namespace
-table instead of the attribute list
-(:func:`~mjcf_model.compat.objects.habits.robosuite_prefixed`), on purpose: there,
-references robosuite's list misses are prefixed too, so MuJoCo finds them.
-
->>> import xml.etree.ElementTree as ET
->>> body = ET.fromstring('<body name="b"><geom name="g" mesh="p_mesh"/></body>')
->>> add_prefix(body, "p_")
->>> ET.tostring(body, encoding="unicode")
-'<body name="p_b"><geom name="p_g" mesh="p_mesh" /></body>'
-"""
+"""robosuite's ``add_prefix``: prefixing by attribute name, with its quirks, over nodes."""
 
 from __future__ import annotations
 
@@ -43,16 +23,7 @@ NodeExclude = Callable[[Node | str], bool]
 
 
 def already_prefixed(value: str, prefix: str) -> bool:
-    """Whether robosuite leaves ``value`` alone when prefixing: it already starts with ``prefix``.
-
-    ``add_prefix``, ``add_material`` and the object classes all skip such names,
-    so a mesh ``can_mesh`` of object ``can`` stays ``can_mesh``.
-
-    Example:
-        >>> already_prefixed("can_mesh", "can_"), already_prefixed("mesh", "can_")
-        (True, False)
-
-    """
+    """Whether robosuite leaves ``value`` alone when prefixing: it starts with ``prefix``."""
     return value.startswith(prefix)
 
 
@@ -72,31 +43,10 @@ def prefixed_attributes(
     attribs: Iterable[str],
     exclude: NodeExclude | None = None,
 ) -> Node:
-    """``node`` with ``prefix`` put before the values of ``attribs``, robosuite's way.
+    """``node`` with ``prefix`` put before the values of ``attribs``, as ``add_prefix`` does.
 
-    Elements are visited in document order (``node`` first; comments too, as
-    robosuite's loop visits them). An element is considered when ``tags`` is
-    ``None`` or holds its tag, and ``exclude(element)`` is not true; then each
-    attribute of ``attribs`` it has gets the prefix unless the value already
-    starts with ``prefix`` or ``exclude(value)`` is true. Excluding an element
-    does not exclude its children. ``exclude`` is called as robosuite calls
-    it: with the element, then with each value it would prefix (in the
-    iteration order of ``attribs``).
-
-    Args:
-        node: The tree, as generic nodes
-            (see :func:`~mjcf_model.compat.mjcf_utils.etree_sync.node_of`).
-        prefix: The prefix.
-        tags: The tags to prefix, or ``None`` for every element.
-        attribs: The attribute names whose values get the prefix.
-        exclude: Called with elements (nodes) and attribute values (strings).
-
-    Example:
-        >>> from mjcf_model import GenericElement
-        >>> geom = GenericElement(tag="geom", attributes={"name": "pp", "material": "m"})
-        >>> prefixed_attributes(geom, "p", None, ["name", "material"]).attributes
-        AttributeMap({'name': 'pp', 'material': 'pm'})
-
+    ``tags`` ``None`` means every element; ``exclude`` is called with nodes and values
+    in robosuite's order.
     """
     edits: dict[tuple[int, ...], dict[str, str | None]] = {}
     for _parent, current, path in preorder(node):
@@ -131,26 +81,11 @@ def add_prefix(
     """Prefix the name attributes of ``root`` and everything below it, in place.
 
     robosuite's rules, kept: an attribute is prefixed when its *name* is in
-    ``attribs`` (by default :data:`MUJOCO_NAMED_ATTRIBUTES`, which prefixes
-    ``class``/``childclass`` references but not ``refname``, ``refsite``,
-    ``site1``...), on any element, unless its value already starts with
-    ``prefix`` (so a mesh ``can_mesh`` in object ``can`` stays ``can_mesh``).
-    Applying it twice changes nothing more. ``exclude`` is called with
-    ElementTree elements (the live ones, comments included) and with attribute
-    values; excluding an element leaves its own attributes alone, not its
-    children's. Attributes change in place (``set`` keeps their position).
-
-    Unlike robosuite, an exception from ``exclude`` leaves the tree unchanged,
-    and ``exclude`` sees the tree as it was before the call (robosuite has
-    already prefixed the elements before the one it asks about).
-
-    Args:
-        root: The element to start from.
-        prefix: The prefix.
-        tags: ``"default"`` for every element, else a tag or a collection of tags.
-        attribs: ``"default"`` for :data:`MUJOCO_NAMED_ATTRIBUTES`, else an
-            attribute name or a collection of names.
-        exclude: ``None`` or ``exclude(element_or_value) -> bool``.
+    ``attribs`` (default :data:`MUJOCO_NAMED_ATTRIBUTES`), on any element, unless
+    its value already starts with ``prefix``; ``exclude`` gets live elements
+    (comments too) and values, and excluding an element spares only its own
+    attributes. Unlike robosuite, ``exclude`` sees the tree as it was before the
+    call, and an exception from it leaves the tree unchanged.
 
     Example:
         >>> body = ET.fromstring('<body name="b"><geom name="floor"/><geom name="g"/></body>')

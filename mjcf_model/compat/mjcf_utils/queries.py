@@ -1,14 +1,6 @@
-"""robosuite's lookups: sorting elements into categories, finding elements and parents.
+"""robosuite's lookups (sorting into categories, finding elements and parents) over nodes.
 
-Each function converts the tree, runs a pure query on the nodes and returns the
-live ElementTree elements the found nodes stand for (robosuite code edits them).
-
->>> import xml.etree.ElementTree as ET
->>> body = ET.fromstring('<body name="a"><geom name="g" group="1"/><joint name="j"/></body>')
->>> {key: [e.get("name") for e in found] for key, found in sort_elements(body).items()}
-{'root_body': ['a'], 'visual_geoms': ['g'], 'joints': ['j']}
->>> find_elements(body, "geom") is body[0]
-True
+Each converts the tree, queries the nodes, and returns the live elements found.
 """
 
 from __future__ import annotations
@@ -31,7 +23,6 @@ from mjcf_model.tree.queries import find_all, parent_of
 from mjcf_model.tree.traversal import walk
 
 __all__ = [
-    "_element_filter",
     "filter_key",
     "find_elements",
     "find_elements_by_substring",
@@ -45,24 +36,15 @@ __all__ = [
 
 
 def _tag(node: Node | None) -> str | None:
+    """The tag of an element node, else ``None``."""
     return node.tag if isinstance(node, (TypedElement, GenericElement)) else None
 
 
 def filter_key(node: Node, parent: Node | None) -> str | None:
-    """The category robosuite gives ``node`` (a generic node) under ``parent``, or ``None``.
+    """The category robosuite gives ``node`` under ``parent`` (``"joints"``...), or ``None``.
 
-    In this order: any child of ``<actuator>`` (comments too, as in robosuite)
-    is ``"actuators"``; a ``joint`` without ``joint``/``joint1`` attributes
-    ``"joints"``; a ``body`` whose parent is not a ``body`` ``"root_body"``, else
-    ``"bodies"``; ``site`` ``"sites"``; a tag of :data:`SENSOR_TYPES`
-    ``"sensors"``; a ``geom`` of group ``0``/none ``"contact_geoms"``, of group
-    ``1`` ``"visual_geoms"`` (other groups, even ``"1.0"``: ``None``).
-
-    Example:
-        >>> geom = GenericElement(tag="geom", attributes={"group": "1"})
-        >>> filter_key(geom, None), filter_key(geom, GenericElement(tag="actuator"))
-        ('visual_geoms', 'actuators')
-
+    Any child of ``<actuator>`` (comments too) is ``"actuators"``; a geom is contact
+    (group ``"0"`` or none) or visual (``"1"``), other groups (even ``"1.0"``) have none.
     """
     if parent is not None and _tag(parent) == "actuator":
         return "actuators"
@@ -84,27 +66,12 @@ def filter_key(node: Node, parent: Node | None) -> str | None:
 
 
 def _element_filter(element: ET.Element, parent: ET.Element | None) -> str | None:
-    """The default filter of ``sort_elements``: robosuite's category of a live element.
-
-    See :func:`filter_key` for the rules.
-
-    Example:
-        >>> _element_filter(ET.fromstring("<body/>"), ET.fromstring("<worldbody/>"))
-        'root_body'
-
-    """
+    """The default filter of ``sort_elements``: :func:`filter_key` of a live element."""
     return filter_key(shallow_node(element), None if parent is None else shallow_node(parent))
 
 
 def sorted_nodes(node: Node, parent: Node | None = None) -> dict[str, list[Node]]:
-    """The nodes of ``node`` (itself included) by :func:`filter_key`, keys in first-seen order.
-
-    Example:
-        >>> tree = GenericElement(tag="body", children=[GenericElement(tag="site")])
-        >>> {k: [n.tag for n in v] for k, v in sorted_nodes(tree).items()}
-        {'root_body': ['body'], 'sites': ['site']}
-
-    """
+    """The nodes of ``node`` (itself included) by :func:`filter_key`, keys in first-seen order."""
     found: dict[str, list[Node]] = {}
     for above, current, _path in preorder(node):
         key = filter_key(current, parent if above is None else above)
@@ -121,17 +88,10 @@ def sort_elements(
 ) -> dict[Any, list[Any]]:
     """The live elements of ``root`` (itself included), in lists by filter key.
 
-    ``element_filter(element, parent)`` (default :func:`_element_filter`) is
-    called on every element in document order (comments too, as robosuite does)
-    with the live elements, so a filter may edit them (robosuite's robot models
-    name unnamed geoms this way). Keys come in first-seen order; ``None`` keys
-    are dropped; there are no empty lists.
-
-    Args:
-        root: The element to start from.
-        parent: The parent of ``root``, for the filter (default ``None``).
-        element_filter: ``filter(element, parent) -> key or None``.
-        _elements_dict: A dict to add to (changed and returned), as robosuite's recursion.
+    ``element_filter(element, parent)`` (default ``_element_filter``) sees every
+    live element, comments too, in document order, so it may edit them. Keys
+    come in first-seen order; ``None`` keys are dropped. ``_elements_dict`` is
+    robosuite's recursion argument: a dict to add to and return.
 
     Example:
         >>> tree = ET.fromstring('<body><geom name="c"/><body name="in"/></body>')
@@ -159,9 +119,6 @@ def sort_elements(
 def find_parent(element: ET.Element, target: Any) -> ET.Element | None:
     """The element below ``element`` whose child is ``target`` itself, or ``None``.
 
-    ``find_parent(root, root)`` is ``None``. (robosuite defines this function
-    twice; the second definition, with these parameter names, is the one in use.)
-
     Example:
         >>> tree = ET.fromstring("<a><b><c/></b></a>")
         >>> find_parent(tree, tree[0][0]) is tree[0], find_parent(tree, tree)
@@ -179,15 +136,7 @@ def find_parent(element: ET.Element, target: Any) -> ET.Element | None:
 def iter_matching(node: Node, tags: Any, attribs: dict[Any, Any] | None) -> Iterator[AnyElement]:
     """The elements of ``node`` (itself included) with a tag ``in tags`` and ``attribs``.
 
-    In document order. Attributes are compared as robosuite does, text with
-    ``!=``: ``None`` means "absent", and a number never matches.
-
-    Example:
-        >>> tree = GenericElement(tag="body", children=[
-        ...     GenericElement(tag="geom", attributes={"group": "1"}), GenericElement(tag="geom")])
-        >>> [g.attributes.get("group") for g in iter_matching(tree, ["geom"], {"group": None})]
-        [None]
-
+    Attributes are compared as text with ``!=``, as robosuite does (``None``: absent).
     """
     if isinstance(tags, str):  # a str subclass: robosuite's `in` is then a substring test
         tags = {e.tag for _, e in walk(node) if e.tag in tags}
@@ -207,11 +156,7 @@ def find_elements(
 ) -> Any:
     """The first live element (or all of them) with a tag in ``tags`` and these attributes.
 
-    Args:
-        root: The element to start from; it is a candidate itself.
-        tags: A tag, or a collection of tags.
-        attribs: Attribute text the element must have (``None``: absent).
-        return_first: Return the first match instead of a list.
+    ``root`` is a candidate itself; ``attribs`` values are text (``None``: absent).
 
     Returns:
         The element, or the list of them in document order; ``None`` (not an
@@ -219,8 +164,6 @@ def find_elements(
 
     Example:
         >>> tree = ET.fromstring('<body><geom name="a" group="1"/><geom name="b"/></body>')
-        >>> [g.get("name") for g in find_elements(tree, "geom", return_first=False)]
-        ['a', 'b']
         >>> find_elements(tree, "geom", {"group": None}).get("name"), find_elements(tree, "site")
         ('b', None)
 
@@ -245,23 +188,16 @@ def find_elements_by_substring(
     attribs: dict[Any, Any] | None = None,
     return_first: bool = False,
 ) -> Any:
-    """The live elements found as :func:`find_elements` does whose name contains a substring.
+    """The elements :func:`find_elements` finds whose name contains one of ``substrings``.
 
-    Unlike robosuite, which crashes on these: an element without a ``name``
-    does not match (robosuite raises ``TypeError``), and with ``return_first``
-    the first element that matches is returned (robosuite searches the
-    children of the first element with the tag instead).
-
-    Returns:
-        A list in document order, or with ``return_first`` one element;
-        ``None`` when nothing matches.
+    Unlike robosuite, an unnamed element does not match (robosuite raises
+    ``TypeError``), and ``return_first`` returns the first match (robosuite
+    searches the first element's children instead). ``None`` when nothing matches.
 
     Example:
         >>> tree = ET.fromstring('<body><geom/><geom name="left_pad"/><geom name="right"/></body>')
         >>> [g.get("name") for g in find_elements_by_substring(tree, "geom", ["pad", "ri"])]
         ['left_pad', 'right']
-        >>> find_elements_by_substring(tree, "geom", "right", return_first=True).get("name")
-        'right'
 
     """
     substrings = [substrings] if type(substrings) is str else substrings
@@ -290,12 +226,6 @@ def typed_pairs(
     """``(parent, element)`` for each descendant with tag ``element_type``, in document order.
 
     ``node`` itself counts only with ``include_root`` (its parent is then ``None``).
-
-    Example:
-        >>> tree = GenericElement(tag="geom", children=[GenericElement(tag="geom")])
-        >>> [(p.tag, c.tag) for p, c in typed_pairs(tree, "geom")]
-        [('geom', 'geom')]
-
     """
     return [
         (parent, current)
@@ -311,8 +241,7 @@ def get_elements(
 ) -> list[tuple[ET.Element, ET.Element]]:
     """``(parent, element)`` of the live descendants with tag ``element_type``, in document order.
 
-    ``root`` itself is never included (unless ``_parent``, robosuite's recursion
-    argument, is given).
+    ``root`` itself is included only when ``_parent`` (robosuite's recursion argument) is given.
 
     Example:
         >>> tree = ET.fromstring('<body name="a"><geom/><body name="b"><geom/></body></body>')

@@ -1,41 +1,9 @@
-"""robosuite's scaling: one element at a time, sizes by their count, numpy number text.
+"""robosuite's scaling: pure functions on one node each, and the in-place ``scale_*`` wrappers.
 
-robosuite scales only ``pos`` and ``size`` of geoms and sites (a size of three
-values per axis, of two by the mean of x and y then z, of one by the mean of
-all three, whatever the geom type), body and joint ``pos``, slide-joint
-ranges, and mesh ``scale``; every rewritten number comes out as numpy prints
-it (``"0 0 0"`` becomes ``"0.0 0.0 0.0"``). The library's
-:func:`mjcf_model.scaled` scales every length MuJoCo has, by geom type, and
-writes numbers in their shortest form, so robosuite's rules live here as pure
-functions on one node each (``scaled_geom``...), and the ``scale_*_element``
-wrappers write the result back onto the element. The object classes scale
-their models with the same functions
-(:func:`~mjcf_model.compat.objects.habits.robosuite_scaled`), as robosuite's
-objects call ``scale_mjcf_model``.
-
-Numbers separated by any white space are read (robosuite's ``string_to_array``
-raises ``ValueError`` on valid MJCF such as ``pos="0  0 1"``). When a value
-cannot be read, the element is left unchanged (robosuite may already have
-written its ``pos`` when its ``size`` fails).
-
->>> import xml.etree.ElementTree as ET
->>> geom = ET.fromstring('<geom pos="0 0 1" size="0.1 0.2"/>')
->>> scale_geom_element(geom, normalize_scale_array(2))
->>> ET.tostring(geom, encoding="unicode")
-'<geom pos="0.0 0.0 2.0" size="0.2 0.4" />'
->>> ball = ET.fromstring('<geom size="0.1"/>')
->>> scale_geom_element(ball, np.array([1, 2, 3]))
->>> ball.get("size")
-'0.2'
->>> site = ET.fromstring('<site pos="1 0 0" size="0.01 0.02 0.03"/>')
->>> scale_site_element(site, np.array([2, 2, 2]))
->>> site.get("pos"), site.get("size")
-('2.0 0.0 0.0', '0.02 0.04 0.06')
->>> mesh, body = ET.fromstring('<mesh scale="2 2 2"/>'), ET.fromstring('<body pos="0 0 1"/>')
->>> scale_mesh_element(mesh, np.array([2, 2, 2]))
->>> scale_body_element(body, np.array([2, 2, 2]))
->>> mesh.get("scale"), body.get("pos")
-('4.0 4.0 4.0', '0.0 0.0 2.0')
+>>> geom = ET.fromstring('<geom pos="0 0 1" size="0.1"/>')
+>>> scale_geom_element(geom, np.array([1, 2, 3]))
+>>> geom.get("pos"), geom.get("size")
+('0.0 0.0 3.0', '0.2')
 """
 
 from __future__ import annotations
@@ -52,7 +20,6 @@ from mjcf_model.compat.mjcf_utils.text import array_to_string, normalize_scale_a
 from mjcf_model.nodes.base import GenericElement, Node, TypedElement, with_attributes
 
 __all__ = [
-    "normalize_scale_array",
     "scale_body_element",
     "scale_geom_element",
     "scale_joint_element",
@@ -68,18 +35,21 @@ __all__ = [
 
 
 def _changed(node: Node, changes: dict[str, str]) -> Node:
+    """``node`` with ``changes`` (if any) applied."""
     if not changes or not isinstance(node, (TypedElement, GenericElement)):
         return node
     return with_attributes(node, changes)
 
 
 def _scaled_pos(node: Node, scale_array: Any, changes: dict[str, str]) -> None:
+    """Put the scaled ``pos`` (if any) in ``changes``."""
     pos = attribute(node, "pos")
     if pos is not None:
         changes["pos"] = array_to_string(parse_numbers(pos) * scale_array)
 
 
 def _scaled_size(node: Node, scale_array: Any, what: str, changes: dict[str, str]) -> None:
+    """Put the scaled ``size`` in ``changes``: by axis, by the x-y mean and z, or by the mean."""
     size = attribute(node, "size")
     if size is None:
         return
@@ -97,6 +67,7 @@ def _scaled_size(node: Node, scale_array: Any, what: str, changes: dict[str, str
 
 
 def _scaled_pos_size(node: Node, scale_array: Any, what: str) -> Node:
+    """``node`` with ``pos`` and ``size`` scaled."""
     changes: dict[str, str] = {}
     _scaled_pos(node, scale_array, changes)
     _scaled_size(node, scale_array, what, changes)
@@ -104,43 +75,17 @@ def _scaled_pos_size(node: Node, scale_array: Any, what: str) -> Node:
 
 
 def scaled_geom(node: Node, scale_array: Any) -> Node:
-    """A geom node with ``pos`` and ``size`` scaled robosuite's way (size by count, not type).
-
-    Raises:
-        ValueError: A size of more than three values, or text that is not numbers.
-
-    Example:
-        >>> from mjcf_model import GenericElement
-        >>> geom = GenericElement(tag="geom", attributes={"size": "0.1 0.2 0.3"})
-        >>> scaled_geom(geom, np.array([1, 2, 3])).attributes["size"]
-        '0.1 0.4 0.8999999999999999'
-
-    """
+    """A geom node with ``pos`` and ``size`` scaled robosuite's way (size by count, not type)."""
     return _scaled_pos_size(node, scale_array, "geom")
 
 
 def scaled_site(node: Node, scale_array: Any) -> Node:
-    """A site node with ``pos`` and ``size`` scaled like a geom's.
-
-    Example:
-        >>> from mjcf_model import GenericElement
-        >>> site = GenericElement(tag="site", attributes={"size": "0.01 0.02"})
-        >>> scaled_site(site, np.array([1.0, 2.0, 3.0])).attributes["size"]
-        '0.015 0.06'
-
-    """
+    """A site node with ``pos`` and ``size`` scaled like a geom's."""
     return _scaled_pos_size(node, scale_array, "site")
 
 
 def scaled_mesh(node: Node, scale_array: Any) -> Node:
-    """A mesh node whose ``scale`` (``1 1 1`` when absent, then written last) is multiplied.
-
-    Example:
-        >>> from mjcf_model import GenericElement
-        >>> scaled_mesh(GenericElement(tag="mesh"), np.array([2, 2, 2])).attributes
-        AttributeMap({'scale': '2.0 2.0 2.0'})
-
-    """
+    """A mesh node whose ``scale`` (``1 1 1`` when absent, then written last) is multiplied."""
     scale = attribute(node, "scale")
     values = parse_numbers(scale) if scale is not None else np.ones(3)
     values *= scale_array
@@ -148,21 +93,14 @@ def scaled_mesh(node: Node, scale_array: Any) -> Node:
 
 
 def scaled_body(node: Node, scale_array: Any) -> Node:
-    """A body node with ``pos`` scaled.
-
-    Example:
-        >>> from mjcf_model import GenericElement
-        >>> body = GenericElement(tag="body", attributes={"pos": "1 1 1"})
-        >>> scaled_body(body, [1, 2, 3]).attributes
-        AttributeMap({'pos': '1.0 2.0 3.0'})
-
-    """
+    """A body node with ``pos`` scaled."""
     changes: dict[str, str] = {}
     _scaled_pos(node, scale_array, changes)
     return _changed(node, changes)
 
 
 def _axis_factor(axis_text: str, scale_array: Any) -> Any:
+    """The length of the scaled unit axis (x for a zero axis)."""
     axis = parse_numbers(axis_text)
     norm = np.linalg.norm(axis)
     unit = axis / norm if norm > 0 else np.array([1.0, 0.0, 0.0])
@@ -170,15 +108,7 @@ def _axis_factor(axis_text: str, scale_array: Any) -> Any:
 
 
 def scaled_joint(node: Node, scale_array: Any, scale_slide_joints: bool = True) -> Node:
-    """A joint node with ``pos`` scaled, and a slide joint's ``range`` by the scaled axis length.
-
-    Example:
-        >>> from mjcf_model import GenericElement
-        >>> joint = GenericElement(tag="joint", attributes={"type": "slide", "range": "0 1"})
-        >>> scaled_joint(joint, np.array([2, 1, 1])).attributes["range"]
-        '0.0 2.0'
-
-    """
+    """A joint node with ``pos`` scaled, and a slide joint's ``range`` by the scaled axis length."""
     changes: dict[str, str] = {}
     _scaled_pos(node, scale_array, changes)
     if scale_slide_joints:
@@ -212,7 +142,7 @@ scale_site_element = _in_place(scaled_site, "a site's ``pos`` and ``size``")
 def scale_joint_element(
     element: ET.Element, scale_array: Any, scale_slide_joints: bool = True
 ) -> None:
-    """Scale a joint's ``pos`` (and a slide joint's ``range``) in place (see :func:`scaled_joint`).
+    """Scale a joint's ``pos`` (and a slide joint's ``range``) in place.
 
     Example:
         >>> joint = ET.fromstring('<joint type="slide" axis="0 0 1" range="-1 1"/>')
@@ -234,19 +164,10 @@ def scale_mjcf_model(
 ) -> npt.NDArray[Any]:
     """Scale an object in place, robosuite's way; returns the three factors used.
 
-    In robosuite's order: the geoms ``get_elements_func(obj, "geom")`` returns,
-    every ``mesh`` directly under ``asset_root`` (used or not), the bodies and
-    joints below ``obj``, and the sites below ``worldbody`` when it is given.
-    With robosuite's ``get_elements`` the root itself is never scaled (its
-    ``pos`` stays). Applying it twice compounds.
-
-    Args:
-        obj: The object's root element.
-        asset_root: The element holding the meshes.
-        scale: One factor or three.
-        get_elements_func: ``f(root, tag) -> [(parent, element), ...]``, e.g. ``get_elements``.
-        worldbody: Where to find the sites; ``None`` scales no site.
-        scale_slide_joints: Also scale slide joints' ranges.
+    In robosuite's order: the geoms ``get_elements_func(obj, "geom")`` returns, every
+    ``mesh`` directly under ``asset_root``, the bodies and joints of ``obj``, and the
+    sites of ``worldbody`` if given. Unlike robosuite, any white space separates
+    numbers, and a ``ValueError`` leaves the element it came from unchanged.
 
     Example:
         >>> from mjcf_model.compat.mjcf_utils.queries import get_elements

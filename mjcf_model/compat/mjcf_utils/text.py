@@ -1,15 +1,4 @@
-"""robosuite's value helpers: numbers to text and back, paths, sizes, dicts, ids.
-
-These are not tree transforms, so they are reimplemented as robosuite wrote
-them, with its exact number formatting (``"{}".format(x)`` for every item:
-numpy floats print as ``0.0``, Python ints as ``0``).
-
->>> import numpy as np
->>> array_to_string([0.5, 0, 1]), array_to_string(np.array([0.5, 0, 1]))
-('0.5 0 1', '0.5 0.0 1.0')
->>> string_to_array(" 0 1 2 ")
-array([0., 1., 2.])
-"""
+"""robosuite's value helpers (number text, paths, sizes, dicts, ids), as robosuite wrote them."""
 
 from __future__ import annotations
 
@@ -44,19 +33,9 @@ _ID_TYPES = ["geom", "body", "joint", "site", "actuator", "sensor", "tendon", "c
 
 
 def assets_root(missing: str | None = None) -> str:
-    """The ``models/assets`` directory of robosuite, found without importing robosuite.
+    """The ``models/assets`` directory of robosuite, found without importing it.
 
-    Args:
-        missing: The message of the error when robosuite is not installed
-            (by default: which of robosuite's files are needed, and what to do).
-
-    Raises:
-        MjcfLookupError: robosuite is not installed.
-
-    Example:
-        >>> assets_root().endswith(os.path.join("robosuite", "models", "assets"))
-        True
-
+    Raises ``MjcfLookupError`` (with message ``missing``, if given) when robosuite is absent.
     """
     spec = importlib.util.find_spec("robosuite")
     if spec is None or not spec.submodule_search_locations:
@@ -69,14 +48,10 @@ def assets_root(missing: str | None = None) -> str:
 
 
 def xml_path_completion(xml_path: str, root: str | None = None) -> str:
-    """An absolute path stays; a relative one is joined to ``root`` (robosuite's assets).
+    """An absolute path (leading ``"/"``) stays; a relative one is joined to ``root``.
 
-    Args:
-        xml_path: The path. Only a leading ``"/"`` makes it absolute (as in robosuite).
-        root: The folder of relative paths; by default robosuite's ``models/assets``.
-
-    Returns:
-        The full path, not normalised.
+    ``root`` defaults to robosuite's ``models/assets``, found without importing
+    robosuite.
 
     Raises:
         MjcfLookupError: ``root`` is not given and robosuite is not installed.
@@ -97,9 +72,8 @@ def array_to_string(array: Iterable[Any]) -> str:
     """Each item formatted with ``"{}".format``, joined by single spaces.
 
     Example:
-        >>> import numpy as np
-        >>> array_to_string(np.float32([0.1])), array_to_string([1e-8, True, None])
-        ('0.10000000149011612', '1e-08 True None')
+        >>> array_to_string([0.5, 0, True]), array_to_string(np.array([0.5, 0]))
+        ('0.5 0 True', '0.5 0.0')
 
     """
     return " ".join([f"{x}" for x in array])
@@ -114,30 +88,13 @@ def string_to_array(string: str) -> npt.NDArray[Any]:
     Example:
         >>> string_to_array("1 None 2")
         array([1.0, None, 2.0], dtype=object)
-        >>> string_to_array("0  1")
-        Traceback (most recent call last):
-        ...
-        ValueError: could not convert string to float: ''
 
     """
     return np.array([float(x) if x != "None" else None for x in string.strip().split(" ")])
 
 
 def parse_numbers(string: str) -> npt.NDArray[Any]:
-    r"""Like :func:`string_to_array`, but any white space separates numbers, as in MJCF.
-
-    robosuite's own tree functions crash on valid MJCF such as ``pos="0  0 1"``;
-    the compatible functions read such text with this instead (same result for
-    text robosuite reads).
-
-    Raises:
-        ValueError: A token is not a number, or there is none.
-
-    Example:
-        >>> parse_numbers(" 0\t1\n 2 ")
-        array([0., 1., 2.])
-
-    """
+    """:func:`string_to_array` with any white space between numbers, as the tree functions read."""
     tokens = string.split()
     if not tokens:
         raise ValueError("could not convert string to float: ''")
@@ -145,20 +102,10 @@ def parse_numbers(string: str) -> npt.NDArray[Any]:
 
 
 def text_of(value: Any, *, exact: bool) -> str | None:
-    """The text of robosuite's ``convert_to_string`` rule, or ``None`` where it has none.
+    """The text of ``convert_to_string``'s rule, or ``None`` where it has none.
 
-    Text is kept; lists, tuples and arrays go through :func:`array_to_string`;
-    ints, floats and booleans are ``str(x).lower()``. With ``exact``, the
-    types are checked exactly, as robosuite checks them (numpy scalars and
-    subclasses have no rule): this is :func:`convert_to_string`. Without, as
-    the object classes want it (:func:`~mjcf_model.compat.objects.habits.value_text`),
-    subclasses count and numpy scalars are read as Python's numbers first.
-
-    Example:
-        >>> import numpy as np
-        >>> text_of(np.float32(0.5), exact=True), text_of(np.float32(0.5), exact=False)
-        (None, '0.5')
-
+    ``exact`` checks types exactly, as robosuite does; without it (for the object
+    classes) subclasses count and numpy scalars are read as Python numbers first.
     """
     if type(value) is str:  # the common case, first
         return value
@@ -178,9 +125,9 @@ def text_of(value: Any, *, exact: bool) -> str | None:
 
 
 def convert_to_string(inp: Any) -> str:
-    """Attribute text for a list, tuple, array, int, float, bool or string (see :func:`text_of`).
+    """Attribute text for a list, tuple, array, int, float, bool or string.
 
-    Exact types are checked, as in robosuite: numpy scalars and ``None`` are refused.
+    Types are checked exactly, as in robosuite: numpy scalars and ``None`` are refused.
 
     Raises:
         ValueError: Any other type.
@@ -188,11 +135,6 @@ def convert_to_string(inp: Any) -> str:
     Example:
         >>> convert_to_string(True), convert_to_string([True, 2]), convert_to_string(1e-8)
         ('true', 'True 2', '1e-08')
-        >>> import numpy as np
-        >>> convert_to_string(np.float64(0.5))
-        Traceback (most recent call last):
-        ...
-        ValueError: Unsupported type received: got <class 'numpy.float64'>
 
     """
     text = text_of(inp, exact=True)
@@ -211,16 +153,8 @@ def get_size(
 ) -> npt.NDArray[Any]:
     """``size`` as an array, or one drawn uniformly between the minimum and maximum.
 
-    One ``rng.uniform`` call per value, in order, so a seeded generator draws
-    robosuite's sizes; the primitive object classes draw theirs with it.
-
-    Args:
-        size: The size, or ``None`` to draw one (its length is not checked).
-        size_max: Upper bounds to draw from, ``None`` for ``default_max``.
-        size_min: Lower bounds to draw from, ``None`` for ``default_min``.
-        default_max: Default upper bounds; their length is the drawn size's.
-        default_min: Default lower bounds.
-        rng: Anything with ``uniform(low, high)``; by default ``np.random.default_rng()``.
+    One ``rng.uniform(low, high)`` call per value, in order, as robosuite draws;
+    the bounds default to ``default_max``/``default_min``, whose length is the size's.
 
     Raises:
         ValueError: The defaults differ in length, or ``size`` is given with bounds.
@@ -228,8 +162,6 @@ def get_size(
     Example:
         >>> get_size(None, None, None, [0.07] * 2, [0.03] * 2, np.random.default_rng(0))
         array([0.05547847, 0.04079147])
-        >>> get_size([1, 2], None, None, [0.07], [0.03])
-        array([1, 2])
 
     """
     if len(default_max) != len(default_min):
@@ -261,11 +193,9 @@ def add_to_dict(
 ) -> dict[Any, list[Any]]:
     """Append each keyword's value to the list ``dic[key]``; changes and returns ``dic``.
 
-    With ``fill_in_defaults``, every list not mentioned gets ``default_value``
-    appended, and a new key's list starts with ``n`` items ``default_value``,
-    where ``n`` is, as robosuite computes it, the length of the first existing
-    *key* in set order (not of its list: they agree only by accident, e.g.
-    one-letter keys after one call). Kept for identical results.
+    With ``fill_in_defaults``, unmentioned lists get ``default_value`` appended,
+    and a new key's list is padded with ``n`` of them, ``n`` being (robosuite's
+    quirk, kept) the length of the first existing *key* in set order.
 
     Example:
         >>> d = {}
@@ -290,7 +220,7 @@ def add_to_dict(
 
 
 def save_sim_model(sim: Any, fname: str) -> None:
-    """Write ``sim``'s model as XML with ``sim.save(file=..., format="xml")`` (mujoco-py's API).
+    """Write ``sim``'s model to ``fname`` with ``sim.save(file=f, format="xml")`` (mujoco-py's API).
 
     Example:
         >>> import tempfile, types
@@ -310,14 +240,7 @@ def get_ids(
 ) -> list[Any]:
     """The ids of ``elements`` (names or ids, one or a list) from ``sim.model.<type>_name2id``.
 
-    Args:
-        sim: Anything whose ``model`` has ``<element_type>_name2id`` methods.
-        elements: A name, an id, or a list of them (ints are kept as they are).
-        element_type: geom, body, joint, site, actuator, sensor, tendon, camera or light.
-        inplace: Replace the items of the given list itself.
-
-    Returns:
-        A list, even for a single name.
+    Always a list; ints are kept; ``inplace`` replaces the items of the given list.
 
     Raises:
         AssertionError: An unknown ``element_type``.
@@ -359,13 +282,7 @@ def normalize_scale_array(scale: Any) -> npt.NDArray[Any]:
 
 
 def three_factors(scale: Any) -> npt.NDArray[Any] | None:
-    """The factors of :func:`normalize_scale_array`, or ``None`` where it raises.
-
-    Example:
-        >>> three_factors([2]), three_factors([1, 2])
-        (array([2, 2, 2]), None)
-
-    """
+    """The factors of :func:`normalize_scale_array`, or ``None`` where it raises."""
     scale_array = np.array(scale).flatten()
     if scale_array.size == 1:
         return np.repeat(scale_array, 3)
