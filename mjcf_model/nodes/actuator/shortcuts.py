@@ -1,18 +1,12 @@
-"""The ``<actuator>`` section: one class per actuator element.
-
->>> Position(name="servo", joint="elbow", kp=100).kp
-100.0
-"""
+"""MuJoCo's actuator shortcuts (``<motor>``, ``<position>``...): ``<general>`` with parameters."""
 
 from __future__ import annotations
 
 from typing import ClassVar
 
-from mjcf_model.nodes.base import TypedElement
+from mjcf_model.nodes.actuator.base import TransmissionActuator
 from mjcf_model.nodes.declaring import node
 from mjcf_model.nodes.fields import (
-    boolean,
-    integer,
     keyword,
     number,
     numbers,
@@ -25,127 +19,16 @@ from mjcf_model.schema.keywords import LIMITED
 from mjcf_model.values import Floats
 
 __all__ = [
-    "Actuator",
-    "ActuatorElement",
-    "ActuatorPlugin",
-    "Adhesion",
     "Cylinder",
     "Damper",
     "DcMotor",
-    "General",
     "IntVelocity",
     "Motor",
     "Muscle",
-    "Orientation",
     "Pid",
     "Position",
-    "TransmissionActuator",
     "Velocity",
 ]
-
-
-@node
-class Actuator(TypedElement):
-    """Section of actuators."""
-
-    tag: ClassVar[str] = "actuator"
-    schema_keys: ClassVar[tuple[str, ...]] = ("actuator",)
-
-
-@node
-class ActuatorElement(TypedElement):
-    """Fields every actuator element shares."""
-
-    #: Name, unique within its namespace.
-    name: str | None = text()
-    #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
-    #: Range of the control.
-    ctrlrange: Floats | None = vec2()
-    #: Delay, in time units.
-    delay: float | None = number()
-    #: Integer group, used for visualization filters and by convention.
-    group: int | None = integer()
-    #: Interpolation of delayed values.
-    interp: str | None = text()
-    #: Number of samples kept for delays.
-    nsample: int | None = integer()
-    #: Custom user data (numbers).
-    user: Floats | None = numbers()
-
-
-@node
-class TransmissionActuator(ActuatorElement):
-    """Actuators that drive a joint, tendon, site or slider-crank transmission."""
-
-    #: Armature inertia added to the degree of freedom.
-    armature: float | None = number()
-    #: Length of the slider-crank rod.
-    cranklength: float | None = number()
-    #: Name of the crank site of a slider-crank.
-    cranksite: str | None = reference("site")
-    #: Damping (coefficients of a polynomial in MuJoCo 4).
-    damping: Floats | None = numbers()
-    #: Gear ratio(s) of the transmission.
-    gear: Floats | None = numbers()
-    #: Name of the joint.
-    joint: str | None = reference("joint")
-    #: Name of the joint in the parent frame (for ball-joint transmissions).
-    jointinparent: str | None = reference("joint")
-    #: Range of the actuator length.
-    lengthrange: Floats | None = vec2()
-    #: Name of the slider site of a slider-crank.
-    slidersite: str | None = reference("site")
-    #: Name of the tendon.
-    tendon: str | None = reference("tendon")
-
-
-@node
-class General(TransmissionActuator):
-    """A general actuator with configurable dynamics, gain and bias."""
-
-    tag: ClassVar[str] = "general"
-    schema_keys: ClassVar[tuple[str, ...]] = ("actuator/general", "default/general")
-    #: Dimension of the activation state.
-    actdim: int | None = integer()
-    #: Whether force uses the activation of the next step.
-    actearly: bool | None = boolean()
-    #: Whether the activation is clamped: ``true``, ``false`` or ``auto``.
-    actlimited: str | None = keyword(LIMITED)
-    #: Range of the activation.
-    actrange: Floats | None = vec2()
-    #: Bias parameters.
-    biasprm: Floats | None = numbers()
-    #: Bias type.
-    biastype: str | None = text()
-    #: Name of the body.
-    body: str | None = reference("body")
-    #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
-    ctrllimited: str | None = keyword(LIMITED)
-    #: Activation dynamics parameters.
-    dynprm: Floats | None = numbers()
-    #: Activation dynamics type.
-    dyntype: str | None = text()
-    #: Range of the feed-forward term.
-    ffrange: Floats | None = numbers()
-    #: Whether the force is clamped: ``true``, ``false`` or ``auto``.
-    forcelimited: str | None = keyword(LIMITED)
-    #: Range of the force.
-    forcerange: Floats | None = vec2()
-    #: Gain parameters.
-    gainprm: Floats | None = numbers()
-    #: Gain type.
-    gaintype: str | None = text()
-    #: Scale for inheriting the control range from the joint range.
-    inheritrange: str | None = text()
-    #: Input mode of the controller.
-    input: str | None = text()
-    #: Name of the reference site of a Cartesian transmission.
-    refsite: str | None = reference("site")
-    #: Name of the site.
-    site: str | None = reference("site")
-    #: Range of the velocity.
-    velrange: Floats | None = vec2()
 
 
 @node
@@ -394,77 +277,3 @@ class DcMotor(TransmissionActuator):
     site: str | None = reference("site")
     #: MJCF attribute ``thermal``; see the MuJoCo XML reference.
     thermal: str | None = text()
-
-
-@node
-class ActuatorPlugin(TransmissionActuator):
-    """An actuator implemented by a plugin."""
-
-    tag: ClassVar[str] = "plugin"
-    schema_keys: ClassVar[tuple[str, ...]] = ("actuator/plugin",)
-    #: Dimension of the activation state.
-    actdim: int | None = integer()
-    #: Whether force uses the activation of the next step.
-    actearly: bool | None = boolean()
-    #: Whether the activation is clamped: ``true``, ``false`` or ``auto``.
-    actlimited: str | None = keyword(LIMITED)
-    #: Range of the activation.
-    actrange: Floats | None = vec2()
-    #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
-    ctrllimited: str | None = keyword(LIMITED)
-    #: Activation dynamics parameters.
-    dynprm: Floats | None = numbers()
-    #: Activation dynamics type.
-    dyntype: str | None = text()
-    #: Whether the force is clamped: ``true``, ``false`` or ``auto``.
-    forcelimited: str | None = keyword(LIMITED)
-    #: Range of the force.
-    forcerange: Floats | None = vec2()
-    #: Name of the plugin instance.
-    instance: str | None = reference("plugin")
-    #: Identifier of the plugin library.
-    plugin: str | None = text()
-    #: Name of the site.
-    site: str | None = reference("site")
-
-
-@node
-class Orientation(ActuatorElement):
-    """An orientation servo."""
-
-    tag: ClassVar[str] = "orientation"
-    schema_keys: ClassVar[tuple[str, ...]] = ("actuator/orientation", "default/orientation")
-    #: Damping ratio (instead of ``kv``).
-    dampratio: float | None = number()
-    #: Whether the force is clamped: ``true``, ``false`` or ``auto``.
-    forcelimited: str | None = keyword(LIMITED)
-    #: Range of the force.
-    forcerange: Floats | None = vec2()
-    #: Input mode of the controller.
-    input: str | None = text()
-    #: Name of the joint.
-    joint: str | None = reference("joint")
-    #: Position gain.
-    kp: float | None = number()
-    #: Velocity gain.
-    kv: float | None = number()
-    #: Name of the reference site of a Cartesian transmission.
-    refsite: str | None = reference("site")
-    #: Name of the site.
-    site: str | None = reference("site")
-
-
-@node
-class Adhesion(ActuatorElement):
-    """An adhesion actuator."""
-
-    tag: ClassVar[str] = "adhesion"
-    schema_keys: ClassVar[tuple[str, ...]] = ("actuator/adhesion", "default/adhesion")
-    #: Name of the body.
-    body: str | None = reference("body")
-    #: Whether the force is clamped: ``true``, ``false`` or ``auto``.
-    forcelimited: str | None = keyword(LIMITED)
-    #: Range of the force.
-    forcerange: Floats | None = vec2()
-    #: Gain of the adhesion force.
-    gain: float | None = number()

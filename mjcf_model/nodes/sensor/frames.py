@@ -1,0 +1,227 @@
+"""Sensors that read a frame, a subtree, or a pair of geoms or bodies."""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from mjcf_model.nodes.declaring import node
+from mjcf_model.nodes.fields import integer, reference, text
+from mjcf_model.nodes.sensor.base import NoisySensor
+
+__all__ = [
+    "ContactSensor",
+    "Distance",
+    "FrameAngAcc",
+    "FrameAngVel",
+    "FrameLinAcc",
+    "FrameLinVel",
+    "FramePos",
+    "FrameQuat",
+    "FrameSensor",
+    "FrameXAxis",
+    "FrameYAxis",
+    "FrameZAxis",
+    "FromTo",
+    "GeomPairSensor",
+    "InsideSite",
+    "Normal",
+    "ObjectSensor",
+    "SubtreeAngMom",
+    "SubtreeCom",
+    "SubtreeLinVel",
+    "SubtreeSensor",
+]
+
+
+@node
+class ObjectSensor(NoisySensor):
+    """Sensors that read a frame of an object of any type."""
+
+    #: Name of the referenced object.
+    objname: str | None = reference("@objtype")
+    #: Type of the referenced object.
+    objtype: str | None = text()
+
+
+@node
+class FrameSensor(ObjectSensor):
+    """Frame sensors that may report relative to another frame."""
+
+    #: Name of the reference frame object.
+    refname: str | None = reference("@reftype")
+    #: Type of the reference frame object.
+    reftype: str | None = text()
+
+
+@node
+class FramePos(FrameSensor):
+    """Position of an object's frame."""
+
+    tag: ClassVar[str] = "framepos"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framepos",)
+
+
+@node
+class FrameQuat(FrameSensor):
+    """Orientation of an object's frame."""
+
+    tag: ClassVar[str] = "framequat"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framequat",)
+
+
+@node
+class FrameXAxis(FrameSensor):
+    """X axis of an object's frame."""
+
+    tag: ClassVar[str] = "framexaxis"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framexaxis",)
+
+
+@node
+class FrameYAxis(FrameSensor):
+    """Y axis of an object's frame."""
+
+    tag: ClassVar[str] = "frameyaxis"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/frameyaxis",)
+
+
+@node
+class FrameZAxis(FrameSensor):
+    """Z axis of an object's frame."""
+
+    tag: ClassVar[str] = "framezaxis"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framezaxis",)
+
+
+@node
+class FrameLinVel(FrameSensor):
+    """Linear velocity of an object's frame."""
+
+    tag: ClassVar[str] = "framelinvel"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framelinvel",)
+
+
+@node
+class FrameAngVel(FrameSensor):
+    """Angular velocity of an object's frame."""
+
+    tag: ClassVar[str] = "frameangvel"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/frameangvel",)
+
+
+@node
+class FrameLinAcc(ObjectSensor):
+    """Linear acceleration of an object's frame."""
+
+    tag: ClassVar[str] = "framelinacc"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framelinacc",)
+
+
+@node
+class FrameAngAcc(ObjectSensor):
+    """Angular acceleration of an object's frame."""
+
+    tag: ClassVar[str] = "frameangacc"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/frameangacc",)
+
+
+@node
+class SubtreeSensor(NoisySensor):
+    """Sensors that read the subtree rooted at a body."""
+
+    #: Name of the body.
+    body: str | None = reference("body")
+
+
+@node
+class SubtreeCom(SubtreeSensor):
+    """Centre of mass of a subtree."""
+
+    tag: ClassVar[str] = "subtreecom"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/subtreecom",)
+
+
+@node
+class SubtreeLinVel(SubtreeSensor):
+    """Linear velocity of a subtree's centre of mass."""
+
+    tag: ClassVar[str] = "subtreelinvel"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/subtreelinvel",)
+
+
+@node
+class SubtreeAngMom(SubtreeSensor):
+    """Angular momentum of a subtree."""
+
+    tag: ClassVar[str] = "subtreeangmom"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/subtreeangmom",)
+
+
+@node
+class InsideSite(ObjectSensor):
+    """Whether an object is inside a site's volume."""
+
+    tag: ClassVar[str] = "insidesite"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/insidesite",)
+    #: Which objects count as enclosed.
+    enclosed: str | None = text()
+    #: Name of the site.
+    site: str | None = reference("site")
+
+
+@node
+class GeomPairSensor(NoisySensor):
+    """Sensors that measure between two geoms or bodies."""
+
+    #: Name of the first body.
+    body1: str | None = reference("body")
+    #: Name of the second body.
+    body2: str | None = reference("body")
+    #: Name of the first geom.
+    geom1: str | None = reference("geom")
+    #: Name of the second geom.
+    geom2: str | None = reference("geom")
+
+
+@node
+class Distance(GeomPairSensor):
+    """Distance between two geoms or bodies."""
+
+    tag: ClassVar[str] = "distance"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/distance",)
+
+
+@node
+class Normal(GeomPairSensor):
+    """Normal between two geoms or bodies."""
+
+    tag: ClassVar[str] = "normal"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/normal",)
+
+
+@node
+class FromTo(GeomPairSensor):
+    """Segment between the nearest points of two geoms or bodies."""
+
+    tag: ClassVar[str] = "fromto"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/fromto",)
+
+
+@node
+class ContactSensor(GeomPairSensor):
+    """Contacts matching a filter."""
+
+    tag: ClassVar[str] = "contact"
+    schema_keys: ClassVar[tuple[str, ...]] = ("sensor/contact",)
+    #: Data values.
+    data: str | None = text()
+    #: Number of contacts reported.
+    num: int | None = integer()
+    #: How contacts are reduced.
+    reduce: str | None = text()
+    #: Name of the site.
+    site: str | None = reference("site")
+    #: Name of the root body of the first subtree.
+    subtree1: str | None = reference("body")
+    #: Name of the root body of the second subtree.
+    subtree2: str | None = reference("body")
