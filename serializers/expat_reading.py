@@ -15,19 +15,16 @@ expat refuses is repaired (:mod:`serializers.repairs`) and read again.
 
 from __future__ import annotations
 
-import re
 from typing import Any, NoReturn
 from xml.parsers import expat
 
 from mjcf_model.errors import MjcfError, MjcfIncludeError, MjcfSecurityError, MjcfSyntaxError
 from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, Node, TypedElement
 from mjcf_model.nodes.layout import DocumentText, Layout, SourceText
-from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.nodes.root import Include
-from mjcf_model.schema.namespaces import child_key, children_context
 from serializers.building import ReadMemo, build_element, element_step, element_text, read_typed
 from serializers.includes import PendingInclude, Session
-from serializers.open_element import OpenElement
+from serializers.open_element import STEPS, OpenElement, step_of
 from serializers.repairs import (
     NUMERIC_ATTRIBUTES,
     blank_text_before_root,
@@ -36,6 +33,7 @@ from serializers.repairs import (
     escape_stray_markup,
     exact_attributes,
 )
+from serializers.scanning import BREAK, may_hold_text, start_tag_end
 
 __all__ = ["Reader"]
 
@@ -152,16 +150,16 @@ class Reader:
         if flat:
             joined = "".join(flat)  # attribute names hold neither ">" nor white space
             if ">" in joined:
-                stop = _start_tag_end(raw, begin)
+                stop = start_tag_end(raw, begin)
             # expat turns a tab or line break in a value into a space; tinyxml2 keeps
             # it. Only a tag written over lines or with tabs can hold one.
-            if " " in joined and self.breaks and _BREAK.search(raw, begin, stop) is not None:
+            if " " in joined and self.breaks and BREAK.search(raw, begin, stop) is not None:
                 flat = self.exact_attributes(tag, context, flat, begin)
         if parent is None:
             self.root_begin = begin
-        step = _STEPS.get((context, tag))
+        step = STEPS.get((context, tag))
         if step is None:
-            step = _step(context, tag)
+            step = step_of(context, tag)
         key, inner, typed = step
         if parent is None and self.include_context is not None:
             inner = self.include_context  # MuJoCo takes the root's children, whatever its tag
@@ -299,8 +297,8 @@ class Reader:
             self.origin.values = self.known
             if not self.origin.raw:
                 self.ascii = self.origin.text
-            self.breaks = _BREAK.search(raw) is not None
-            if not _may_hold_text(raw):
+            self.breaks = BREAK.search(raw) is not None
+            if not may_hold_text(raw):
                 self.parser.CharacterDataHandler = None  # white space alone: nothing to keep
             self.parser.Parse(raw, True)
             self.record_document(len(raw))
@@ -373,69 +371,7 @@ class Reader:
         return MjcfSyntaxError(detail, file=self.filename, line=error.lineno, path=path)
 
 
-def _start_tag_end(raw: bytes, begin: int) -> int:
-    """The offset after the ``>`` that ends the start tag at ``begin`` in ``raw``."""
-    while True:
-        mark = _TAG_END_MARK.search(raw, begin)
-        assert mark is not None, "a start tag the reader read ends"
-        position = mark.start()
-        if raw[position] == ord(">"):
-            return position + 1
-        begin = raw.index(raw[position : position + 1], position + 1) + 1
-
-
-#: What ends a start tag, or opens a value that may hold a ``>``.
-_TAG_END_MARK = re.compile(b"[\"'>]")
-
-#: What ends a start tag, or opens a value that may hold a ``>``.
-_TAG_END_MARK = re.compile(b"[\"'>]")
-
-
-def _step(context: str | None, tag: str) -> tuple[str | None, str | None, Any]:
-    """A ``tag`` element in ``context``: its schema key, its children's context, its class.
-
-    The class is ``None`` unless the element is typed. Remembered in :data:`_STEPS`.
-    """
-    key = child_key(context, tag)
-    cls = CLASS_BY_KEY.get(key) if key is not None else None
-    if len(_STEPS) >= _MAX_STEPS:
-        _STEPS.clear()
-    step = _STEPS[(context, tag)] = (
-        key,
-        children_context(key, context),
-        cls if cls is not None and cls.tag == tag else None,
-    )
-    return step
-
-
-#: Per parent context and tag, what :func:`_step` found.
-_STEPS: dict[tuple[str | None, str], tuple[str | None, str | None, Any]] = {}
-#: Past this many, the steps are forgotten (hostile text could make any number).
-_MAX_STEPS = 4096
 #: Makes a layout from a tuple of its fields (in C: one is made per element).
 _new_layout = tuple.__new__
-#: A tab or line break, inside a start tag.
-_BREAK = re.compile(b"[\t\n\r]")
-
-
-def _may_hold_text(raw: bytes) -> bool:
-    r"""Whether the text may hold character data other than white space.
-
-    Such data can only follow the ``>`` that ends markup, or sit in a CDATA
-    section: with the white space taken out, every ``>`` of a file without it is
-    followed by ``<`` or ends the file. A ``>`` inside a value says "may": harmless.
-
-    Example:
-        >>> _may_hold_text(b"<a>\n  <b/>\n</a>"), _may_hold_text(b"<a> x </a>")
-        (False, True)
-
-    """
-    if b"<![CDATA[" in raw:
-        return True
-    squeezed = raw.translate(None, b" \t\r\n")
-    closing = squeezed.count(b">")
-    return closing != squeezed.count(b"><") + squeezed.endswith(b">")
-
-
 #: The byte of ``/``: a start tag that ends with ``/>`` is an empty element.
 _SLASH = ord("/")

@@ -14,8 +14,10 @@ from __future__ import annotations
 from typing import Any
 
 from mjcf_model.nodes.base import Node
+from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.schema.namespaces import child_key, children_context
 
-__all__ = ["OpenElement"]
+__all__ = ["STEPS", "OpenElement", "step_of"]
 
 
 class OpenElement:
@@ -83,3 +85,26 @@ class OpenElement:
 
 #: What an element without children holds as its children (never appended to).
 _NO_CHILDREN: list[Any] = []
+
+
+def step_of(context: str | None, tag: str) -> tuple[str | None, str | None, Any]:
+    """A ``tag`` element in ``context``: its schema key, its children's context, its class.
+
+    The class is ``None`` unless the element is typed. Remembered in :data:`STEPS`.
+    """
+    key = child_key(context, tag)
+    cls = CLASS_BY_KEY.get(key) if key is not None else None
+    if len(STEPS) >= _MAX_STEPS:
+        STEPS.clear()
+    step = STEPS[(context, tag)] = (
+        key,
+        children_context(key, context),
+        cls if cls is not None and cls.tag == tag else None,
+    )
+    return step
+
+
+#: Per parent context and tag, what :func:`step_of` found.
+STEPS: dict[tuple[str | None, str], tuple[str | None, str | None, Any]] = {}
+#: Past this many, the steps are forgotten (hostile text could make any number).
+_MAX_STEPS = 4096
