@@ -9,7 +9,8 @@ take these objects unchanged.
 :attr:`~MujocoObject.mjcf`; each in-place ElementTree edit of robosuite
 (prefixing, scaling, collision colours, materials) is a pure transform whose
 result replaces it. robosuite's text habits (``"0.0 0.0 0.0"``, attribute
-order, ``g<i>`` geom names, inline default classes) are reproduced exactly.
+order, ``g<i>`` geom names, inline default classes) are reproduced exactly, and
+attribute text read from files is kept as written.
 
 **Memoisation.** Objects are made again at every reset, so what depends on the
 input alone is remembered (:mod:`~mjcf_model.compat.objects.memo`): file reads,
@@ -21,7 +22,7 @@ of one view of the model (:class:`~mjcf_model.compat.objects.etree_view.EtreeVie
 patched in place when the model changes: ``get_obj()`` is the same element on
 every call, a later ``set_pos``/``set_scale`` shows in a task that appended it,
 and an XML object's ``get_obj()`` is the element inside ``root``. Edits other
-code makes to these elements are not read back: the model is the truth.
+code makes to these elements stay in them but are not read back.
 
 **isinstance.** A ``__class__`` property
 (:mod:`~mjcf_model.compat.objects.class_face`) makes instances pass
@@ -38,9 +39,9 @@ MJCF or builds a model MuJoCo rejects, this does the right thing:
   ``MujocoXMLModel`` leaves unnamed geoms of groups 2 and up unnamed
   (robosuite: ``KeyError``);
 * ``MujocoObject(scale=...)`` works (robosuite: ``TypeError``); numpy scalars
-  work as attribute values and as a ``CompositeObject`` density, and
-  ``CompositeObject`` broadcasts a single ``solimp`` by its own shape
-  (robosuite: by ``obj_types``);
+  work as attribute values and as a ``CompositeObject`` density, and whether
+  a ``CompositeObject`` ``solimp`` is per geom depends on ``solimp`` alone
+  (robosuite also consults ``obj_types``);
 * references robosuite's attribute list misses (equality ``site1``/``site2``,
   ``refsite``, ``refname``) are prefixed, and a file asset without a name is
   named by its prefixed file stem (robosuite leaves dangling references);
@@ -75,12 +76,7 @@ robosuite's once white space is stripped); an element-level
 
 from __future__ import annotations
 
-from mjcf_model.compat.objects.base import (
-    GEOM_GROUPS,
-    GEOMTYPE2GROUP,
-    MujocoModel,
-    MujocoObject,
-)
+from mjcf_model.compat.objects.base import GEOM_GROUPS, GEOMTYPE2GROUP, MujocoModel, MujocoObject
 from mjcf_model.compat.objects.composite import CompositeObject
 from mjcf_model.compat.objects.composite_body import CompositeBodyObject, HingedBoxObject
 from mjcf_model.compat.objects.generated import MujocoGeneratedObject, PrimitiveObject

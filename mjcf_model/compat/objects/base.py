@@ -1,12 +1,5 @@
 """``MujocoModel`` and ``MujocoObject``: robosuite's model interface over an immutable model.
 
-An object's state is one immutable model, a ``<mujoco>`` document node
-(:attr:`ModelBacked.mjcf`), and the places in it robosuite's API talks about
-(the object body, the asset section...). Every change (prefixing, scaling, a
-new material, ``set_pos``) computes a new document with the pure transforms and
-installs it; the ElementTree robosuite's code receives is kept in step by an
-:class:`~mjcf_model.compat.objects.etree_view.EtreeView`.
-
 >>> from mjcf_model.compat.objects import BoxObject
 >>> box = BoxObject("cube", size=[0.02, 0.02, 0.02])
 >>> box.get_obj() is box.get_obj(), box.root_body, box.correct_naming({"a": ["b"], "c": "d"})
@@ -57,15 +50,7 @@ _EMPTY_DOCUMENT = GenericElement(
 
 
 def check_obj_type(obj_type: str) -> None:
-    """Refuse an ``obj_type`` robosuite does not know (robosuite asserts).
-
-    Example:
-        >>> check_obj_type("visuals")
-        Traceback (most recent call last):
-            ...
-        mjcf_model.errors.MjcfValueError: object type must be one in [...], got: 'visuals' instead.
-
-    """
+    """Refuse an ``obj_type`` robosuite does not know (robosuite asserts)."""
     if obj_type not in GEOM_GROUPS:
         raise MjcfValueError(
             f"object type must be one in {list(GEOM_GROUPS)}, got: {obj_type!r} instead."
@@ -73,19 +58,14 @@ def check_obj_type(obj_type: str) -> None:
 
 
 class MujocoModel(RobosuiteCompatible):
-    """Like robosuite's ``MujocoModel`` interface: names with a prefix, geoms, sites, offsets.
-
-    Subclasses answer the properties; ``correct_naming`` is implemented here.
-    """
+    """robosuite's ``MujocoModel`` interface: prefixed names, geoms, sites, offsets."""
 
     _robosuite_class = ("robosuite.models.base", "MujocoModel")
 
     def correct_naming(self, names: Any) -> Any:
         """Add ``naming_prefix`` to a name, each name of a list, or each value of a dict.
 
-        Names ``exclude_from_prefixing`` accepts stay. The prefix is always
-        added (robosuite's ``correct_naming`` has no "already prefixed" test).
-        ``None`` in a list stays ``None`` (robosuite raises ``TypeError``).
+        Names ``exclude_from_prefixing`` accepts stay; unlike robosuite, ``None`` stays ``None``.
 
         Raises:
             TypeError: ``names`` is not a str, list or dict.
@@ -113,7 +93,7 @@ class MujocoModel(RobosuiteCompatible):
                 sim.model.site_rgba[site_id][3] = -alpha
 
     def exclude_from_prefixing(self, inp: Any) -> bool:
-        """Whether the name ``inp`` keeps its name without the prefix (subclasses decide)."""
+        """Whether the name ``inp`` is kept without the prefix (subclasses decide)."""
         raise NotImplementedError
 
     def _unanswered(self) -> Any:
@@ -138,21 +118,16 @@ class MujocoModel(RobosuiteCompatible):
 
 
 class MujocoObject(ModelBacked, MujocoModel):
-    """Like robosuite's ``MujocoObject``: a body with geoms, joints and a site, plus its assets.
+    """robosuite's ``MujocoObject``: a body with geoms, joints and a site, plus its assets.
 
-    The state is a document ``<mujoco><asset/><worldbody><body .../></worldbody></mujoco>``
-    whose body is the object (:meth:`get_obj`). Subclasses build the body in
-    ``_get_object_subtree`` (a node, or an ElementTree element as robosuite's
-    own subclasses return), assign it to ``_obj`` and call
-    ``_get_object_properties``.
-
-    Unlike robosuite, ``MujocoObject(scale=...)`` works: the scale is applied
-    once the body exists (robosuite scales before and raises ``TypeError``).
+    Subclasses build the body in ``_get_object_subtree`` (a node or an
+    ElementTree element), assign it to ``_obj`` and call ``_get_object_properties``.
+    Unlike robosuite, ``scale`` works: it is applied once the body exists.
 
     Args:
         obj_type: ``"collision"``, ``"visual"`` or ``"all"`` geoms.
         duplicate_collision_geoms: Give each collision geom a visual copy (XML objects).
-        scale: One factor or three, applied once the body is built.
+        scale: One factor or three.
 
     """
 
@@ -187,10 +162,7 @@ class MujocoObject(ModelBacked, MujocoModel):
         self._append("worldbody", "obj", body)
 
     def get_obj(self) -> ET.Element:
-        """The object body, as the live ElementTree element robosuite's tasks append.
-
-        It is the same element on every call; changes made through the object
-        (``set_pos``, ``set_scale``...) show in it.
+        """The object body: its live ElementTree element, the same on every call.
 
         Raises:
             MjcfLookupError: the body has not been built yet.
@@ -211,12 +183,7 @@ class MujocoObject(ModelBacked, MujocoModel):
         raise NotImplementedError
 
     def _get_object_properties(self) -> None:
-        """Record the raw names of the body's elements, then prefix the body's names.
-
-        Raises:
-            MjcfValueError: the body tree has more or less than one root body.
-
-        """
+        """Apply a pending scale, record the body's raw names, then prefix them."""
         if self._pending_scale is not None:
             self._pending_scale = None
             self.set_scale(self._scale)
@@ -225,7 +192,7 @@ class MujocoObject(ModelBacked, MujocoModel):
 
     def _record_names(self) -> None:
         body = self.obj_node
-        memo = skeleton_memo(body)  # the names are read from the naming skeleton alone
+        memo = skeleton_memo(body)  # the names depend on the naming skeleton alone
         if memo is None:
             self._raw = recorded_names(body)[1]
             return
@@ -246,10 +213,9 @@ class MujocoObject(ModelBacked, MujocoModel):
     def set_scale(self, scale: Any, obj: ET.Element | None = None) -> None:
         """Scale the body's geoms (pos, size), inner bodies and joints (pos) and the meshes.
 
-        As robosuite's ``MujocoObject.set_scale``: sites and the root body's own
-        position are not scaled, nor are the offsets of generated objects;
-        applying it twice compounds. ``obj`` is another ElementTree body to
-        scale in place instead of this object's.
+        As in robosuite, sites, the root body's position and generated objects'
+        offsets stay, and scaling twice compounds. ``obj``: another ElementTree
+        body to scale in place instead.
         """
         self._scale = scale
         tags = {"geom", "body", "joint"}
@@ -322,7 +288,7 @@ class MujocoObject(ModelBacked, MujocoModel):
         }
 
     def _default_site(self, hidden: bool = False) -> dict[str, str]:
-        """The ``default_site`` attributes (``hidden``: alpha 0, as XML and composite objects)."""
+        """The ``default_site`` attributes (``hidden``: alpha 0)."""
         site = self.get_site_attrib_template()
         if hidden:
             site["rgba"] = "1 0 0 0"
@@ -344,27 +310,7 @@ class MujocoObject(ModelBacked, MujocoModel):
 
 
 def recorded_names(node: AnyElement) -> tuple[AnyElement, dict[str, Any]]:
-    """The root body of ``node`` and the raw names robosuite records, by category.
-
-    ``root_body`` (a name), ``bodies`` (the root body's first), ``joints``,
-    ``actuators``, ``sites``, ``sensors``, ``contact_geoms`` and
-    ``visual_geoms``, as robosuite's ``MujocoObject`` and ``MujocoXMLModel``
-    record them from ``sort_elements``. The categories are the library's
-    :func:`~mjcf_model.categorized`, not the compatible ``sort_elements``, on
-    purpose: its sensors are the children of ``<sensor>``, where robosuite's
-    fixed tag list misses newer sensors.
-
-    Raises:
-        MjcfValueError: ``node`` has more or less than one root body (robosuite asserts).
-
-    Example:
-        >>> body = GenericElement(tag="body", attributes={"name": "b"},
-        ...                       children=[GenericElement(tag="site", attributes={"name": "s"})])
-        >>> names = recorded_names(body)[1]
-        >>> names["root_body"], names["bodies"], names["sites"]
-        ('b', ['b'], ['s'])
-
-    """
+    """The root body of ``node`` (exactly one) and robosuite's raw names, by category."""
     found = categorized(node)
     if len(found.root_body) != 1:
         raise MjcfValueError(
@@ -380,17 +326,7 @@ def recorded_names(node: AnyElement) -> tuple[AnyElement, dict[str, Any]]:
 
 
 def joint_specs(joints: Any, default: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    """Like robosuite's joint specs: ``"default"``, ``None`` (none) or the caller's own list.
-
-    Like robosuite, an unnamed spec gets ``name = "joint<i>"`` (``i`` its index)
-    written into the caller's dict, so code that reads the names back finds them.
-
-    Example:
-        >>> specs = [{"type": "hinge"}, {"name": "sl", "type": "slide"}]
-        >>> joint_specs(specs, []) is specs, specs[0]
-        (True, {'type': 'hinge', 'name': 'joint0'})
-
-    """
+    """Joint specs as robosuite's: ``"default"``, ``None`` or a list; unnamed get ``joint<i>``."""
     if isinstance(joints, str) and joints == "default":
         specs = default
     elif joints is None:

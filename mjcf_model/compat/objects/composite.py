@@ -53,16 +53,12 @@ def _per_geom(value: Any, count: int, single: bool) -> list[Any]:
 class CompositeObject(MujocoGeneratedObject):
     """robosuite's ``CompositeObject``: primitive geoms placed in a box of half-size ``total_size``.
 
-    Locations are of each geom's lower corner relative to the box's lower
-    corner, or of its centre relative to the box's centre with
-    ``locations_relative_to_center``. Per-geom lists may be ``None``; scalar
-    ``density``, ``solref`` and ``solimp`` apply to every geom (numpy scalars
-    too: robosuite raises ``TypeError`` for a numpy density, and decides
-    ``solimp``'s broadcast by ``obj_types`` by mistake).
+    Locations are of lower corners (from the box's), or of centres with
+    ``locations_relative_to_center``. Unlike robosuite, a numpy ``density``
+    works, and whether ``solimp`` is per geom depends on ``solimp`` alone.
 
     Raises:
-        MjcfValueError: a geom type without a half-size rule (box, ellipsoid,
-            sphere, capsule and cylinder have one).
+        MjcfValueError: a geom type other than box, ellipsoid, sphere, capsule, cylinder.
 
     """
 

@@ -1,11 +1,5 @@
 """``CompositeBodyObject`` and ``HingedBoxObject``: robosuite's objects made of objects' bodies.
 
-A composite body object is a ``root`` body holding the bodies of other objects
-(each placed with a position and a quaternion under the root or under a body
-placed before it), their assets, and joints of its own. The children's bodies
-are taken from their models (robosuite's objects may be children too, read
-from their ``get_obj()``); the children themselves are not changed.
-
 >>> lid = BoxObject("lid", size=[0.05, 0.05, 0.01])
 >>> crate = CompositeBodyObject(
 ...     "crate", objects=[BoxObject("base", size=[0.05, 0.05, 0.04]), lid],
@@ -31,13 +25,7 @@ from mjcf_model.compat.objects.composite import _name_unnamed as name_unnamed
 from mjcf_model.compat.objects.document import as_node
 from mjcf_model.compat.objects.etree_view import replaced_at, subtree_at
 from mjcf_model.compat.objects.generated import MujocoGeneratedObject
-from mjcf_model.compat.objects.habits import (
-    attribute,
-    rs_body,
-    rs_joint,
-    rs_site,
-    with_texts,
-)
+from mjcf_model.compat.objects.habits import attribute, rs_body, rs_joint, rs_site, with_texts
 from mjcf_model.compat.objects.naming import robosuite_prefixed
 from mjcf_model.compat.objects.primitives import BoxObject, CylinderObject
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
@@ -69,48 +57,31 @@ def _without_joints(body: AnyElement) -> AnyElement:
 class CompositeBodyObject(MujocoGeneratedObject):
     """robosuite's ``CompositeBodyObject``: other objects' bodies under one ``root`` body.
 
+    Children may be robosuite's objects too. Unlike robosuite, they are left as
+    they were (robosuite strips, moves and renames their elements in place).
+
     Args:
         name: Name of the object.
-        objects: One object or a list (tuple) of them, added in order, so a
-            child comes after the object whose body it is placed in. Their
-            direct joints are dropped.
-        object_locations: Each child's position relative to its parent body
-            (``None``: the origin).
+        objects: One object or a list (tuple) of them, in order (a parent
+            before its children); their direct joints are dropped.
+        object_locations: Each child's position in its parent (``None``: the origin).
         object_quats: Each child's quaternion, ``w x y z`` (``None``: identity).
         object_parents: The body each child goes into (``None``: ``"root"``),
-            by its name before this object's prefix (a child's ``root_body``).
+            by its unprefixed name (an earlier child's ``root_body``).
         joints: ``"default"`` (a free joint), ``None`` or joint attribute dicts
-            for the root body; unnamed ones are named ``joint<k>``, counting
-            the unnamed only.
-        body_joints: Body name to ``"default"`` or joint attribute dicts added
-            to that body; unnamed ones are named ``<body>_joint<i>`` (written
-            into the caller's dicts, as robosuite does).
-        sites: Site attribute dicts for the root body (unnamed: ``site<k>``),
-            before the hidden ``default_site``.
+            for the root body (unnamed: ``joint<k>``, counting the unnamed).
+        body_joints: Body name to ``"default"`` or joint attribute dicts
+            (unnamed: ``<body>_joint<i>``, written into the caller's dicts).
+        sites: Site attribute dicts for the root body (unnamed: ``site<k>``).
         total_size: Half-size of the bounding box, if known.
-        locations_relative_to_corner: Locations are of each child's lower
-            corner (from its bounding box) relative to the lower corner of
-            the ``total_size`` box.
+        locations_relative_to_corner: Locations are of lower corners, from the
+            ``total_size`` box's.
 
     Raises:
-        MjcfValueError: ``objects`` is not an object or a list of them, or
-            ``locations_relative_to_corner`` without ``total_size``
-            (robosuite asserts).
-        MjcfLookupError: a parent or ``body_joints`` body does not exist
-            (robosuite asserts), or a parent is not the root body of an
-            earlier child (robosuite: ``KeyError`` too).
-
-    Offsets are robosuite's bookkeeping: the top and bottom are the extremes
-    of the children's top and bottom offsets at their positions relative to
-    the root. The horizontal radius reproduces robosuite's quirk on purpose:
-    it is the largest ``max(x, y) + child radius`` over the children, the
-    larger *coordinate* of the child's position rather than its distance
-    from the root (so a child at ``(-0.1, -0.1)`` counts as nearer than one
-    at the origin).
-
-    Unlike robosuite, the children are left as they were: robosuite strips
-    their joints, moves them and prefixes their names and assets in place,
-    since their very elements become part of the composite.
+        MjcfValueError: ``objects`` is not an object or a list, or
+            ``locations_relative_to_corner`` without ``total_size``.
+        MjcfLookupError: a parent or ``body_joints`` body does not exist, or a
+            parent is not an earlier child's root body.
 
     """
 
@@ -196,11 +167,7 @@ class CompositeBodyObject(MujocoGeneratedObject):
         pos: Any = None,
         quat: Any = None,
     ) -> AnyElement:
-        """``root`` with ``obj``'s body (joints dropped) placed in the body ``parent_name``.
-
-        ``obj``'s assets are merged into this object's, and the offsets are
-        updated with the child's.
-        """
+        """``root`` with ``obj``'s body (joints dropped) in ``parent_name``; merges its assets."""
         parent_name = "root" if parent_name is None else parent_name
         pos = np.zeros(3) if pos is None else pos
         quat = np.array([1, 0, 0, 0]) if quat is None else quat
@@ -259,7 +226,7 @@ class CompositeBodyObject(MujocoGeneratedObject):
 
     @property
     def horizontal_radius(self) -> Any:
-        """The largest ``max(x, y) + radius`` of the children (robosuite's quirk, not a norm)."""
+        """The largest ``max(x, y) + radius`` of the children (robosuite's quirk: not a norm)."""
         return self._horizontal
 
     def get_bounding_box_half_size(self) -> Vector:
@@ -278,9 +245,7 @@ class HingedBoxObject(CompositeBodyObject):
         box2_size: Half-sizes of the upper box (the lid).
         use_texture: Red and blue wood materials; otherwise red and blue colours.
 
-    A third, visual-only cylinder marks the hinge. The bodies are
-    ``root``, ``box1_main``, ``box2_main`` (in box 1, its hinge joint
-    ``box_hinge`` at the lid's lower +x edge) and ``hinge_main`` (in box 2).
+    A visual cylinder ``hinge`` marks the hinge joint ``box_hinge`` of ``box2_main``.
 
     """
 

@@ -1,11 +1,5 @@
 """The state of every compat object: an immutable document, named places in it, its ElementTree.
 
-:class:`ModelBacked` holds a ``<mujoco>`` node (:attr:`ModelBacked.mjcf`) and
-the paths of the places robosuite's API talks about (``asset``, ``worldbody``,
-the object body...). A change computes a new document with the pure transforms
-and installs it; the ElementTree handed to robosuite's code is kept in step by
-an :class:`~mjcf_model.compat.objects.etree_view.EtreeView`.
-
 >>> from mjcf_model import GenericElement
 >>> class Doc(ModelBacked):
 ...     pass
@@ -36,13 +30,7 @@ __all__ = ["ModelBacked", "as_node"]
 
 
 def as_node(value: object) -> AnyElement:
-    """A node from a node or an ElementTree element (as robosuite subclasses hand them over).
-
-    Example:
-        >>> as_node(ET.fromstring('<geom size="1"/>')).attributes["size"]
-        '1'
-
-    """
+    """A node from a node or an ElementTree element (as robosuite subclasses hand them over)."""
     if isinstance(value, (TypedElement, GenericElement)):
         return value
     if isinstance(value, ET.Element):
@@ -57,9 +45,7 @@ class ModelBacked:
 
     _view: EtreeView
     _paths: dict[str, Path]
-    #: A node appended by :meth:`_append` and not written into the document yet, with
-    #: its place: changes to it alone (an object body prefixed once built) do not
-    #: rebuild the document each time.
+    #: (place, node) appended by :meth:`_append`, not yet written into the document.
     _appended: tuple[str, AnyElement] | None = None
 
     def _init_document(self, document: AnyElement, paths: dict[str, Path]) -> None:
@@ -114,15 +100,13 @@ class ModelBacked:
 
     @property
     def asset(self) -> ET.Element:
-        """The ``<asset>`` ElementTree element (live: the same object until the object is gone)."""
+        """The ``<asset>`` element (live)."""
         return self._live("asset")
 
     def merge_assets(self, other: Any) -> None:
-        """Append ``other``'s assets whose tag and name this asset section lacks.
+        """Append the assets of ``other`` (ours or robosuite's) whose tag and name are new.
 
-        ``other`` is any object with an ``asset`` element (this library's or
-        robosuite's). Its assets are copied into this object's model; robosuite
-        appends the very elements, shared between both trees.
+        Unlike robosuite, the assets are copied, not shared between both trees.
         """
         if isinstance(other, ModelBacked):
             theirs = list(other._node("asset").elements)

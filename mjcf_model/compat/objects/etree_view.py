@@ -1,22 +1,7 @@
-"""The ElementTree face of an immutable model: built once, then patched in place.
+"""The ElementTree face of an immutable model: built on first read, then patched in place.
 
-robosuite's pipeline appends and edits the elements an object hands out
-(``task.worldbody.append(obj.get_obj())``, ``obj.get_obj().set("pos", ...)``),
-and expects later changes made through the object (``set_pos``, ``set_scale``)
-to show in the elements it already holds, as they do in robosuite, where the
-object *is* its ElementTree. A fresh tree per call would break both.
-
-:class:`EtreeView` keeps one ElementTree for one model, built when it is
-first read (a model changed several times before anyone reads it, as an
-object is while it is made, is converted once). When the model is
-replaced by a changed copy, :meth:`EtreeView.update` walks the old and new
-nodes side by side and touches only what differs: subtrees shared by identity
-(the pure transforms share every unchanged subtree) are skipped, changed
-attributes are set or removed on the existing elements (``set`` keeps an
-attribute's position, as robosuite's edits do), and children are rebuilt only
-where the children changed. Elements already handed out stay the live ones;
-edits other code made to them are kept unless the model changes that very
-attribute. The model stays the truth: such edits are not read back.
+An update touches only what differs from the old model (subtrees shared by identity are
+skipped): elements handed out stay live, and others' edits stay unless the model changes them.
 
 >>> from mjcf_model import GenericElement
 >>> body = GenericElement(tag="body", attributes={"name": "b"})
@@ -40,15 +25,7 @@ __all__ = ["EtreeView", "replaced_at", "subtree_at"]
 
 
 def subtree_at(node: AnyElement, path: Path) -> AnyElement:
-    """The element at ``path`` (child indexes from ``node`` down).
-
-    Example:
-        >>> from mjcf_model import GenericElement
-        >>> leaf = GenericElement(tag="geom")
-        >>> subtree_at(GenericElement(tag="body", children=[leaf]), (0,)) is leaf
-        True
-
-    """
+    """The element at ``path`` (child indexes from ``node`` down)."""
     current = node
     for index in path:
         child = current.children[index]
@@ -58,15 +35,7 @@ def subtree_at(node: AnyElement, path: Path) -> AnyElement:
 
 
 def replaced_at(node: AnyElement, path: Path, new: AnyElement) -> AnyElement:
-    """A copy of ``node`` with the element at ``path`` replaced by ``new``; the rest is shared.
-
-    Example:
-        >>> from mjcf_model import GenericElement
-        >>> body = GenericElement(tag="body", children=[GenericElement(tag="geom")])
-        >>> replaced_at(body, (0,), GenericElement(tag="site")).children[0].tag
-        'site'
-
-    """
+    """A copy of ``node`` with the element at ``path`` replaced by ``new``; the rest is shared."""
     if not path:
         return new
     children = list(node.children)
@@ -77,34 +46,18 @@ def replaced_at(node: AnyElement, path: Path, new: AnyElement) -> AnyElement:
 
 
 class EtreeView:
-    """One ElementTree kept in step with a model that is replaced, never mutated.
-
-    Args:
-        node: The model.
-        element: An existing ElementTree element that already shows ``node``
-            (see :meth:`adopt`); by default a new one is built.
-
-    """
+    """One ElementTree kept in step with a replaced model (``element``: one already showing it)."""
 
     def __init__(self, node: AnyElement, element: ET.Element | None = None) -> None:
         self._node = node
         #: The elements built for each element's children, in model order.
         self._kids: dict[ET.Element, list[ET.Element]] = {}
-        #: The root element; built on first use, so a model changed several times
-        #: before anyone reads its ElementTree is converted once, at the end.
+        #: The root element, built on first use (a model changed often is converted once).
         self._element = None if element is None else self._record(node, element)
 
     @classmethod
     def adopt(cls, element: ET.Element) -> EtreeView:
-        """A view over an ElementTree someone else built; :meth:`update` then edits it in place.
-
-        Example:
-            >>> foreign = ET.fromstring('<body><geom size="1"/></body>')
-            >>> view = EtreeView.adopt(foreign)
-            >>> view.node.children[0].attributes["size"], view.element is foreign
-            ('1', True)
-
-        """
+        """A view over an ElementTree someone else built; :meth:`update` then edits it in place."""
         node = from_etree(element, typed=False)
         assert isinstance(node, (TypedElement, GenericElement))
         return cls(node, element)
@@ -122,15 +75,7 @@ class EtreeView:
         return self._element
 
     def at(self, path: Path) -> ET.Element:
-        """The element built for the model element at ``path``.
-
-        Example:
-            >>> from mjcf_model import GenericElement
-            >>> view = EtreeView(GenericElement(tag="a", children=[GenericElement(tag="b")]))
-            >>> view.at((0,)).tag
-            'b'
-
-        """
+        """The element built for the model element at ``path``."""
         element = self.element
         for index in path:
             element = self._kids[element][index]

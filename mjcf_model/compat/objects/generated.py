@@ -1,10 +1,6 @@
 """``MujocoGeneratedObject`` and ``PrimitiveObject``: objects built in code, as robosuite does.
 
-Materials may be this library's :class:`~mjcf_model.CustomMaterial` (frozen,
-its texture and material nodes made by the library) or robosuite's own
-``CustomMaterial`` (anything with ``name``, ``shared`` and the ``tex_attrib``
-and ``mat_attrib`` dicts, taken as they are): robosuite's environments pass
-their own when these classes stand in for robosuite's.
+Materials may be this library's :class:`~mjcf_model.CustomMaterial` or robosuite's own.
 
 >>> ball = PrimitiveObject("ball", size=[0.03], material="default")
 >>> [child.get("name") for child in ball.asset]
@@ -33,22 +29,14 @@ from mjcf_model.nodes.base import AnyElement, GenericElement
 from mjcf_model.transforms.materials import CustomMaterial
 from mjcf_model.tree.traversal import with_children
 
-__all__ = ["MujocoGeneratedObject", "PrimitiveObject", "material_parts"]
+__all__ = ["MujocoGeneratedObject", "PrimitiveObject"]
 
 #: The body of a primitive, before its children: robosuite's ``new_body(name="main")``.
 _MAIN_BODY = rs_body(name="main")
 
 
 def material_parts(material: Any) -> tuple[str, str, bool, AnyElement, AnyElement]:
-    """The material name, texture name, ``shared`` flag, and texture and material nodes.
-
-    Example:
-        >>> wood = CustomMaterial(texture=None, tex_name="t", mat_name="m")
-        >>> name, tex_name, shared, texture, mat = material_parts(wood)
-        >>> name, tex_name, shared, texture.tag, mat.texture
-        ('m', 't', False, 'texture', 't')
-
-    """
+    """The material name, texture name, ``shared`` flag, and texture and material nodes."""
     if isinstance(material, CustomMaterial):
         texture: AnyElement = material.texture_node
         node: AnyElement = material.material_node
@@ -90,11 +78,9 @@ class MujocoGeneratedObject(MujocoObject):
         return {"conaffinity": "0", "contype": "0", "mass": "1e-8", "group": "1"}
 
     def append_material(self, material: Any) -> None:
-        """Add a texture and a material to the assets, then prefix the asset names.
+        """Add a material and its texture to the assets, then prefix the asset names.
 
-        A material already registered as shared is not added again; a shared
-        material registers its names, which then never get the prefix.
-        ``material`` is a :class:`~mjcf_model.CustomMaterial` or robosuite's.
+        A shared material is added once and its names never get the prefix.
         """
         name, tex_name, shared, texture, node = material_parts(material)
         asset = self._node("asset")
@@ -121,6 +107,9 @@ class MujocoGeneratedObject(MujocoObject):
 class PrimitiveObject(MujocoGeneratedObject):
     """robosuite's ``PrimitiveObject``: one geom (collision and/or visual), joints and a site.
 
+    Unlike robosuite, ``material="default"`` uses MuJoCo's built-in flat texture
+    (named ``<name>_tex``), not a PNG file.
+
     Args:
         name: Name of the object.
         size: Geom size (default ``[0.05] * 3``).
@@ -136,14 +125,7 @@ class PrimitiveObject(MujocoGeneratedObject):
         duplicate_collision_geoms: Ignored, as in robosuite.
 
     Raises:
-        MjcfValueError: ``rgba`` or ``friction`` or the size has the wrong
-            length (robosuite asserts).
-
-    ``material="default"`` differs from robosuite on purpose: robosuite writes
-    a PNG of the colour to ``<tempdir>/robosuite_temp_tex/tex.png`` (one file
-    for every object, so all show the colour of the last one made); here the
-    texture is MuJoCo's built-in ``flat`` texture of that colour
-    (:class:`~mjcf_model.CustomMaterial`), named ``<name>_tex`` as robosuite's.
+        MjcfValueError: ``rgba``, ``friction`` or the size has the wrong length.
 
     """
 

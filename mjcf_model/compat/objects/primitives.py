@@ -1,9 +1,6 @@
 """``BoxObject``, ``BallObject``, ``CylinderObject`` and ``CapsuleObject``, as robosuite makes them.
 
-Sizes are given, or drawn uniformly between ``size_min`` and ``size_max``
-(the compatible ``get_size``, :func:`~mjcf_model.compat.mjcf_utils.text.get_size`,
-as robosuite's classes call it: one ``rng.uniform`` call per value, in order,
-so a seeded generator gives robosuite's sizes).
+Drawn sizes use the compatible ``get_size``, so a seeded generator gives robosuite's sizes.
 
 >>> box = BoxObject("cube", size_min=[0.02] * 3, size_max=[0.022] * 3, rng=np.random.default_rng(0))
 >>> box.get_obj()[0].get("size")
@@ -27,17 +24,7 @@ __all__ = ["BallObject", "BoxObject", "CapsuleObject", "CylinderObject"]
 
 
 class _SizedPrimitive(PrimitiveObject):
-    """The constructor the four primitives share: robosuite's signature, a drawn size.
-
-    Each class gives robosuite's bounds of the drawn size, the shape name of
-    its size check, and (the cylinder) its own defaults for ``friction``,
-    ``solref`` and ``joints="default"``.
-
-    Raises:
-        MjcfValueError: where ``get_size`` raises ``ValueError`` (a size given
-            together with a bound...), or the size has the wrong length.
-
-    """
+    """The constructor the four primitives share: robosuite's signature, a drawn size."""
 
     #: robosuite's upper and lower bounds of a drawn size (their length is the size's).
     _size_max: ClassVar[tuple[float, ...]] = (0.07, 0.07, 0.07)
@@ -129,8 +116,7 @@ class BoxObject(_SizedPrimitive):
 class BallObject(_SizedPrimitive):
     """A sphere; ``size`` is its radius.
 
-    ``rng`` is an addition: robosuite's ``BallObject`` always draws with a new
-    unseeded generator.
+    Unlike robosuite's, it takes ``rng`` (robosuite's draws unseeded).
     """
 
     _robosuite_class = ("robosuite.models.objects", "BallObject")
@@ -149,11 +135,7 @@ class BallObject(_SizedPrimitive):
 
 
 class CylinderObject(_SizedPrimitive):
-    """A cylinder; ``size`` is radius and half-length.
-
-    robosuite's stability settings: friction ``[1, 0.01, 0.001]``, solref
-    ``[0.01, 0.5]``, a free joint with damping 0.0001, collision margin 0.001.
-    """
+    """A cylinder; ``size`` is radius and half-length, with robosuite's stability defaults."""
 
     _robosuite_class = ("robosuite.models.objects", "CylinderObject")
     geom_type = "cylinder"
@@ -183,7 +165,7 @@ class CylinderObject(_SizedPrimitive):
 class CapsuleObject(_SizedPrimitive):
     """A capsule; ``size`` is radius and half-length of the cylinder part.
 
-    ``rng`` is an addition, as for :class:`BallObject`.
+    Unlike robosuite's, it takes ``rng`` (robosuite's draws unseeded).
     """
 
     _robosuite_class = ("robosuite.models.objects", "CapsuleObject")

@@ -1,11 +1,6 @@
 """Reading an MJCF file the way robosuite's ``MujocoXML`` does, into an immutable node.
 
-:func:`read_like_robosuite` returns the document robosuite's ``MujocoXML``
-holds after its constructor: sections added, default classes written inline
-and removed, asset files made absolute. Attribute text is kept exactly as in
-the file (``pos="0 0 0."`` stays), because robosuite hands it on unchanged;
-that is why the nodes are generic elements (``from_etree(..., typed=False)``).
-:func:`split_geoms` is the geom handling of ``MujocoXMLObject``.
+Nodes are generic elements, so attribute text stays exactly as in the file.
 
 >>> import tempfile, pathlib
 >>> path = pathlib.Path(tempfile.mkdtemp()) / "m.xml"
@@ -33,40 +28,14 @@ from mjcf_model.tree.traversal import Path, with_children
 from serializers import from_etree
 from serializers.writer import attribute_texts
 
-__all__ = [
-    "SECTIONS",
-    "absolute_files",
-    "inline_defaults",
-    "read_like_robosuite",
-    "split_geoms",
-    "visual_twin",
-]
+__all__ = ["absolute_files", "read_like_robosuite", "split_geoms", "visual_twin"]
 
 #: The sections ``MujocoXML`` makes sure exist, in the order it adds missing ones.
 SECTIONS = ("worldbody", "actuator", "sensor", "asset", "tendon", "equality", "contact")
 
 
-def _elements(node: AnyElement) -> list[AnyElement]:
-    return [c for c in node.children if isinstance(c, (TypedElement, GenericElement))]
-
-
 def read_like_robosuite(fname: str) -> tuple[AnyElement, dict[str, Path]]:
-    """The document robosuite's ``MujocoXML(fname)`` ends up with, and where its sections are.
-
-    1. the file is parsed with ElementTree (comments dropped);
-    2. each of :data:`SECTIONS` that is missing is added, empty, at the end;
-    3. the first ``<default>`` is written inline (:func:`inline_defaults`) and removed;
-    4. the ``file`` of each element of the first ``<asset>`` is joined to the
-       file's absolute directory (not normalised: ``.../objects/../textures/x.png``).
-
-    The node is immutable, so a file read again unchanged (same path,
-    modification time and size) gives the node read before, as robosuite's
-    objects read the same few files over and over.
-
-    Returns:
-        The root node and the path of each section (and of ``worldbody``).
-
-    """
+    """The document robosuite's ``MujocoXML(fname)`` ends up with, and its section paths."""
     try:
         stat = os.stat(fname)
     except OSError:
@@ -110,18 +79,7 @@ def _is(node: Node, tag: str) -> bool:
 
 
 def absolute_files(asset: AnyElement, folder: str) -> AnyElement:
-    """``asset`` with the ``file`` of each child joined to ``folder`` (robosuite's asset step).
-
-    As robosuite's ``resolve_asset_dependency``: not normalised, and an
-    absolute ``file`` stays (``os.path.join`` keeps it).
-
-    Example:
-        >>> asset = GenericElement(tag="asset", children=[
-        ...     GenericElement(tag="mesh", attributes={"file": "m.stl"}), GenericElement(tag="x")])
-        >>> [c.attributes.get("file") for c in absolute_files(asset, "/d").children]
-        ['/d/m.stl', None]
-
-    """
+    """``asset`` with each child's ``file`` joined to ``folder``, not normalised, as robosuite."""
     return with_children(
         asset,
         [
@@ -135,34 +93,7 @@ def absolute_files(asset: AnyElement, folder: str) -> AnyElement:
 
 
 def inline_defaults(root: AnyElement, default: AnyElement) -> AnyElement:
-    """Write the default classes of ``default`` into the elements that use them.
-
-    As robosuite's ``_replace_defaults_inline``: an element's ``class`` is
-    removed and each attribute of that class's setting for the element's tag
-    that the element lacks is appended, in the setting's order; the main
-    (unnamed) class is ignored, as robosuite ignores it (robosuite's models
-    were tuned without it). Where robosuite fails on valid MJCF, this does what
-    MuJoCo does instead:
-
-    * nested classes: a class also gives what its enclosing classes (not main)
-      set and it does not (robosuite raises ``KeyError``);
-    * ``childclass``: descendants without a ``class`` of their own take that
-      class, and the attribute is removed (robosuite keeps it, prefixes it,
-      and MuJoCo then rejects the model: "unknown default class").
-
-    Raises:
-        MjcfLookupError: an element names a class that does not exist.
-
-    Example:
-        >>> from serializers import from_etree
-        >>> default = from_etree(ET.fromstring(
-        ...     '<default><default class="a"><geom group="1"/><default class="b">'
-        ...     '<geom rgba="1 0 0 1"/></default></default></default>'), typed=False)
-        >>> body = from_etree(ET.fromstring('<body childclass="b"><geom/></body>'), typed=False)
-        >>> dict(inline_defaults(body, default).children[0].attributes)
-        {'rgba': '1 0 0 1', 'group': '1'}
-
-    """
+    """Write ``default``'s classes inline as robosuite does (nested, ``childclass``: as MuJoCo)."""
     classes = DefaultClasses.of(GenericElement(tag="mujoco", children=[default]))
 
     def chain(name: str) -> tuple[str, ...]:
@@ -204,28 +135,7 @@ def inline_defaults(root: AnyElement, default: AnyElement) -> AnyElement:
 
 
 def split_geoms(body: AnyElement, groups: set[int], duplicate: bool) -> AnyElement:
-    """``MujocoXMLObject``'s geom pass: drop, name, and give collision geoms a visual twin.
-
-    In document order, geom ``i`` (counting every geom of ``body``'s subtree,
-    the dropped ones too) is dropped unless its group is in ``groups`` (groups
-    2 and up always go); a kept geom without a name is named ``g<i>``. With
-    ``duplicate``, a collision geom (group 0 or none) gets a visual copy
-    (``group="1" conaffinity="0" contype="0" mass="1e-8"``, name + ``_visual``)
-    appended at the end of its parent, and itself becomes
-    ``rgba="0.5 0 0 1"`` without a material. A geom without ``group`` is a
-    collision geom here, as in MuJoCo (robosuite raises ``TypeError``).
-
-    Example:
-        >>> from serializers import from_etree
-        >>> body = from_etree(ET.fromstring(
-        ...     '<body><geom group="3"/><geom group="0" material="m"/></body>'), typed=False)
-        >>> new = split_geoms(body, {0, 1}, True)
-        >>> [dict(g.attributes) for g in new.children]  # doctest: +NORMALIZE_WHITESPACE
-        [{'group': '0', 'name': 'g1', 'rgba': '0.5 0 0 1'},
-         {'group': '1', 'material': 'm', 'name': 'g1_visual', 'conaffinity': '0',
-          'contype': '0', 'mass': '1e-8'}]
-
-    """
+    """``MujocoXMLObject``'s geom pass: keep ``groups``, name geom ``i`` ``g<i>``, add twins."""
     counter = 0
 
     def visit(element: AnyElement) -> AnyElement:
@@ -257,15 +167,7 @@ def split_geoms(body: AnyElement, groups: set[int], duplicate: bool) -> AnyEleme
 
 
 def visual_twin(geom: AnyElement, name: str) -> AnyElement:
-    """The visual copy of collision geom ``geom`` named ``name``: group 1, no contacts, no mass.
-
-    Example:
-        >>> geom = GenericElement(tag="geom", attributes={"name": "g", "group": "0"})
-        >>> dict(visual_twin(geom, "g").attributes)  # doctest: +NORMALIZE_WHITESPACE
-        {'name': 'g_visual', 'group': '1', 'conaffinity': '0', 'contype': '0',
-         'mass': '1e-8'}
-
-    """
+    """The visual twin ``<name>_visual`` of collision geom ``geom``: group 1, no contact or mass."""
     changes: dict[str, Any] = {
         "group": "1",
         "conaffinity": "0",

@@ -1,8 +1,6 @@
 """The XML objects robosuite ships (can, milk, nuts, door...), read from robosuite's own files.
 
-The files are found without importing robosuite
-(``importlib.util.find_spec("robosuite")``); without robosuite installed the
-classes raise :class:`~mjcf_model.MjcfLookupError`.
+robosuite must be installed (it is found, not imported); otherwise they raise ``MjcfLookupError``.
 
 >>> can = CanObject("can")
 >>> can.joints, can.contact_geoms, float(can.horizontal_radius)
@@ -38,23 +36,13 @@ __all__ = [
     "PlateWithHoleObject",
     "RoundNutObject",
     "SquareNutObject",
-    "robosuite_asset",
 ]
 
 _DAMPED_FREE_JOINT = {"type": "free", "damping": "0.0005"}
 
 
 def robosuite_asset(relative: str) -> str:
-    """The absolute path of a file in robosuite's ``models/assets`` directory.
-
-    Raises:
-        MjcfLookupError: robosuite is not installed.
-
-    Example:
-        >>> robosuite_asset("objects/can.xml").endswith("robosuite/models/assets/objects/can.xml")
-        True
-
-    """
+    """The absolute path of a file in robosuite's ``models/assets`` (raises without robosuite)."""
     missing = (
         f"robosuite's object {relative!r} is a file shipped with robosuite, which is not "
         "installed; install robosuite or load your own file with MujocoXMLObject"
@@ -63,12 +51,7 @@ def robosuite_asset(relative: str) -> str:
 
 
 class _Shipped(MujocoXMLObject):
-    """An object of robosuite's assets: a file, joints, geom kinds.
-
-    A subclass names its file as a class argument, ``class CanObject(_Shipped,
-    file="objects/can.xml")``; its robosuite twin is the class of the same name
-    in ``robosuite.models.objects``.
-    """
+    """An object of robosuite's assets; subclasses pass ``file=``, their twin has their name."""
 
     _file = ""
     _joints: Any = "damped"

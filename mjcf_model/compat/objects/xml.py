@@ -1,11 +1,5 @@
 """``MujocoXML`` and ``MujocoXMLObject``: robosuite's file-based models over an immutable model.
 
-The document is read as robosuite reads it (:func:`read_like_robosuite`) and
-every later step is a pure transform of that node: the geom split, the
-joints and site, scaling, prefixing. ``root``, ``worldbody``, ``asset``... and
-``get_obj()`` are the live ElementTree elements of one view of the document
-(``get_obj()`` is the very element inside ``root``, as in robosuite).
-
 >>> import tempfile, pathlib
 >>> path = pathlib.Path(tempfile.mkdtemp()) / "ball.xml"
 >>> _ = path.write_text('<mujoco><worldbody><body><body name="object">'
@@ -36,12 +30,7 @@ from mjcf_model.compat.objects.base import (
 from mjcf_model.compat.objects.class_face import RobosuiteCompatible
 from mjcf_model.compat.objects.document import ModelBacked
 from mjcf_model.compat.objects.etree_view import replaced_at, subtree_at
-from mjcf_model.compat.objects.habits import (
-    attribute,
-    robosuite_scaled,
-    rs_joint,
-    with_texts,
-)
+from mjcf_model.compat.objects.habits import attribute, robosuite_scaled, rs_joint, with_texts
 from mjcf_model.compat.objects.memo import Memo
 from mjcf_model.compat.objects.naming import robosuite_prefixed
 from mjcf_model.compat.objects.reading import (
@@ -55,7 +44,7 @@ from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
 from mjcf_model.tree.traversal import Path, walk, with_children
 from serializers import from_etree, to_etree
 
-__all__ = ["MujocoXML", "MujocoXMLObject", "section_children"]
+__all__ = ["MujocoXML", "MujocoXMLObject"]
 
 #: Prepared documents, by the document read and the choices that shape the object.
 _PREPARED: Memo[AnyElement] = Memo(32)
@@ -67,11 +56,7 @@ def _typed(attributes: dict[str, Any]) -> tuple[tuple[str, type, Any], ...]:
 
 
 def section_children(model: Any, section: str) -> list[AnyElement]:
-    """The elements of ``model``'s section (``worldbody``, ``asset``...), as nodes.
-
-    ``model`` is this library's or robosuite's: robosuite's elements are read
-    with :func:`serializers.from_etree`.
-    """
+    """The elements of the section of ``model`` (ours or robosuite's), as nodes."""
     if isinstance(model, ModelBacked) and section in model._paths:
         return list(model._node(section).elements)
     found = []
@@ -83,7 +68,7 @@ def section_children(model: Any, section: str) -> list[AnyElement]:
 
 
 class MujocoXML(ModelBacked, RobosuiteCompatible):
-    """Like robosuite's ``MujocoXML``: an MJCF file, its sections, merging and output.
+    """robosuite's ``MujocoXML``: an MJCF file, its sections, merging and output.
 
     Args:
         fname: Path of the MJCF file.
@@ -148,6 +133,8 @@ class MujocoXML(ModelBacked, RobosuiteCompatible):
 
     def merge(self, others: Any, merge_body: str | None = "default") -> None:
         """Merge other models: bodies, assets, actuators, sensors, tendons, equalities, contacts.
+
+        Unlike robosuite, their elements are copied, not shared.
 
         Args:
             others: A model or a list of models (this library's or robosuite's).
@@ -216,27 +203,22 @@ class MujocoXML(ModelBacked, RobosuiteCompatible):
 
 
 class MujocoXMLObject(MujocoObject, MujocoXML):
-    """Like robosuite's ``MujocoXMLObject``: an object read from a file.
+    """robosuite's ``MujocoXMLObject``: the body ``worldbody/body/body[@name='object']`` of a file.
 
-    The file's ``worldbody`` holds a body whose child ``<body name="object">``
-    is the object; the outer body's ``bottom_site``, ``top_site`` and
-    ``horizontal_radius_site`` give its offsets. Geoms are split by
-    ``obj_type``, collision geoms get visual twins, joints and a default site
-    are added, then every name in the document gets ``"<name>_"``.
+    The outer body's ``bottom_site``, ``top_site`` and ``horizontal_radius_site``
+    give the offsets; every name in the document gets ``"<name>_"``.
 
     Args:
         fname: Path of the MJCF file.
         name: Name of the object (its prefix is ``name + "_"``).
-        joints: ``"default"`` (a free joint), ``None``, or a list of joint
-            attribute dicts (unnamed ones are named ``joint<i>`` in the
-            caller's dicts, as robosuite does).
+        joints: ``"default"`` (a free joint), ``None``, or joint attribute
+            dicts (unnamed ones are named ``joint<i>`` in the caller's dicts).
         obj_type: ``"collision"``, ``"visual"`` or ``"all"``.
         duplicate_collision_geoms: Give collision geoms visual twins.
         scale: One factor or three.
 
     Raises:
-        MjcfLookupError: the file has no ``worldbody/body/body[@name='object']``
-            (robosuite raises ``AttributeError``).
+        MjcfLookupError: the file has no such body (robosuite: ``AttributeError``).
 
     """
 
@@ -284,11 +266,7 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
         )
 
     def _prepared_document(self) -> AnyElement:
-        """The document with the object body prepared (:meth:`_prepared`).
-
-        The same document read again, with the same geom kinds, joints and site,
-        is prepared the same way: that result is remembered.
-        """
+        """The document with the object body prepared (:meth:`_prepared`), remembered."""
         document, place = self.mjcf, self._paths["obj"]
 
         def prepared() -> AnyElement:
@@ -334,9 +312,7 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
     def set_scale(self, scale: Any, obj: ET.Element | None = None) -> None:
         """Scale as robosuite does: the body's geoms, bodies, joints; all meshes; all sites.
 
-        Sites are those of the whole worldbody (the offset sites too), so the
-        offsets follow the scale; the object body's own position is not
-        scaled; applying it twice compounds.
+        The worldbody's sites include the offset sites, so the offsets follow.
         """
         super().set_scale(scale, obj)
         self._change("worldbody", lambda world: robosuite_scaled(world, scale, {"site"}))

@@ -1,11 +1,5 @@
 """``MujocoXMLModel``: robosuite's base of robots, grippers and mounts read from a file.
 
-Unnamed geoms are named ``g<k>_col`` / ``g<k>_vis`` (one counter each, in
-document order), the names are recorded, every name in the document gets the
-prefix, and the collision geoms of the worldbody take ``contact_geom_rgba``.
-Subclasses give ``naming_prefix``, ``contact_geom_rgba`` and the raw
-``_important_*`` names, as robosuite's do.
-
 >>> import tempfile, pathlib
 >>> path = pathlib.Path(tempfile.mkdtemp()) / "hand.xml"
 >>> _ = path.write_text('<mujoco><worldbody><body name="hand"><geom size="0.1"/>'
@@ -33,23 +27,13 @@ from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import to_vec4
 
-__all__ = ["MujocoXMLModel", "named_geoms"]
+__all__ = ["MujocoXMLModel"]
 
 _GEOM_KINDS = {None: "col", "0": "col", "1": "vis"}
 
 
 def named_geoms(node: AnyElement) -> AnyElement:
-    """Name unnamed geoms ``g<k>_col`` (group 0 or none) and ``g<k>_vis`` (group 1), in order.
-
-    Geoms of other groups stay unnamed (robosuite raises ``KeyError``).
-
-    Example:
-        >>> body = GenericElement(tag="body", children=[
-        ...     GenericElement(tag="geom", attributes={"group": "1"}), GenericElement(tag="geom")])
-        >>> [g.attributes["name"] for g in named_geoms(body).children]
-        ['g0_vis', 'g0_col']
-
-    """
+    """Name unnamed geoms ``g<k>_col`` (group 0 or none) and ``g<k>_vis`` (group 1), in order."""
     counters = {"col": 0, "vis": 0}
 
     def visit(element: AnyElement) -> AnyElement:
@@ -71,6 +55,10 @@ def named_geoms(node: AnyElement) -> AnyElement:
 
 class MujocoXMLModel(MujocoXML, MujocoModel):
     """robosuite's ``MujocoXMLModel``: a file-based model with one root body and a prefix.
+
+    Unnamed geoms are named, the names recorded and prefixed, and the collision
+    geoms take ``contact_geom_rgba``. Subclasses give ``naming_prefix``,
+    ``contact_geom_rgba`` and the raw ``_important_*`` names.
 
     Args:
         fname: Path of the MJCF file.
@@ -98,12 +86,7 @@ class MujocoXMLModel(MujocoXML, MujocoModel):
 
     @staticmethod
     def _recolored(world: AnyElement, rgba: Any) -> AnyElement:
-        """Paint the collision geoms as robosuite's ``recolor_collision_geoms`` does.
-
-        The compatible function's pure part,
-        :func:`~mjcf_model.compat.mjcf_utils.materials.recolored`.
-        Unlike robosuite, ``rgba`` must be four numbers (as in the library).
-        """
+        """Paint the collision geoms as ``recolor_collision_geoms`` does (four-number ``rgba``)."""
         to_vec4(rgba)  # raises MjcfValueError for anything else
         recolored_world = recolored(world, rgba)
         assert isinstance(recolored_world, (TypedElement, GenericElement))
