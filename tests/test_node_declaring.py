@@ -146,16 +146,3 @@ def test_registry_is_every_declared_schema_key() -> None:
     assert dict(CLASS_BY_KEY) == declared
     assert set(CLASS_BY_KEY) <= set(SCHEMA)
     assert all(cls.__node_info__.tag == key.rsplit("/", 1)[-1] for key, cls in CLASS_BY_KEY.items())
-
-
-@pytest.mark.parametrize("key", sorted(CLASS_BY_KEY))
-def test_reference_fields_agree_with_the_namespace_table(key: str) -> None:
-    """A field declared reference(ns) is a reference to ns in the table, and the converse."""
-    cls, spec = CLASS_BY_KEY[key], SCHEMA[key]
-    fields = {f.name: f for f in attrs.fields(cls)}
-    declared: dict[str, Any] = {}
-    for xml, field_name in cls.__node_info__.table.items():
-        if xml in spec.attributes:
-            declared[xml] = fields[field_name].metadata.get("namespace")
-    table = {xml: spec.references.get(xml) for xml in declared}
-    assert declared == table

@@ -4,35 +4,10 @@
 100.0
 """
 
-from mjcf_model.nodes.actuator.base import Actuator, ActuatorElement, General, TransmissionActuator
-from mjcf_model.nodes.actuator.shortcuts import (
-    Cylinder,
-    Damper,
-    DcMotor,
-    IntVelocity,
-    Motor,
-    Muscle,
-    Pid,
-    Position,
-    Velocity,
-)
-from mjcf_model.nodes.actuator.special import ActuatorPlugin, Adhesion, Orientation
+from mjcf_model.nodes.actuator import base, shortcuts, special
+from mjcf_model.nodes.actuator.base import *  # noqa: F403
+from mjcf_model.nodes.actuator.shortcuts import *  # noqa: F403
+from mjcf_model.nodes.actuator.special import *  # noqa: F403
 
-__all__ = [
-    "Actuator",
-    "ActuatorElement",
-    "ActuatorPlugin",
-    "Adhesion",
-    "Cylinder",
-    "Damper",
-    "DcMotor",
-    "General",
-    "IntVelocity",
-    "Motor",
-    "Muscle",
-    "Orientation",
-    "Pid",
-    "Position",
-    "TransmissionActuator",
-    "Velocity",
-]
+# Each module lists its classes; a class added there is exported here without more.
+__all__ = [*base.__all__, *shortcuts.__all__, *special.__all__]
