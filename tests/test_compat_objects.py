@@ -205,6 +205,19 @@ def test_can_scaled_twice_golden() -> None:
     np.testing.assert_array_equal(can.bottom_offset, [0.0, 0.0, -0.24])
 
 
+
+def test_set_scale_of_another_body_scales_it_in_place_as_robosuite_does() -> None:
+    """``set_scale(scale, obj=body)`` scales that live body in place, and the object's meshes."""
+    trees = []
+    for module in (rs, ours):
+        can = module.CanObject("can")
+        other = module.BoxObject("box", size=[0.1, 0.1, 0.1]).get_obj()
+        can.set_scale([1, 2, 3], obj=other)
+        trees.append((other, can.asset))
+    (theirs, their_asset), (mine, my_asset) = trees
+    assert_same_tree(mine, theirs)
+    assert_same_tree(my_asset, their_asset)
+
 # -- MujocoXMLObject on the contract's fixture --------------------------------------
 
 XML_CASES = [

@@ -18,22 +18,22 @@ from mjcf_model.nodes.base import (
     TypedElement,
     get_attribute,
 )
-from mjcf_model.nodes.base import with_attributes as _with_attributes
-from mjcf_model.tree.traversal import Path, with_children
+from mjcf_model.tree.traversal import Path
 from mjcf_model.values import format_value
 from serializers import from_etree
+from serializers.canonical import attribute_texts
 
 __all__ = [
     "Edits",
     "attribute",
-    "edited",
+    "children_of",
     "element_index",
     "node_index",
     "node_of",
     "paired",
     "preorder",
     "shallow_node",
-    "write_attributes",
+    "sync_element",
     "write_back",
 ]
 
@@ -66,7 +66,7 @@ def shallow_node(element: ET.Element) -> Node:
     return GenericElement(tag=element.tag, attributes=element.attrib)
 
 
-def _children(element: ET.Element) -> list[ET.Element]:
+def children_of(element: ET.Element) -> list[ET.Element]:
     """The children ``from_etree`` converts (elements and comments), in order."""
     return [
         child
@@ -82,7 +82,7 @@ def paired(element: ET.Element, node: Node) -> Iterator[tuple[ET.Element, Node]]
         current, current_node = stack.pop()
         yield current, current_node
         if isinstance(current_node, Element):
-            pairs = zip(_children(current), current_node.children, strict=True)
+            pairs = zip(children_of(current), current_node.children, strict=True)
             stack.extend(reversed(list(pairs)))
 
 
@@ -112,52 +112,50 @@ def preorder(node: Node) -> Iterator[tuple[AnyElement | None, Node, Path]]:
             )
 
 
-def edited(node: Node, edits: Edits) -> Node:
-    """A copy of ``node`` with attribute ``edits`` applied by path, sharing unchanged subtrees."""
-    if not edits:
-        return node
-    touched = {path[:depth] for path in edits for depth in range(len(path) + 1)}
+def sync_element(element: ET.Element, old: Node, new: Node) -> None:
+    """Make ``element``, which shows ``old``, show ``new``'s attributes and text, in place.
 
-    def rebuild(current: Node, path: Path) -> Node:
-        if path not in touched:
-            return current
-        if isinstance(current, (TypedElement, GenericElement)):
-            if current.children:
-                children = [rebuild(c, (*path, i)) for i, c in enumerate(current.children)]
-                current = with_children(current, children)
-            changes = edits.get(path)
-            if changes:
-                current = _with_attributes(current, changes)
-        return current
-
-    return rebuild(node, ())
-
-
-def write_attributes(element: ET.Element, node: Node) -> None:
-    """Make ``element``'s attributes those of ``node``: set changed ones, delete removed ones.
-
-    ``set`` keeps an existing attribute in place and puts a new one last, as robosuite's does.
+    A changed attribute is set where it stands and a new one goes last (as ``set``
+    does), a removed one is deleted; attributes other code added to the live
+    element stay, after the model's own.
     """
-    if not isinstance(node, GenericElement):
+    if new is old or not isinstance(new, (TypedElement, GenericElement)):
         return
-    new = node.attributes
-    for key in [key for key in element.attrib if key not in new]:
-        del element.attrib[key]
-    for key, value in new.items():
-        if element.get(key) != value:
-            element.set(key, value)
+    before = attribute_texts(old) if isinstance(old, (TypedElement, GenericElement)) else []
+    after = attribute_texts(new)
+    if before != after:
+        _sync_attributes(element, dict(before), after)
+    if getattr(old, "text", None) != new.text:
+        element.text = new.text
+
+
+def _sync_attributes(element: ET.Element, old: dict[str, str], new: list[tuple[str, str]]) -> None:
+    new_values = dict(new)
+    for name in old:
+        if name not in new_values:
+            element.attrib.pop(name, None)
+    for name, text in new:
+        if old.get(name) != text:
+            element.set(name, text)
+    order = [name for name in element.attrib if name in new_values]
+    if order != [name for name, _ in new]:  # reordered: the model's order, then the others'
+        foreign = {k: v for k, v in element.attrib.items() if k not in new_values}
+        mine = {name: element.attrib[name] for name, _ in new}
+        element.attrib.clear()
+        element.attrib.update(mine)
+        element.attrib.update(foreign)
 
 
 def write_back(element: ET.Element, old: Node, new: Node) -> None:
     """Write the changes from ``old`` (``node_of(element)``) to ``new`` onto the live elements.
 
-    Subtrees ``new`` shares with ``old`` are skipped; only attributes may differ.
+    Subtrees ``new`` shares with ``old`` are skipped; the structure must be the same.
     """
     stack: list[tuple[ET.Element, Node, Node]] = [(element, old, new)]
     while stack:
         current, before, after = stack.pop()
         if after is before:
             continue
-        write_attributes(current, after)
+        sync_element(current, before, after)
         if isinstance(before, Element) and isinstance(after, Element):
-            stack.extend(zip(_children(current), before.children, after.children, strict=True))
+            stack.extend(zip(children_of(current), before.children, after.children, strict=True))

@@ -19,7 +19,6 @@ from mjcf_model.compat.mjcf_utils.builders import new_element
 from mjcf_model.compat.mjcf_utils.constants import ALL_TEXTURES, TEXTURES
 from mjcf_model.compat.mjcf_utils.etree_sync import (
     attribute,
-    edited,
     element_index,
     node_of,
     preorder,
@@ -30,6 +29,7 @@ from mjcf_model.compat.mjcf_utils.text import array_to_string, parse_numbers, xm
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.transforms.materials import DEFAULT_MATERIAL, with_material
 from mjcf_model.transforms.materials import CustomMaterial as FrozenMaterial
+from mjcf_model.tree.traversal import edited_at
 
 __all__ = [
     "CustomMaterial",
@@ -207,7 +207,7 @@ def recolored(node: Node, rgba: Any, exclude: Callable[[AnyElement], Any] | None
             if text is None:
                 text = array_to_string(rgba)
             edits[path] = {"rgba": text, "material": None}
-    return edited(node, edits)
+    return edited_at(node, edits)
 
 
 def recolor_collision_geoms(
@@ -244,7 +244,7 @@ def with_alpha(node: Node, alpha: Any) -> Node:
         rgba = attribute(current, "rgba")
         if parent is not None and rgba is not None:
             edits[path] = {"rgba": array_to_string([*parse_numbers(rgba)[0:3], alpha])}
-    return edited(node, edits)
+    return edited_at(node, edits)
 
 
 def set_alpha(node: ET.Element, alpha: Any = 0.1) -> None:

@@ -8,13 +8,13 @@ from typing import Any
 
 from mjcf_model.compat.mjcf_utils.constants import MUJOCO_NAMED_ATTRIBUTES
 from mjcf_model.compat.mjcf_utils.etree_sync import (
-    edited,
     element_index,
     node_of,
     preorder,
     write_back,
 )
 from mjcf_model.nodes.base import GenericElement, Node, TypedElement, attribute_items
+from mjcf_model.tree.traversal import edited_at
 
 __all__ = ["add_prefix", "already_prefixed", "prefixed_attributes"]
 
@@ -68,7 +68,7 @@ def prefixed_attributes(
                 changes[name] = prefix + value
         if changes:
             edits[path] = changes
-    return edited(node, edits)
+    return edited_at(node, edits)
 
 
 def add_prefix(

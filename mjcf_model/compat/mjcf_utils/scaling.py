@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from mjcf_model.compat.mjcf_utils.etree_sync import attribute, shallow_node, write_attributes
+from mjcf_model.compat.mjcf_utils.etree_sync import attribute, shallow_node, sync_element
 from mjcf_model.compat.mjcf_utils.text import array_to_string, normalize_scale_array, parse_numbers
 from mjcf_model.nodes.base import GenericElement, Node, TypedElement, with_attributes
 
@@ -125,7 +125,8 @@ def _in_place(scaled: Callable[[Node, Any], Node], what: str) -> Callable[[ET.El
     """A ``scale_<tag>_element``: ``scaled`` on one live element, written back in place."""
 
     def scale_element(element: ET.Element, scale_array: Any) -> None:
-        write_attributes(element, scaled(shallow_node(element), scale_array))
+        old = shallow_node(element)
+        sync_element(element, old, scaled(old, scale_array))
 
     tag = scaled.__name__.removeprefix("scaled_")
     scale_element.__name__ = scale_element.__qualname__ = f"scale_{tag}_element"
@@ -151,7 +152,8 @@ def scale_joint_element(
         '-3.0 3.0'
 
     """
-    write_attributes(element, scaled_joint(shallow_node(element), scale_array, scale_slide_joints))
+    old = shallow_node(element)
+    sync_element(element, old, scaled_joint(old, scale_array, scale_slide_joints))
 
 
 def scale_mjcf_model(

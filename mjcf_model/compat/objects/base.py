@@ -14,9 +14,9 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from mjcf_model.compat.mjcf_utils.etree_sync import write_back
 from mjcf_model.compat.objects.class_face import RobosuiteCompatible
 from mjcf_model.compat.objects.document import ModelBacked, as_node
-from mjcf_model.compat.objects.etree_view import EtreeView
 from mjcf_model.compat.objects.habits import attribute, robosuite_scaled
 from mjcf_model.compat.objects.naming import robosuite_prefixed, skeleton_memo
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
@@ -223,8 +223,8 @@ class MujocoObject(ModelBacked, MujocoModel):
             self._pending_scale = scale
             return
         if obj is not None and obj is not self._obj:
-            view = EtreeView.adopt(obj)
-            view.update(robosuite_scaled(view.node, scale, tags))
+            before = as_node(obj)
+            write_back(obj, before, robosuite_scaled(before, scale, tags))
         else:
             self._change("obj", lambda body: robosuite_scaled(body, scale, tags))
         self._change("asset", lambda asset: robosuite_scaled(asset, scale, {"mesh"}))

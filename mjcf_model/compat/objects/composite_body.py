@@ -23,7 +23,6 @@ from mjcf_model.compat.mjcf_utils.text import array_to_string
 from mjcf_model.compat.objects.base import MujocoObject, Vector
 from mjcf_model.compat.objects.composite import _name_unnamed as name_unnamed
 from mjcf_model.compat.objects.document import as_node
-from mjcf_model.compat.objects.etree_view import replaced_at, subtree_at
 from mjcf_model.compat.objects.generated import MujocoGeneratedObject
 from mjcf_model.compat.objects.habits import attribute, rs_body, rs_joint, rs_site, with_texts
 from mjcf_model.compat.objects.naming import robosuite_prefixed
@@ -31,7 +30,7 @@ from mjcf_model.compat.objects.primitives import BoxObject, CylinderObject
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
 from mjcf_model.transforms.materials import CustomMaterial
-from mjcf_model.tree.traversal import Path, walk, with_children
+from mjcf_model.tree.traversal import Path, appended_at, walk, with_children
 
 __all__ = ["CompositeBodyObject", "HingedBoxObject"]
 
@@ -188,8 +187,7 @@ class CompositeBodyObject(MujocoGeneratedObject):
             _without_joints(body), {"pos": array_to_string(pos), "quat": array_to_string(quat)}
         )
         self.merge_assets(other=obj)
-        parent = subtree_at(root, path)
-        root = replaced_at(root, path, with_children(parent, [*parent.children, placed]))
+        root = appended_at(root, path, [placed])
         absolute = self._object_absolute_positions[parent_name] + np.array(pos)
         self._object_absolute_positions[obj.root_body] = absolute
         self._top = max(self._top, absolute[2] + obj.top_offset[2])
@@ -210,9 +208,7 @@ class CompositeBodyObject(MujocoGeneratedObject):
         path = _body_path(root, body_name)
         if path is None:
             raise MjcfLookupError(f"Could not find body with name: {body_name}")
-        body = subtree_at(root, path)
-        joints = [rs_joint(**spec) for spec in joint_specs]
-        return replaced_at(root, path, with_children(body, [*body.children, *joints]))
+        return appended_at(root, path, [rs_joint(**spec) for spec in joint_specs])
 
     @property
     def bottom_offset(self) -> Vector:

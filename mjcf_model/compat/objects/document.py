@@ -18,12 +18,12 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable
 from typing import Any
 
-from mjcf_model.compat.objects.etree_view import EtreeView, replaced_at, subtree_at
+from mjcf_model.compat.objects.etree_view import EtreeView
 from mjcf_model.compat.objects.habits import attribute
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
 from mjcf_model.tree.queries import find
-from mjcf_model.tree.traversal import Path, with_children
+from mjcf_model.tree.traversal import Path, appended_at, replaced_at, subtree_at, with_children
 from serializers import from_etree
 
 __all__ = ["ModelBacked", "as_node"]
@@ -73,10 +73,7 @@ class ModelBacked:
         assert self._appended is not None
         place, node = self._appended
         self._appended = None
-        document, path = self._view.node, self._paths[place][:-1]
-        parent = subtree_at(document, path)
-        grown = with_children(parent, [*parent.children, node])
-        self._view.update(replaced_at(document, path, grown))
+        self._view.update(appended_at(self._view.node, self._paths[place][:-1], [node]))
 
     def _node(self, place: str) -> AnyElement:
         if self._appended is not None and self._appended[0] == place:
@@ -87,7 +84,7 @@ class ModelBacked:
         if self._appended is not None and self._appended[0] == place:
             self._appended = (place, new)
             return
-        self._set_mjcf(replaced_at(self.mjcf, self._paths[place], new))
+        self._set_mjcf(replaced_at(self.mjcf, self._paths[place], [new]))
 
     def _change(self, place: str, change: Callable[[AnyElement], AnyElement]) -> None:
         self._replace(place, change(self._node(place)))

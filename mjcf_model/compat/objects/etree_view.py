@@ -16,33 +16,12 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
+from mjcf_model.compat.mjcf_utils.etree_sync import sync_element
 from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, Node, TypedElement
-from mjcf_model.tree.traversal import Path, with_children
-from serializers import from_etree
-from serializers.writer import attribute_texts
+from mjcf_model.tree.traversal import Path
+from serializers import to_etree
 
-__all__ = ["EtreeView", "replaced_at", "subtree_at"]
-
-
-def subtree_at(node: AnyElement, path: Path) -> AnyElement:
-    """The element at ``path`` (child indexes from ``node`` down)."""
-    current = node
-    for index in path:
-        child = current.children[index]
-        assert isinstance(child, (TypedElement, GenericElement))
-        current = child
-    return current
-
-
-def replaced_at(node: AnyElement, path: Path, new: AnyElement) -> AnyElement:
-    """A copy of ``node`` with the element at ``path`` replaced by ``new``; the rest is shared."""
-    if not path:
-        return new
-    children = list(node.children)
-    child = children[path[0]]
-    assert isinstance(child, (TypedElement, GenericElement))
-    children[path[0]] = replaced_at(child, path[1:], new)
-    return with_children(node, children)
+__all__ = ["EtreeView"]
 
 
 class EtreeView:
@@ -54,13 +33,6 @@ class EtreeView:
         self._kids: dict[ET.Element, list[ET.Element]] = {}
         #: The root element, built on first use (a model changed often is converted once).
         self._element = None if element is None else self._record(node, element)
-
-    @classmethod
-    def adopt(cls, element: ET.Element) -> EtreeView:
-        """A view over an ElementTree someone else built; :meth:`update` then edits it in place."""
-        node = from_etree(element, typed=False)
-        assert isinstance(node, (TypedElement, GenericElement))
-        return cls(node, element)
 
     @property
     def node(self) -> AnyElement:
@@ -90,29 +62,11 @@ class EtreeView:
 
     # -- building -----------------------------------------------------------------
 
-    def _build(self, node: Node, parent: ET.Element | None = None) -> ET.Element:
-        """The element of ``node`` (and its subtree), appended to ``parent`` if given."""
-        if isinstance(node, GenericElement):
-            texts = node.attributes
-            attributes = {name: texts[name] for name in texts}
-        elif isinstance(node, Comment):
-            comment: ET.Element = ET.Comment(node.text)  # type: ignore[assignment]
-            if parent is not None:
-                parent.append(comment)
-            return comment
-        else:
-            assert isinstance(node, TypedElement)
-            attributes = dict(attribute_texts(node))
-        if parent is None:
-            element = ET.Element(node.tag, attributes)
-        else:
-            element = ET.SubElement(parent, node.tag, attributes)
-        if node.text is not None:
-            element.text = node.text
-        if node.children:
-            for child in node.children:
-                self._build(child, element)
-            self._kids[element] = list(element)
+    def _build(self, node: Node) -> ET.Element:
+        """The element of ``node`` and its subtree, its children recorded."""
+        element = to_etree(node)
+        if isinstance(node, (TypedElement, GenericElement)):
+            self._record(node, element)
         return element
 
     def _record(self, node: AnyElement, element: ET.Element) -> ET.Element:
@@ -132,12 +86,7 @@ class EtreeView:
     def _patch(self, old: AnyElement, new: AnyElement, element: ET.Element) -> None:
         if old is new:
             return
-        before = attribute_texts(old)
-        after = attribute_texts(new)
-        if before != after:
-            _patch_attributes(element, dict(before), after)
-        if old.text != new.text:
-            element.text = new.text
+        sync_element(element, old, new)
         if old.children is not new.children:
             self._patch_children(old, new, element)
 
@@ -186,21 +135,3 @@ def _same_tag(a: Node, b: Node) -> bool:
     assert isinstance(a, (TypedElement, GenericElement))
     assert isinstance(b, (TypedElement, GenericElement))
     return a.tag == b.tag
-
-
-def _patch_attributes(element: ET.Element, old: dict[str, str], new: list[tuple[str, str]]) -> None:
-    """Set what changed, remove what went; attributes other code added stay, at the end."""
-    new_values = dict(new)
-    for name in old:
-        if name not in new_values:
-            element.attrib.pop(name, None)
-    for name, text in new:
-        if old.get(name) != text:
-            element.set(name, text)
-    order = [name for name in element.attrib if name in new_values]
-    if order != [name for name, _ in new]:
-        foreign = {k: v for k, v in element.attrib.items() if k not in new_values}
-        mine = {name: element.attrib[name] for name, _ in new}
-        element.attrib.clear()
-        element.attrib.update(mine)
-        element.attrib.update(foreign)

@@ -15,11 +15,10 @@ from typing import Any
 import numpy as np
 
 from mjcf_model.compat.mjcf_utils.text import array_to_string, assets_root
-from mjcf_model.compat.objects.etree_view import replaced_at
 from mjcf_model.compat.objects.habits import attribute, with_texts
 from mjcf_model.compat.objects.xml import MujocoXMLObject
 from mjcf_model.errors import MjcfLookupError
-from mjcf_model.tree.traversal import walk
+from mjcf_model.tree.traversal import replaced_at, walk
 
 __all__ = [
     "BottleObject",
@@ -192,7 +191,7 @@ class DoorObject(MujocoXMLObject):
             if element.tag == "joint" and attribute(element, "name") == self.hinge_joint:
                 place = (*self._paths["worldbody"], *path)
                 changed = with_texts(element, {attribute_name: text})
-                self._set_mjcf(replaced_at(self.mjcf, place, changed))
+                self._set_mjcf(replaced_at(self.mjcf, place, [changed]))
                 return
         raise MjcfLookupError(f"no joint {self.hinge_joint!r} in {self.file}")
 

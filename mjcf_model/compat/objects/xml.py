@@ -29,7 +29,6 @@ from mjcf_model.compat.objects.base import (
 )
 from mjcf_model.compat.objects.class_face import RobosuiteCompatible
 from mjcf_model.compat.objects.document import ModelBacked
-from mjcf_model.compat.objects.etree_view import replaced_at, subtree_at
 from mjcf_model.compat.objects.habits import attribute, robosuite_scaled, rs_joint, with_texts
 from mjcf_model.compat.objects.memo import Memo
 from mjcf_model.compat.objects.naming import robosuite_prefixed
@@ -41,7 +40,14 @@ from mjcf_model.compat.objects.reading import (
 )
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
-from mjcf_model.tree.traversal import Path, walk, with_children
+from mjcf_model.tree.traversal import (
+    Path,
+    appended_at,
+    replaced_at,
+    subtree_at,
+    walk,
+    with_children,
+)
 from serializers import from_etree, to_etree
 
 __all__ = ["MujocoXML", "MujocoXMLObject"]
@@ -153,10 +159,8 @@ class MujocoXML(ModelBacked, RobosuiteCompatible):
                 place = self._paths["worldbody"]
                 if merge_body != "default":
                     place = place + self._body_path(merge_body)
-                target = subtree_at(self.mjcf, place)
                 bodies = section_children(other, "worldbody")
-                grown = with_children(target, [*target.children, *bodies])
-                self._set_mjcf(replaced_at(self.mjcf, place, grown))
+                self._set_mjcf(appended_at(self.mjcf, place, bodies))
             self.merge_assets(other)
             for section in ("actuator", "sensor", "tendon", "equality", "contact"):
                 items = section_children(other, section)
@@ -270,7 +274,7 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
         document, place = self.mjcf, self._paths["obj"]
 
         def prepared() -> AnyElement:
-            return replaced_at(document, place, self._prepared(subtree_at(document, place)))
+            return replaced_at(document, place, [self._prepared(subtree_at(document, place))])
 
         choices = (
             type(self),
