@@ -215,7 +215,7 @@ def _compared_as_is() -> frozenset[object]:
     ``float_key`` only makes NaN equal to NaN, which holding one NaN object already
     does; ``Subtree`` is how children compare, which ``Node.__eq__`` does itself.
     """
-    from mjcf_model.nodes.base import Subtree
+    from mjcf_model.nodes.comparing import Subtree
 
     return frozenset({float_key, Subtree})
 
