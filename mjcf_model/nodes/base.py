@@ -38,6 +38,7 @@ __all__ = [
     "Node",
     "TypedElement",
     "attribute_items",
+    "attribute_text",
     "build_node",
     "field_table",
     "get_attribute",
@@ -324,6 +325,19 @@ def get_attribute(element: AnyElement, name: str) -> Value | None:
         value: Value | None = getattr(element, field)
         return value
     return element.extra.get(name)
+
+
+def attribute_text(element: AnyElement, name: str) -> str | None:
+    """The text attribute ``name`` is written as, or ``None`` when not written.
+
+    Example:
+        >>> from mjcf_model import Geom
+        >>> attribute_text(Geom(group=1), "group"), attribute_text(Geom(), "group")
+        ('1', None)
+
+    """
+    value = get_attribute(element, name)
+    return None if value is None else format_value(value)
 
 
 def with_attributes(element: _E, changes: Mapping[str, Value | None]) -> _E:

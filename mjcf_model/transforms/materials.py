@@ -38,6 +38,7 @@ from mjcf_model.nodes.base import (
     get_attribute,
     with_attributes,
 )
+from mjcf_model.tree.queries import geom_role
 from mjcf_model.tree.traversal import map_tree
 from mjcf_model.values import Floats, Value, format_value, plain_value, to_floats, to_vec4
 
@@ -47,6 +48,7 @@ __all__ = [
     "CustomMaterial",
     "MaterialResult",
     "recolored_collision_geoms",
+    "with_collision_colour",
     "with_material",
 ]
 
@@ -304,11 +306,6 @@ class MaterialResult(NamedTuple, Generic[_E]):
     used: bool
 
 
-def _group_text(element: AnyElement) -> str | None:
-    group = get_attribute(element, "group")
-    return None if group is None else format_value(group)
-
-
 def with_material(
     node: _E, material: CustomMaterial | None = None, naming_prefix: str = ""
 ) -> MaterialResult[_E]:
@@ -345,8 +342,7 @@ def with_material(
         nonlocal used
         if (
             isinstance(current, (TypedElement, GenericElement))
-            and current.tag == "geom"
-            and _group_text(current) == "1"
+            and geom_role(current) == "visual"
             and get_attribute(current, "material") is None
         ):
             used = True
@@ -377,16 +373,40 @@ def recolored_collision_geoms(
         ((0.0, 0.5, 0.0, 1.0), None, True)
 
     """
-    colour = to_vec4(rgba)
+    colour: Value | None = to_vec4(rgba)
+    assert colour is not None, "to_vec4 refuses None: rgba is required"
+    return with_collision_colour(node, lambda: colour, exclude)
+
+
+def with_collision_colour(
+    node: _E, colour: Callable[[], Value], exclude: Callable[[AnyElement], Any] | None = None
+) -> _E:
+    """Paint every collision geom not excluded ``colour()`` and remove its ``material``.
+
+    Collision geoms are those :func:`~mjcf_model.tree.queries.geom_role` says so of;
+    unchanged subtrees are the input's own. ``colour`` is called once, at the first
+    such geom (never when there is none), so its value may be text or numbers, as
+    the caller writes colours.
+
+    Example:
+        >>> from mjcf_model import Body, Geom
+        >>> body = Body(children=[Geom(name="c"), Geom(name="v", group=1)])
+        >>> new = with_collision_colour(body, lambda: "1 0 0 1")
+        >>> new.geoms[0].rgba, new.geoms[1] is body.geoms[1]
+        ((1.0, 0.0, 0.0, 1.0), True)
+
+    """
+    made: list[Value] = []
 
     def visit(current: Node) -> Node:
         if (
             isinstance(current, (TypedElement, GenericElement))
-            and current.tag == "geom"
-            and _group_text(current) in (None, "0")
+            and geom_role(current) == "collision"
             and (exclude is None or not exclude(current))
         ):
-            return with_attributes(current, {"rgba": colour, "material": None})
+            if not made:
+                made.append(colour())
+            return with_attributes(current, {"rgba": made[0], "material": None})
         return current
 
     return cast(_E, map_tree(visit, node))

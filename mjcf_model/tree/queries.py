@@ -20,17 +20,27 @@ from __future__ import annotations
 
 import operator
 from collections.abc import Callable, Collection, Iterable, Iterator
+from typing import Literal
 
 import attrs
 
-from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, get_attribute
+from mjcf_model.nodes.base import (
+    AnyElement,
+    GenericElement,
+    Node,
+    TypedElement,
+    attribute_text,
+    get_attribute,
+)
 from mjcf_model.tree.traversal import walk
 from mjcf_model.values import Value, format_value, plain_value
 
 __all__ = [
     "Categories",
+    "GeomRole",
     "attribute_values",
     "categorized",
+    "geom_role",
     "find",
     "find_all",
     "parent_of",
@@ -254,14 +264,34 @@ def _category(element: AnyElement, parent: AnyElement | None) -> str | None:
         return "sites"
     if parent is not None and parent.tag == _SENSOR_SECTION:
         return "sensors"
-    if tag == "geom":
-        group = get_attribute(element, "group")
-        text = None if group is None else format_value(group)
-        if text in (None, "0"):
-            return "contact_geoms"
-        if text == "1":
-            return "visual_geoms"
-    return None
+    return _ROLE_CATEGORIES.get(geom_role(element))  # type: ignore[arg-type]
+
+
+#: A geom's role in robosuite's convention, which the library follows.
+GeomRole = Literal["collision", "visual"]
+#: The categories of the two roles.
+_ROLE_CATEGORIES = {"collision": "contact_geoms", "visual": "visual_geoms"}
+
+
+def geom_role(element: AnyElement) -> GeomRole | None:
+    """``"collision"`` for a geom in group 0 or none, ``"visual"`` in group 1, else ``None``.
+
+    robosuite's convention (MuJoCo gives groups no meaning), which recolouring,
+    materials and categories follow; the group is compared as written text, so
+    ``group="1.0"`` has no role, as in robosuite.
+
+    Example:
+        >>> from mjcf_model import Geom, Site
+        >>> geom_role(Geom()), geom_role(Geom(group=1)), geom_role(Geom(group=3)), geom_role(Site())
+        ('collision', 'visual', None, None)
+
+    """
+    if element.tag != "geom":
+        return None
+    group = attribute_text(element, "group")
+    if group is None or group == "0":
+        return "collision"
+    return "visual" if group == "1" else None
 
 
 def categorized(node: AnyElement) -> Categories:

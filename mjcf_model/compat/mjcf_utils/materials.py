@@ -27,7 +27,11 @@ from mjcf_model.compat.mjcf_utils.etree_sync import (
 from mjcf_model.compat.mjcf_utils.naming import already_prefixed
 from mjcf_model.compat.mjcf_utils.text import array_to_string, parse_numbers, xml_path_completion
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
-from mjcf_model.transforms.materials import DEFAULT_MATERIAL, with_material
+from mjcf_model.transforms.materials import (
+    DEFAULT_MATERIAL,
+    with_collision_colour,
+    with_material,
+)
 from mjcf_model.transforms.materials import CustomMaterial as FrozenMaterial
 from mjcf_model.tree.traversal import edited_at
 
@@ -194,20 +198,13 @@ def add_material(
 
 
 def recolored(node: Node, rgba: Any, exclude: Callable[[AnyElement], Any] | None = None) -> Node:
-    """``node`` with each collision geom (group ``"0"`` or none, not excluded) painted ``rgba``.
+    """``node`` with each collision geom not excluded painted ``array_to_string(rgba)``.
 
-    The colour is ``array_to_string(rgba)``, and the geom's material is removed.
+    robosuite formats the colour only when a geom takes it (and fails only then).
     """
-    text: str | None = None
-    edits: dict[tuple[int, ...], dict[str, str | None]] = {}
-    for _parent, current, path in preorder(node):
-        if not isinstance(current, (TypedElement, GenericElement)) or current.tag != "geom":
-            continue
-        if attribute(current, "group") in {None, "0"} and (exclude is None or not exclude(current)):
-            if text is None:
-                text = array_to_string(rgba)
-            edits[path] = {"rgba": text, "material": None}
-    return edited_at(node, edits)
+    if not isinstance(node, (TypedElement, GenericElement)):
+        return node
+    return with_collision_colour(node, lambda: array_to_string(rgba), exclude)
 
 
 def recolor_collision_geoms(

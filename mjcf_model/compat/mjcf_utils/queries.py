@@ -19,7 +19,7 @@ from mjcf_model.compat.mjcf_utils.etree_sync import (
     shallow_node,
 )
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
-from mjcf_model.tree.queries import find_all, parent_of
+from mjcf_model.tree.queries import find_all, geom_role, parent_of
 from mjcf_model.tree.traversal import walk
 
 __all__ = [
@@ -43,8 +43,8 @@ def _tag(node: Node | None) -> str | None:
 def filter_key(node: Node, parent: Node | None) -> str | None:
     """The category robosuite gives ``node`` under ``parent`` (``"joints"``...), or ``None``.
 
-    Any child of ``<actuator>`` (comments too) is ``"actuators"``; a geom is contact
-    (group ``"0"`` or none) or visual (``"1"``), other groups (even ``"1.0"``) have none.
+    Any child of ``<actuator>`` (comments too) is ``"actuators"``; a geom is contact or
+    visual by its :func:`~mjcf_model.tree.queries.geom_role`.
     """
     if parent is not None and _tag(parent) == "actuator":
         return "actuators"
@@ -59,9 +59,8 @@ def filter_key(node: Node, parent: Node | None) -> str | None:
     if tag in SENSOR_TYPES:
         return "sensors"
     if tag == "geom":
-        group = attribute(node, "group")
-        if group in {None, "0", "1"}:
-            return "visual_geoms" if group == "1" else "contact_geoms"
+        assert isinstance(node, (TypedElement, GenericElement))
+        return {"collision": "contact_geoms", "visual": "visual_geoms"}.get(geom_role(node) or "")
     return None
 
 
