@@ -13,21 +13,22 @@ order, ``g<i>`` geom names, inline default classes) are reproduced exactly, and
 attribute text read from files is kept as written.
 
 **Memoisation.** Objects are made again at every reset, so what depends on the
-input alone is remembered (:mod:`~mjcf_model.compat.objects.memo`): file reads,
-XML object preparation, and prefix placement and recorded names per *naming
-skeleton* (:mod:`~mjcf_model.compat.objects.naming`).
+input alone is remembered (:class:`~mjcf_model.compat.objects.document.Memo`):
+file reads, XML object preparation, and prefix placement and recorded names per
+*naming skeleton* (:mod:`~mjcf_model.compat.objects.naming`).
 
 **Live ElementTree views.** ``get_obj()``, ``asset``, ``root``... are elements
-of one view of the model (:class:`~mjcf_model.compat.objects.etree_view.EtreeView`),
+of one view of the model (:class:`~mjcf_model.compat.objects.document.EtreeView`),
 patched in place when the model changes: ``get_obj()`` is the same element on
 every call, a later ``set_pos``/``set_scale`` shows in a task that appended it,
 and an XML object's ``get_obj()`` is the element inside ``root``. Edits other
 code makes to these elements stay in them but are not read back.
 
 **isinstance.** A ``__class__`` property
-(:mod:`~mjcf_model.compat.objects.class_face`) makes instances pass
-``isinstance`` against their robosuite twins (``robosuite.models.objects.MujocoObject``...)
-without the library importing robosuite, whenever robosuite is imported.
+(:class:`~mjcf_model.compat.objects.document.RobosuiteCompatible`) makes
+instances pass ``isinstance`` against their robosuite twins
+(``robosuite.models.objects.MujocoObject``...) without the library importing
+robosuite, whenever robosuite is imported.
 
 **Deliberate differences from robosuite.** Where robosuite crashes on valid
 MJCF or builds a model MuJoCo rejects, this does the right thing:
@@ -79,12 +80,13 @@ from __future__ import annotations
 from mjcf_model.compat.objects.base import GEOM_GROUPS, GEOMTYPE2GROUP, MujocoModel, MujocoObject
 from mjcf_model.compat.objects.composite import CompositeObject
 from mjcf_model.compat.objects.composite_body import CompositeBodyObject, HingedBoxObject
-from mjcf_model.compat.objects.generated import MujocoGeneratedObject, PrimitiveObject
-from mjcf_model.compat.objects.primitives import (
+from mjcf_model.compat.objects.generated import (
     BallObject,
     BoxObject,
     CapsuleObject,
     CylinderObject,
+    MujocoGeneratedObject,
+    PrimitiveObject,
 )
 from mjcf_model.compat.objects.shipped import (
     BottleObject,
@@ -102,8 +104,7 @@ from mjcf_model.compat.objects.shipped import (
     RoundNutObject,
     SquareNutObject,
 )
-from mjcf_model.compat.objects.xml import MujocoXML, MujocoXMLObject
-from mjcf_model.compat.objects.xml_model import MujocoXMLModel
+from mjcf_model.compat.objects.xml import MujocoXML, MujocoXMLModel, MujocoXMLObject
 
 __all__ = [
     "GEOMTYPE2GROUP",

@@ -9,37 +9,36 @@
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
+from copy import deepcopy
 from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
 from mjcf_model.compat.mjcf_utils.etree_sync import write_back
-from mjcf_model.compat.objects.class_face import RobosuiteCompatible
-from mjcf_model.compat.objects.document import ModelBacked, as_node
-from mjcf_model.compat.objects.habits import attribute, robosuite_scaled
-from mjcf_model.compat.objects.naming import robosuite_prefixed, skeleton_memo
+from mjcf_model.compat.objects.document import ModelBacked, RobosuiteCompatible, as_node
+from mjcf_model.compat.objects.habits import named_specs, robosuite_scaled
+from mjcf_model.compat.objects.naming import (
+    recorded_names,
+    robosuite_prefixed,
+    skeleton_memo,
+)
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement
-from mjcf_model.tree.queries import categorized
 
 __all__ = [
     "GEOMTYPE2GROUP",
     "GEOM_GROUPS",
     "MujocoModel",
     "MujocoObject",
-    "check_obj_type",
-    "joint_specs",
-    "recorded_names",
+    "prefixed_names",
+    "unanswered",
 ]
 
 #: robosuite's geom groups kept for each ``obj_type``.
 GEOMTYPE2GROUP: dict[str, set[int]] = {"collision": {0}, "visual": {1}, "all": {0, 1}}
 #: The valid ``obj_type`` values.
 GEOM_GROUPS = GEOMTYPE2GROUP.keys()
-
-#: The name lists robosuite caches, in the order of ``sort_elements``' categories.
-_CATEGORIES = ("bodies", "joints", "actuators", "sites", "sensors", "contact_geoms", "visual_geoms")
 
 Vector = npt.NDArray[Any]
 
@@ -49,12 +48,25 @@ _EMPTY_DOCUMENT = GenericElement(
 )
 
 
-def check_obj_type(obj_type: str) -> None:
-    """Refuse an ``obj_type`` robosuite does not know (robosuite asserts)."""
-    if obj_type not in GEOM_GROUPS:
-        raise MjcfValueError(
-            f"object type must be one in {list(GEOM_GROUPS)}, got: {obj_type!r} instead."
-        )
+def unanswered(doc: str) -> property:
+    """A property subclasses must give: it raises ``NotImplementedError``."""
+
+    def get(self: object) -> Any:
+        raise NotImplementedError(f"{type(self).__name__} does not define this")
+
+    return property(get, doc=doc)
+
+
+def prefixed_names(category: str, doc: str) -> property:
+    """A property of the raw names ``self._<category>`` through ``correct_naming``."""
+
+    def get(self: MujocoModel) -> Any:
+        raw = getattr(self, f"_{category}", unanswered)
+        if raw is unanswered:
+            raise NotImplementedError(f"{type(self).__name__} does not define this")
+        return self.correct_naming(raw)
+
+    return property(get, doc=doc)
 
 
 class MujocoModel(RobosuiteCompatible):
@@ -96,39 +108,33 @@ class MujocoModel(RobosuiteCompatible):
         """Whether the name ``inp`` is kept without the prefix (subclasses decide)."""
         raise NotImplementedError
 
-    def _unanswered(self) -> Any:
-        raise NotImplementedError(f"{type(self).__name__} does not define this")
+    def _excluded(self, name: str) -> bool:
+        return bool(self.exclude_from_prefixing(name))
 
-    name = property(_unanswered, doc="Name of this model.")
-    naming_prefix = property(_unanswered, doc="Prefix of every name in this model.")
-    root_body = property(_unanswered, doc="Name of the top body.")
-    bodies = property(_unanswered, doc="Names of the bodies.")
-    joints = property(_unanswered, doc="Names of the joints.")
-    actuators = property(_unanswered, doc="Names of the actuators.")
-    sites = property(_unanswered, doc="Names of the sites.")
-    sensors = property(_unanswered, doc="Names of the sensors.")
-    contact_geoms = property(_unanswered, doc="Names of the collision geoms.")
-    visual_geoms = property(_unanswered, doc="Names of the visual geoms.")
-    important_geoms = property(_unanswered, doc="Named groups of important geoms.")
-    important_sites = property(_unanswered, doc="Named important sites.")
-    important_sensors = property(_unanswered, doc="Named important sensors.")
-    bottom_offset = property(_unanswered, doc="Vector from the root body to the bottom.")
-    top_offset = property(_unanswered, doc="Vector from the root body to the top.")
-    horizontal_radius = property(_unanswered, doc="Largest horizontal distance from the root.")
+    name = unanswered("Name of this model.")
+    naming_prefix = unanswered("Prefix of every name in this model.")
+    root_body = prefixed_names("root_body", "Name of the top body.")
+    bodies = prefixed_names("bodies", "Names of the bodies.")
+    joints = prefixed_names("joints", "Names of the joints.")
+    actuators = prefixed_names("actuators", "Names of the actuators.")
+    sites = prefixed_names("sites", "Names of the sites.")
+    sensors = prefixed_names("sensors", "Names of the sensors.")
+    contact_geoms = prefixed_names("contact_geoms", "Names of the collision geoms.")
+    visual_geoms = prefixed_names("visual_geoms", "Names of the visual geoms.")
+    important_geoms = unanswered("Named groups of important geoms.")
+    important_sites = unanswered("Named important sites.")
+    important_sensors = unanswered("Named important sensors.")
+    bottom_offset = unanswered("Vector from the root body to the bottom.")
+    top_offset = unanswered("Vector from the root body to the top.")
+    horizontal_radius = unanswered("Largest horizontal distance from the root.")
 
 
 class MujocoObject(ModelBacked, MujocoModel):
     """robosuite's ``MujocoObject``: a body with geoms, joints and a site, plus its assets.
 
     Subclasses build the body in ``_get_object_subtree`` (a node or an
-    ElementTree element), assign it to ``_obj`` and call ``_get_object_properties``.
-    Unlike robosuite, ``scale`` works: it is applied once the body exists.
-
-    Args:
-        obj_type: ``"collision"``, ``"visual"`` or ``"all"`` geoms.
-        duplicate_collision_geoms: Give each collision geom a visual copy (XML objects).
-        scale: One factor or three.
-
+    ElementTree element), assign it to ``_obj`` and call ``_get_object_properties``
+    (which applies ``scale``: one factor or three).
     """
 
     _robosuite_class = ("robosuite.models.objects", "MujocoObject")
@@ -136,14 +142,40 @@ class MujocoObject(ModelBacked, MujocoModel):
     def __init__(
         self, obj_type: str = "all", duplicate_collision_geoms: bool = True, scale: Any = None
     ) -> None:
-        check_obj_type(obj_type)
+        self._init_object(obj_type, duplicate_collision_geoms, scale)
+        self._init_document(_EMPTY_DOCUMENT, {"asset": (0,), "worldbody": (1,)})
+
+    def _init_object(self, obj_type: str, duplicate_collision_geoms: bool, scale: Any) -> None:
+        """Set the fields of an object without a body yet, as robosuite does."""
+        if obj_type not in GEOM_GROUPS:
+            raise MjcfValueError(
+                f"object type must be one in {list(GEOM_GROUPS)}, got: {obj_type!r} instead."
+            )
         self.obj_type = obj_type
         self.duplicate_collision_geoms = duplicate_collision_geoms
-        self._scale = scale
-        self._pending_scale = scale
+        self._scale = self._pending_scale = scale
         self._name: str | None = None
-        self._raw: dict[str, Any] = {"root_body": None}
-        self._init_document(_EMPTY_DOCUMENT, {"asset": (0,), "worldbody": (1,)})
+        vars(self).update(  # robosuite's raw names, read by the properties
+            _root_body=None,
+            _bodies=[],
+            _joints=[],
+            _actuators=[],
+            _sites=[],
+            _sensors=[],
+            _contact_geoms=[],
+            _visual_geoms=[],
+        )
+
+    def _named_joints(self, joints: Any, by_position: bool = True) -> list[dict[str, Any]]:
+        """``"default"`` (a free joint), ``None`` or the caller's joint dicts, named in place."""
+        default = self.get_joint_attrib_template()
+        return named_specs([] if joints is None else joints, "joint", default, by_position)
+
+    def _named_sites(self, sites: Any) -> list[dict[str, Any]]:
+        """A copy of the site dicts and the hidden ``default_site``, named (composites)."""
+        specs = deepcopy(sites) if sites is not None else []
+        specs.append(self._default_site(hidden=True))
+        return named_specs(specs, "site", by_position=False)
 
     # -- the object body ----------------------------------------------------------
 
@@ -187,28 +219,19 @@ class MujocoObject(ModelBacked, MujocoModel):
         if self._pending_scale is not None:
             self._pending_scale = None
             self.set_scale(self._scale)
-        self._record_names()
-        self._prefix_names()
-
-    def _record_names(self) -> None:
         body = self.obj_node
         memo = skeleton_memo(body)  # the names depend on the naming skeleton alone
         if memo is None:
-            self._raw = recorded_names(body)[1]
-            return
+            memo = {}
         if "recorded names" not in memo:
             memo["recorded names"] = recorded_names(body)[1]
-        self._raw = dict(memo["recorded names"])
+        vars(self).update(memo["recorded names"])
+        self._prefix_names()
 
     def _prefix_names(self) -> None:
         self._change(
             "obj", lambda body: robosuite_prefixed(body, self.naming_prefix, self._excluded)
         )
-
-    def _excluded(self, name: str) -> bool:
-        return bool(self.exclude_from_prefixing(name))
-
-    # -- scaling ------------------------------------------------------------------
 
     def set_scale(self, scale: Any, obj: ET.Element | None = None) -> None:
         """Scale the body's geoms (pos, size), inner bodies and joints (pos) and the meshes.
@@ -240,26 +263,6 @@ class MujocoObject(ModelBacked, MujocoModel):
     def naming_prefix(self) -> str:
         """``"<name>_"``."""
         return f"{self.name}_"
-
-    @property
-    def root_body(self) -> Any:
-        """The prefixed name of the object body."""
-        return self.correct_naming(self._raw["root_body"])
-
-    def _names(self, category: str) -> Any:
-        return self.correct_naming(list(self._raw.get(category, [])))
-
-    bodies = property(lambda self: self._names("bodies"), doc="Prefixed body names.")
-    joints = property(lambda self: self._names("joints"), doc="Prefixed joint names.")
-    actuators = property(lambda self: self._names("actuators"), doc="Prefixed actuator names.")
-    sites = property(lambda self: self._names("sites"), doc="Prefixed site names.")
-    sensors = property(lambda self: self._names("sensors"), doc="Prefixed sensor names.")
-    contact_geoms = property(
-        lambda self: self._names("contact_geoms"), doc="Prefixed collision geom names."
-    )
-    visual_geoms = property(
-        lambda self: self._names("visual_geoms"), doc="Prefixed visual geom names."
-    )
 
     @property
     def important_geoms(self) -> dict[str, Any]:
@@ -307,33 +310,3 @@ class MujocoObject(ModelBacked, MujocoModel):
     def get_bounding_box_size(self) -> Vector:
         """The size of a box around the object: twice :meth:`get_bounding_box_half_size`."""
         return 2.0 * np.asarray(self.get_bounding_box_half_size())
-
-
-def recorded_names(node: AnyElement) -> tuple[AnyElement, dict[str, Any]]:
-    """The root body of ``node`` (exactly one) and robosuite's raw names, by category."""
-    found = categorized(node)
-    if len(found.root_body) != 1:
-        raise MjcfValueError(
-            "Invalid number of root bodies found for robot model. Expected 1,"
-            f"got {len(found.root_body)}"
-        )
-    root = found.root_body[0]
-    names: dict[str, Any] = {"root_body": attribute(root, "name")}
-    names["bodies"] = [attribute(e, "name") for e in (root, *found.bodies)]
-    for category in _CATEGORIES[1:]:
-        names[category] = [attribute(e, "name") for e in getattr(found, category)]
-    return root, names
-
-
-def joint_specs(joints: Any, default: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    """Joint specs as robosuite's: ``"default"``, ``None`` or a list; unnamed get ``joint<i>``."""
-    if isinstance(joints, str) and joints == "default":
-        specs = default
-    elif joints is None:
-        specs = []
-    else:
-        specs = joints
-    for index, spec in enumerate(specs):
-        if "name" not in spec:
-            spec["name"] = f"joint{index}"
-    return specs

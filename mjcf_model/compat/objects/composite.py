@@ -21,21 +21,12 @@ import numpy as np
 from mjcf_model.compat.mjcf_utils.text import array_to_string
 from mjcf_model.compat.objects.base import Vector
 from mjcf_model.compat.objects.generated import MujocoGeneratedObject
-from mjcf_model.compat.objects.habits import (
-    OBJECT_COLLISION_COLOR,
-    rs_body,
-    rs_geom,
-    rs_joint,
-    rs_site,
-)
+from mjcf_model.compat.objects.habits import OBJECT_COLLISION_COLOR
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement
-from mjcf_model.tree.traversal import with_children
 
 __all__ = ["CompositeObject"]
 
-#: The body of a composite, before its children: robosuite's ``new_body(name="root")``.
-_ROOT_BODY = rs_body(name="root")
 #: robosuite's friction for composite geoms without one (a numpy array, so ``"1.0 ..."``).
 _DEFAULT_FRICTION = np.array([1.0, 0.005, 0.0001])
 
@@ -54,8 +45,7 @@ class CompositeObject(MujocoGeneratedObject):
     """robosuite's ``CompositeObject``: primitive geoms placed in a box of half-size ``total_size``.
 
     Locations are of lower corners (from the box's), or of centres with
-    ``locations_relative_to_center``. Unlike robosuite, a numpy ``density``
-    works, and whether ``solimp`` is per geom depends on ``solimp`` alone.
+    ``locations_relative_to_center``.
 
     Raises:
         MjcfValueError: a geom type other than box, ellipsoid, sphere, capsule, cylinder.
@@ -89,25 +79,19 @@ class CompositeObject(MujocoGeneratedObject):
     ) -> None:
         super().__init__(duplicate_collision_geoms=duplicate_collision_geoms)
         self._name = name
-        if isinstance(joints, str) and joints == "default":
-            self.joint_specs: list[dict[str, Any]] = [self.get_joint_attrib_template()]
-        else:
-            self.joint_specs = [] if joints is None else joints
-        _name_unnamed(self.joint_specs, "joint")
-        self.site_specs: list[dict[str, Any]] = deepcopy(sites) if sites is not None else []
-        self.site_specs.append(self._default_site(hidden=True))
-        _name_unnamed(self.site_specs, "site")
+        self.joint_specs = self._named_joints(joints, by_position=False)
+        self.site_specs = self._named_sites(sites)
         count = len(geom_types)
         self.total_size = np.array(total_size)
         self.geom_types = np.array(geom_types)
         self.geom_sizes = deepcopy(geom_sizes)
         self.geom_locations = np.array(geom_locations)
         self.geom_quats = deepcopy(geom_quats) if geom_quats is not None else [None] * count
-        self.geom_names = _listed(geom_names, count)
-        self.geom_rgbas = _listed(geom_rgbas, count)
-        self.geom_materials = _listed(geom_materials, count)
-        self.geom_frictions = _listed(geom_frictions, count)
-        self.geom_condims = _listed(geom_condims, count)
+        self.geom_names = _per_geom(geom_names, count, geom_names is None)
+        self.geom_rgbas = _per_geom(geom_rgbas, count, geom_rgbas is None)
+        self.geom_materials = _per_geom(geom_materials, count, geom_materials is None)
+        self.geom_frictions = _per_geom(geom_frictions, count, geom_frictions is None)
+        self.geom_condims = _per_geom(geom_condims, count, geom_condims is None)
         self.density = _per_geom(density, count, density is None or _is_number(density))
         self.solref = _per_geom(solref, count, solref is None or _is_number(solref[0]))
         self.solimp = _per_geom(solimp, count, solimp is None or _is_number(solimp[0]))
@@ -134,8 +118,7 @@ class CompositeObject(MujocoGeneratedObject):
         return bool(np.all(object_position > lower) and np.all(object_position < upper))
 
     def _get_object_subtree(self) -> AnyElement:
-        children: list[AnyElement] = [rs_joint(**spec) for spec in self.joint_specs]
-        children.extend(rs_site(**spec) for spec in self.site_specs)
+        geoms: list[AnyElement] = []
         rows = zip(
             self.obj_types,
             self.geom_types,
@@ -153,8 +136,8 @@ class CompositeObject(MujocoGeneratedObject):
             strict=False,
         )
         for index, row in enumerate(rows):
-            children.extend(self._geoms(index, *row))
-        return with_children(_ROOT_BODY, children)
+            geoms.extend(self._geoms(index, *row))
+        return self._root_with_specs(geoms)
 
     def _geoms(
         self,
@@ -186,30 +169,20 @@ class CompositeObject(MujocoGeneratedObject):
         }
         if quat is not None:
             base["quat"] = array_to_string(quat)
-        geoms: list[AnyElement] = []
-        if obj_type in {"collision", "all"}:
-            collision = dict(base)  # robosuite deep-copies; nothing below is changed in place
-            collision.update(self.get_collision_attrib_template())
-            if density is not None:
-                collision["density"] = str(density)
-            collision["friction"] = array_to_string(
-                friction if friction is not None else _DEFAULT_FRICTION
-            )
-            collision["solref"] = array_to_string(solref)
-            collision["solimp"] = array_to_string(solimp)
-            collision["rgba"] = OBJECT_COLLISION_COLOR
+
+        def collision() -> dict[str, Any]:
+            own = {} if density is None else {"density": str(density)}
+            own["friction"] = array_to_string(_DEFAULT_FRICTION if friction is None else friction)
+            own["solref"] = array_to_string(solref)
+            own["solimp"] = array_to_string(solimp)
+            own["rgba"] = OBJECT_COLLISION_COLOR
             if condim is not None:
-                collision["condim"] = str(condim)
-            geoms.append(rs_geom(**collision))
-        if obj_type in {"visual", "all"}:
-            visual = dict(base)
-            visual.update(self.get_visual_attrib_template())
-            visual["name"] += "_vis"
-            if material is not None:
-                visual["material"] = material
-            visual["rgba"] = rgba if rgba is not None else self.rgba
-            geoms.append(rs_geom(**visual))
-        return geoms
+                own["condim"] = str(condim)
+            return own
+
+        visual = {} if material is None else {"material": material}
+        visual["rgba"] = rgba if rgba is not None else self.rgba
+        return self._geom_pair(obj_type, base, collision, visual)
 
     @staticmethod
     def _size_to_cartesian_half_lengths(geom_type: Any, geom_size: Any) -> Any:
@@ -227,30 +200,8 @@ class CompositeObject(MujocoGeneratedObject):
             "supported: box, ellipsoid, sphere, capsule, cylinder"
         )
 
-    @property
-    def bottom_offset(self) -> Vector:
-        """``[0, 0, -total_size z]``."""
-        return np.array([0.0, 0.0, -self.total_size[2]])
-
-    @property
-    def top_offset(self) -> Vector:
-        """``[0, 0, total_size z]``."""
-        return np.array([0.0, 0.0, self.total_size[2]])
-
-    @property
-    def horizontal_radius(self) -> Any:
-        """The length of ``total_size``'s x and y."""
-        return np.linalg.norm(self.total_size[:2], 2)
-
-
-def _listed(values: Any, count: int) -> list[Any]:
-    return list(values) if values is not None else [None] * count
-
-
-def _name_unnamed(specs: list[dict[str, Any]], stem: str) -> None:
-    """Name the unnamed specs ``<stem><k>``, counting only those (robosuite's composite rule)."""
-    number = 0
-    for spec in specs:
-        if "name" not in spec:
-            spec["name"] = f"{stem}{number}"
-            number += 1
+    bottom_offset = property(lambda self: np.array([0.0, 0.0, -self.total_size[2]]), doc="Below.")
+    top_offset = property(lambda self: np.array([0.0, 0.0, self.total_size[2]]), doc="Above.")
+    horizontal_radius = property(
+        lambda self: np.linalg.norm(self.total_size[:2], 2), doc="Length of total_size's x, y."
+    )

@@ -21,66 +21,44 @@ import numpy as np
 from mjcf_model.compat.mjcf_utils.constants import BLUE, RED
 from mjcf_model.compat.mjcf_utils.text import array_to_string
 from mjcf_model.compat.objects.base import MujocoObject, Vector
-from mjcf_model.compat.objects.composite import _name_unnamed as name_unnamed
-from mjcf_model.compat.objects.document import as_node
-from mjcf_model.compat.objects.generated import MujocoGeneratedObject
-from mjcf_model.compat.objects.habits import attribute, rs_body, rs_joint, rs_site, with_texts
+from mjcf_model.compat.objects.document import as_node, find_path, is_element
+from mjcf_model.compat.objects.generated import BoxObject, CylinderObject, MujocoGeneratedObject
+from mjcf_model.compat.objects.habits import named_specs, rs_joint
 from mjcf_model.compat.objects.naming import robosuite_prefixed
-from mjcf_model.compat.objects.primitives import BoxObject, CylinderObject
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
+from mjcf_model.nodes.base import AnyElement
 from mjcf_model.transforms.materials import CustomMaterial
-from mjcf_model.tree.traversal import Path, appended_at, walk, with_children
+from mjcf_model.transforms.naming.repeated import with_texts
+from mjcf_model.tree.traversal import appended_at, with_children
 
 __all__ = ["CompositeBodyObject", "HingedBoxObject"]
 
 
-def _body_path(tree: AnyElement, name: str) -> Path | None:
-    """The path of the first body named ``name``, parents first (robosuite's ``find_elements``)."""
-    for path, element in walk(tree):
-        if element.tag == "body" and attribute(element, "name") == name:
-            return path
-    return None
-
-
 def _without_joints(body: AnyElement) -> AnyElement:
     """``body`` without its direct ``<joint>`` children (inner bodies keep theirs)."""
-    kept = [
-        c
-        for c in body.children
-        if not (isinstance(c, (TypedElement, GenericElement)) and c.tag == "joint")
-    ]
-    return with_children(body, kept)
+    return with_children(body, [c for c in body.children if not is_element(c, "joint")])
 
 
 class CompositeBodyObject(MujocoGeneratedObject):
     """robosuite's ``CompositeBodyObject``: other objects' bodies under one ``root`` body.
 
-    Children may be robosuite's objects too. Unlike robosuite, they are left as
-    they were (robosuite strips, moves and renames their elements in place).
-
     Args:
         name: Name of the object.
-        objects: One object or a list (tuple) of them, in order (a parent
-            before its children); their direct joints are dropped.
+        objects: One object or a list (tuple), a parent before its children (ours or
+            robosuite's; their direct joints are dropped).
         object_locations: Each child's position in its parent (``None``: the origin).
         object_quats: Each child's quaternion, ``w x y z`` (``None``: identity).
-        object_parents: The body each child goes into (``None``: ``"root"``),
-            by its unprefixed name (an earlier child's ``root_body``).
-        joints: ``"default"`` (a free joint), ``None`` or joint attribute dicts
-            for the root body (unnamed: ``joint<k>``, counting the unnamed).
-        body_joints: Body name to ``"default"`` or joint attribute dicts
-            (unnamed: ``<body>_joint<i>``, written into the caller's dicts).
-        sites: Site attribute dicts for the root body (unnamed: ``site<k>``).
+        object_parents: Each child's parent: an earlier child's unprefixed
+            ``root_body`` (``None``: ``"root"``).
+        joints: ``"default"`` (a free joint), ``None`` or joint dicts for ``root``.
+        body_joints: Body name to ``"default"`` or joint dicts.
+        sites: Site dicts for ``root``.
         total_size: Half-size of the bounding box, if known.
-        locations_relative_to_corner: Locations are of lower corners, from the
-            ``total_size`` box's.
+        locations_relative_to_corner: Locations are of lower corners (needs ``total_size``).
 
     Raises:
-        MjcfValueError: ``objects`` is not an object or a list, or
-            ``locations_relative_to_corner`` without ``total_size``.
-        MjcfLookupError: a parent or ``body_joints`` body does not exist, or a
-            parent is not an earlier child's root body.
+        MjcfValueError: ``objects`` is neither an object nor a list.
+        MjcfLookupError: a parent or ``body_joints`` body does not exist.
 
     """
 
@@ -117,15 +95,9 @@ class CompositeBodyObject(MujocoGeneratedObject):
         self.object_parents = (
             deepcopy(object_parents) if object_parents is not None else ["root"] * count
         )
-        if isinstance(joints, str) and joints == "default":
-            self.joint_specs: list[dict[str, Any]] = [self.get_joint_attrib_template()]
-        else:
-            self.joint_specs = [] if joints is None else joints
+        self.joint_specs = self._named_joints(joints, by_position=False)
         self.body_joint_specs: dict[Any, Any] = {} if body_joints is None else body_joints
-        name_unnamed(self.joint_specs, "joint")
-        self.site_specs: list[dict[str, Any]] = deepcopy(sites) if sites is not None else []
-        self.site_specs.append(self._default_site(hidden=True))
-        name_unnamed(self.site_specs, "site")
+        self.site_specs = self._named_sites(sites)
         self.total_size = np.array(total_size) if total_size is not None else None
         self.locations_relative_to_corner = locations_relative_to_corner
         if self.locations_relative_to_corner and self.total_size is None:
@@ -135,9 +107,7 @@ class CompositeBodyObject(MujocoGeneratedObject):
         self._get_object_properties()
 
     def _get_object_subtree(self) -> AnyElement:
-        children: list[AnyElement] = [rs_joint(**spec) for spec in self.joint_specs]
-        children.extend(rs_site(**spec) for spec in self.site_specs)
-        tree: AnyElement = with_children(rs_body(name="root"), children)
+        tree = self._root_with_specs()
         rows = zip(
             self.objects,
             self.object_parents,
@@ -170,7 +140,7 @@ class CompositeBodyObject(MujocoGeneratedObject):
         parent_name = "root" if parent_name is None else parent_name
         pos = np.zeros(3) if pos is None else pos
         quat = np.array([1, 0, 0, 0]) if quat is None else quat
-        path = _body_path(root, parent_name)
+        path = find_path(root, "body", name=parent_name)
         if path is None:
             raise MjcfLookupError(f"Could not find parent body with name: {parent_name}")
         if parent_name not in self._object_absolute_positions:
@@ -200,30 +170,18 @@ class CompositeBodyObject(MujocoGeneratedObject):
     ) -> AnyElement:
         """``root`` with joints added to the body ``body_name`` (``"default"``: a free joint)."""
         body_name = "root" if body_name is None else body_name
-        if isinstance(joint_specs, str) and joint_specs == "default":
-            joint_specs = [self.get_joint_attrib_template()]
-        for index, spec in enumerate(joint_specs):
-            if "name" not in spec:
-                spec["name"] = f"{body_name}_joint{index}"
-        path = _body_path(root, body_name)
+        default = self.get_joint_attrib_template()
+        joint_specs = named_specs(joint_specs, f"{body_name}_joint", default)
+        path = find_path(root, "body", name=body_name)
         if path is None:
             raise MjcfLookupError(f"Could not find body with name: {body_name}")
         return appended_at(root, path, [rs_joint(**spec) for spec in joint_specs])
 
-    @property
-    def bottom_offset(self) -> Vector:
-        """``[0, 0, lowest child bottom]`` (at most 0)."""
-        return np.array([0.0, 0.0, self._bottom])
-
-    @property
-    def top_offset(self) -> Vector:
-        """``[0, 0, highest child top]`` (at least 0)."""
-        return np.array([0.0, 0.0, self._top])
-
-    @property
-    def horizontal_radius(self) -> Any:
-        """The largest ``max(x, y) + radius`` of the children (robosuite's quirk: not a norm)."""
-        return self._horizontal
+    bottom_offset = property(lambda self: np.array([0.0, 0.0, self._bottom]), doc="Lowest bottom.")
+    top_offset = property(lambda self: np.array([0.0, 0.0, self._top]), doc="Highest top.")
+    horizontal_radius = property(
+        lambda self: self._horizontal, doc="Largest ``max(x, y) + radius`` of the children."
+    )
 
     def get_bounding_box_half_size(self) -> Vector:
         """``total_size`` if given, else ``[r, r, 0]`` minus the bottom offset."""
@@ -238,10 +196,8 @@ class HingedBoxObject(CompositeBodyObject):
     Args:
         name: Name of the object.
         box1_size: Half-sizes of the lower box.
-        box2_size: Half-sizes of the upper box (the lid).
+        box2_size: Half-sizes of the upper box (the lid, ``box2_main``, hinged by ``box_hinge``).
         use_texture: Red and blue wood materials; otherwise red and blue colours.
-
-    A visual cylinder ``hinge`` marks the hinge joint ``box_hinge`` of ``box2_main``.
 
     """
 
@@ -254,49 +210,32 @@ class HingedBoxObject(CompositeBodyObject):
         box2_size: Any = (0.025, 0.025, 0.0125),
         use_texture: bool = True,
     ) -> None:
-        self.box1_size = np.array(box1_size)
-        self.box2_size = np.array(box2_size)
+        low = self.box1_size = np.array(box1_size)
+        lid = self.box2_size = np.array(box2_size)
         self.use_texture = use_texture
         self.box1_material: CustomMaterial | None = None
         self.box2_material: CustomMaterial | None = None
-        self.box1_rgba: Any = RED
-        self.box2_rgba: Any = BLUE
-        if self.use_texture:
-            self.box1_rgba = None
-            self.box2_rgba = None
-            tex_attrib = {"type": "cube"}
+        self.box1_rgba: Any = None if use_texture else RED
+        self.box2_rgba: Any = None if use_texture else BLUE
+        if use_texture:
             mat_attrib = {"texrepeat": "3 3", "specular": "0.4", "shininess": "0.1"}
             self.box1_material, self.box2_material = (
                 CustomMaterial(
                     texture=texture,
                     tex_name=f"{box}_tex",
                     mat_name=f"{box}_mat",
-                    tex_attrib=tex_attrib,
+                    tex_attrib={"type": "cube"},
                     mat_attrib=mat_attrib,
                 )
                 for box, texture in (("box1", "WoodRed"), ("box2", "WoodBlue"))
             )
+        hinge_size = np.array([min(low[2], lid[2]) / 5.0, min(low[0], lid[0])])
         objects: list[MujocoObject] = [
-            BoxObject(name=f"box{i + 1}", size=size, rgba=rgba, material=material)
-            for i, (size, material, rgba) in enumerate(
-                zip(
-                    (self.box1_size, self.box2_size),
-                    (self.box1_material, self.box2_material),
-                    (self.box1_rgba, self.box2_rgba),
-                    strict=True,
-                )
-            )
+            BoxObject("box1", size=low, rgba=self.box1_rgba, material=self.box1_material),
+            BoxObject("box2", size=lid, rgba=self.box2_rgba, material=self.box2_material),
+            CylinderObject("hinge", size=hinge_size, rgba=[0.5, 0.5, 0, 1], obj_type="visual"),
         ]
-        hinge_size = np.array(
-            [
-                min(self.box1_size[2], self.box2_size[2]) / 5.0,
-                min(self.box1_size[0], self.box2_size[0]),
-            ]
-        )
-        objects.append(
-            CylinderObject(name="hinge", size=hinge_size, rgba=[0.5, 0.5, 0, 1], obj_type="visual")
-        )
-        rel_hinge_pos = [self.box2_size[0], 0, -self.box2_size[2]]
+        rel_hinge_pos = [lid[0], 0, -lid[2]]
         hinge_joint = {
             "name": "box_hinge",
             "type": "hinge",
@@ -306,11 +245,7 @@ class HingedBoxObject(CompositeBodyObject):
             "limited": "true",
             "range": "0 1.57",
         }
-        lid_pos = [
-            -(self.box2_size[0] - self.box1_size[0]),
-            0,
-            self.box1_size[2] + self.box2_size[2],
-        ]
+        lid_pos = [-(lid[0] - low[0]), 0, low[2] + lid[2]]
         super().__init__(
             name=name,
             objects=objects,

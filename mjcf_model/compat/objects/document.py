@@ -1,43 +1,308 @@
-"""The state of every compat object: an immutable document, named places in it, its ElementTree.
+"""The state of every compat object: an immutable document, its live ElementTree, robosuite's face.
 
+* :class:`Memo`: the last results computed from the same input (by value or a node's identity).
+* :class:`RobosuiteCompatible`: ``isinstance`` falls back on ``obj.__class__``, here a cached
+  *face* class joining the object's class to its robosuite twin once robosuite's module is in
+  ``sys.modules`` (robosuite is never imported).
+* :class:`EtreeView`: an ElementTree built on first read, then patched in place where a new
+  model differs (subtrees shared by identity are skipped): elements handed out stay live, and
+  others' edits stay unless the model changes them.
+* :class:`ModelBacked`: an immutable document, named places (paths) in it, and its view.
+
+>>> import xml.etree.ElementTree as ET
 >>> from mjcf_model import GenericElement
->>> class Doc(ModelBacked):
-...     pass
->>> doc = Doc()
+>>> class Mine(ModelBacked, RobosuiteCompatible):
+...     _robosuite_class = ("xml.etree.ElementTree", "TreeBuilder")
+>>> doc = Mine()
+>>> isinstance(doc, ET.TreeBuilder), type(doc) is Mine
+(True, True)
 >>> doc._init_document(GenericElement(tag="mujoco", children=[GenericElement(tag="asset")]),
 ...                    {"asset": (0,)})
 >>> live = doc.asset
 >>> doc._change("asset", lambda a: with_children(a, [GenericElement(tag="mesh")]))
 >>> doc.asset is live, [child.tag for child in live]
 (True, ['mesh'])
+>>> memo = Memo(2)
+>>> memo.get("a", lambda: [1]) is memo.get("a", lambda: [2])
+True
 """
 
 from __future__ import annotations
 
+import sys
 import xml.etree.ElementTree as ET
-from collections.abc import Callable
-from typing import Any
+from collections.abc import Callable, Hashable
+from typing import Any, ClassVar, Generic, TypeGuard, TypeVar
 
-from mjcf_model.compat.objects.etree_view import EtreeView
-from mjcf_model.compat.objects.habits import attribute
+from mjcf_model.compat.mjcf_utils.etree_sync import attribute, sync_element
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
+from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, Node, TypedElement
 from mjcf_model.tree.queries import find
-from mjcf_model.tree.traversal import Path, appended_at, replaced_at, subtree_at, with_children
-from serializers import from_etree
+from mjcf_model.tree.traversal import (
+    Path,
+    appended_at,
+    replaced_at,
+    subtree_at,
+    walk,
+    with_children,
+)
+from serializers import from_etree, to_etree
 
-__all__ = ["ModelBacked", "as_node"]
+__all__ = [
+    "EtreeView",
+    "Memo",
+    "ModelBacked",
+    "RobosuiteCompatible",
+    "as_node",
+    "find_path",
+    "is_element",
+    "section_children",
+]
+
+_V = TypeVar("_V")
+
+
+class Memo(Generic[_V]):
+    """The last ``size`` results, by key; the oldest goes first."""
+
+    def __init__(self, size: int) -> None:
+        self._size = size
+        self._kept: dict[Hashable, _V] = {}
+        #: The inputs of :meth:`of`, kept alive so that their identity stays theirs.
+        self._inputs: dict[Hashable, object] = {}
+
+    def get(self, key: Hashable, make: Callable[[], _V]) -> _V:
+        """The result kept for ``key``, or ``make()`` (then kept)."""
+        if key in self._kept:
+            return self._kept[key]
+        if len(self._kept) >= self._size:
+            oldest = next(iter(self._kept))
+            del self._kept[oldest]
+            self._inputs.pop(oldest, None)
+        result = self._kept[key] = make()
+        return result
+
+    def of(self, node: object, make: Callable[[], _V], *also: Hashable) -> _V:
+        """The result kept for this very ``node`` (by identity) and ``also``, or ``make()``."""
+        key = (id(node), *also)
+        if self._inputs.get(key) is not node:
+            self._kept.pop(key, None)
+        result = self.get(key, make)
+        self._inputs[key] = node
+        return result
+
+
+# -- robosuite's isinstance ---------------------------------------------------------
+
+_FACES: dict[tuple[type, type], type] = {}
+
+
+def robosuite_face(cls: type) -> type:
+    """``cls`` joined to the robosuite twin its MRO names, once imported; else ``cls`` itself."""
+    for klass in cls.__mro__:
+        home = vars(klass).get("_robosuite_class")
+        if not home:
+            continue
+        module = sys.modules.get(home[0])
+        theirs = getattr(module, home[1], None) if module is not None else None
+        if not isinstance(theirs, type):
+            continue
+        face = _FACES.get((cls, theirs))
+        if face is None:
+            namespace = {
+                "__module__": cls.__module__,
+                "__qualname__": cls.__qualname__,
+                "__doc__": cls.__doc__,
+            }
+            face = _FACES[cls, theirs] = type(cls.__name__, (cls, theirs), namespace)
+        return face
+    return cls
+
+
+def _restore(cls: type[RobosuiteCompatible]) -> RobosuiteCompatible:
+    """Unpickling: a bare instance of ``cls`` whose state pickle then fills in."""
+    return object.__new__(cls)
+
+
+class RobosuiteCompatible:
+    """Base of the object classes: instances pass ``isinstance`` against robosuite's twins."""
+
+    #: robosuite's twin of this class: (module, class name).
+    _robosuite_class: ClassVar[tuple[str, str] | None] = None
+
+    @property
+    def __class__(self) -> type:
+        """The class ``isinstance`` falls back on: :func:`robosuite_face`."""
+        return robosuite_face(type(self))
+
+    @__class__.setter
+    def __class__(self, value: type) -> None:
+        object.__dict__["__class__"].__set__(self, value)
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickle by ``type(self)`` (pickle checks ``__class__`` against the type otherwise)."""
+        return (_restore, (type(self),), self.__dict__)
+
+
+# -- nodes and paths ----------------------------------------------------------------
+
+
+def is_element(node: object, tag: str | None = None) -> TypeGuard[AnyElement]:
+    """Whether ``node`` is an element (not a comment), with the tag ``tag`` if given."""
+    return isinstance(node, (TypedElement, GenericElement)) and tag in (None, node.tag)
 
 
 def as_node(value: object) -> AnyElement:
     """A node from a node or an ElementTree element (as robosuite subclasses hand them over)."""
-    if isinstance(value, (TypedElement, GenericElement)):
+    if is_element(value):
         return value
     if isinstance(value, ET.Element):
         node = from_etree(value, typed=False)
-        assert isinstance(node, (TypedElement, GenericElement))
+        assert is_element(node)
         return node
     raise MjcfValueError(f"expected a node or an ElementTree element, found {value!r}")
+
+
+def find_path(
+    node: AnyElement, tag: str, inside: str | None = None, **attributes: str | None
+) -> Path | None:
+    """The path of the first ``tag`` element with these attribute texts, parents first.
+
+    With ``inside``, only the children of ``node``'s ``inside`` children are candidates.
+    """
+
+    def matches(element: AnyElement) -> bool:
+        return element.tag == tag and all(attribute(element, k) == v for k, v in attributes.items())
+
+    if inside is None:
+        return next((path for path, element in walk(node) if matches(element)), None)
+    for i, outer in enumerate(node.children):
+        if is_element(outer, inside):
+            for j, element in enumerate(outer.children):
+                if is_element(element) and matches(element):
+                    return (i, j)
+    return None
+
+
+def section_children(model: Any, section: str) -> list[AnyElement]:
+    """The elements of the section of ``model`` (ours or robosuite's), as nodes."""
+    if isinstance(model, ModelBacked) and section in model._paths:
+        return list(model._node(section).elements)
+    return [as_node(child) for child in getattr(model, section)]
+
+
+# -- the live ElementTree -----------------------------------------------------------
+
+
+class EtreeView:
+    """One ElementTree kept in step with a replaced model (``element``: one already showing it)."""
+
+    def __init__(self, node: AnyElement, element: ET.Element | None = None) -> None:
+        self._node = node
+        #: The elements built for each element's children, in model order.
+        self._kids: dict[ET.Element, list[ET.Element]] = {}
+        #: The root element, built on first use (a model changed often is converted once).
+        self._element = None if element is None else self._record(node, element)
+
+    @property
+    def node(self) -> AnyElement:
+        """The model the ElementTree currently shows."""
+        return self._node
+
+    @property
+    def element(self) -> ET.Element:
+        """The root ElementTree element (the same object for the view's whole life)."""
+        if self._element is None:
+            self._element = self._build(self._node)
+        return self._element
+
+    def at(self, path: Path) -> ET.Element:
+        """The element built for the model element at ``path``."""
+        element = self.element
+        for index in path:
+            element = self._kids[element][index]
+        return element
+
+    def update(self, node: AnyElement) -> None:
+        """Make the ElementTree show ``node``, editing the existing elements in place."""
+        if node is not self._node:
+            if self._element is not None:
+                self._patch(self._node, node, self._element)
+            self._node = node
+
+    def _build(self, node: Node) -> ET.Element:
+        """The element of ``node`` and its subtree, its children recorded."""
+        element = to_etree(node)
+        if is_element(node):
+            self._record(node, element)
+        return element
+
+    def _record(self, node: AnyElement, element: ET.Element) -> ET.Element:
+        kids = list(element)
+        self._kids[element] = kids
+        for child, kid in zip(node.children, kids, strict=True):
+            if is_element(child):
+                self._record(child, kid)
+        return element
+
+    def _forget(self, element: ET.Element) -> None:
+        for kid in self._kids.pop(element, []):
+            self._forget(kid)
+
+    def _patch(self, old: AnyElement, new: AnyElement, element: ET.Element) -> None:
+        if old is new:
+            return
+        sync_element(element, old, new)
+        if old.children is not new.children:
+            self._patch_children(old, new, element)
+
+    def _patch_children(self, old: AnyElement, new: AnyElement, element: ET.Element) -> None:
+        kids = self._kids.get(element, [])
+        pairs = list(zip(old.children, new.children, strict=False))
+        if len(old.children) == len(new.children) and all(
+            _same_tag(a, b) for a, b in pairs
+        ):  # the same elements, some of them changed
+            for (a, b), kid in zip(pairs, kids, strict=True):
+                if a is not b and is_element(a):
+                    assert is_element(b)
+                    self._patch(a, b, kid)
+            return
+        # Elements came or went: keep the elements of unchanged children, build the others.
+        by_identity = {id(child): index for index, child in enumerate(old.children)}
+        used: set[int] = set()
+        new_kids: list[ET.Element] = []
+        for child in new.children:
+            index = by_identity.get(id(child))
+            if index is not None and index not in used:
+                used.add(index)
+                new_kids.append(kids[index])
+            else:
+                new_kids.append(self._build(child))
+        dropped = [kid for index, kid in enumerate(kids) if index not in used]
+        live = list(element)
+        if len(live) == len(kids) and all(a is b for a, b in zip(live, kids, strict=True)):
+            element[:] = new_kids
+        else:  # someone else edited the children: keep their edits, apply ours
+            kept = {id(kid) for kid in kids}
+            for kid in dropped:
+                if any(kid is e for e in live):
+                    element.remove(kid)
+            for kid in new_kids:
+                if id(kid) not in kept:
+                    element.append(kid)
+        for kid in dropped:
+            self._forget(kid)
+        self._kids[element] = new_kids
+
+
+def _same_tag(a: Node, b: Node) -> bool:
+    if isinstance(a, Comment) or isinstance(b, Comment):
+        return isinstance(a, Comment) and isinstance(b, Comment)
+    assert is_element(a) and is_element(b)
+    return a.tag == b.tag
+
+
+# -- the document -------------------------------------------------------------------
 
 
 class ModelBacked:
@@ -105,13 +370,9 @@ class ModelBacked:
 
         Unlike robosuite, the assets are copied, not shared between both trees.
         """
-        if isinstance(other, ModelBacked):
-            theirs = list(other._node("asset").elements)
-        else:
-            theirs = [as_node(child) for child in other.asset]
         mine = self._node("asset")
         added: list[AnyElement] = []
-        for item in theirs:
+        for item in section_children(other, "asset"):
             name = attribute(item, "name")
             if find(mine, item.tag, name=name) is None and all(
                 find(a, item.tag, name=name) is None for a in added

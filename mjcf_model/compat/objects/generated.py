@@ -1,20 +1,27 @@
-"""``MujocoGeneratedObject`` and ``PrimitiveObject``: objects built in code, as robosuite does.
+"""Objects built in code, as robosuite does: ``MujocoGeneratedObject`` and the primitives.
 
 Materials may be this library's :class:`~mjcf_model.CustomMaterial` or robosuite's own.
+Drawn sizes use the compatible ``get_size``, so a seeded generator gives robosuite's sizes.
 
 >>> ball = PrimitiveObject("ball", size=[0.03], material="default")
 >>> [child.get("name") for child in ball.asset]
 ['ball_tex', 'ball_mat']
+>>> box = BoxObject("cube", size_min=[0.02] * 3, size_max=[0.022] * 3, rng=np.random.default_rng(0))
+>>> box.get_obj()[0].get("size")
+'0.021273923374642907 0.02053957342752774 0.02008194704787239'
+>>> float(box.horizontal_radius), box.bottom_offset.tolist()
+(0.029571166570410805, [0.0, 0.0, -0.02008194704787239])
 """
 
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Callable, Iterable
+from typing import Any, ClassVar
 
 import numpy as np
 
-from mjcf_model.compat.mjcf_utils.text import array_to_string
-from mjcf_model.compat.objects.base import MujocoObject, Vector, joint_specs
+from mjcf_model.compat.mjcf_utils.text import array_to_string, get_size
+from mjcf_model.compat.objects.base import MujocoObject, Vector
 from mjcf_model.compat.objects.habits import (
     OBJECT_COLLISION_COLOR,
     rs_body,
@@ -29,10 +36,17 @@ from mjcf_model.nodes.base import AnyElement, GenericElement
 from mjcf_model.transforms.materials import CustomMaterial
 from mjcf_model.tree.traversal import with_children
 
-__all__ = ["MujocoGeneratedObject", "PrimitiveObject"]
+__all__ = [
+    "BallObject",
+    "BoxObject",
+    "CapsuleObject",
+    "CylinderObject",
+    "MujocoGeneratedObject",
+    "PrimitiveObject",
+]
 
-#: The body of a primitive, before its children: robosuite's ``new_body(name="main")``.
-_MAIN_BODY = rs_body(name="main")
+#: The bodies of a primitive and of a composite before their children (robosuite's ``new_body``).
+_MAIN_BODY, _ROOT_BODY = rs_body(name="main"), rs_body(name="root")
 
 
 def material_parts(material: Any) -> tuple[str, str, bool, AnyElement, AnyElement]:
@@ -49,15 +63,11 @@ def material_parts(material: Any) -> tuple[str, str, bool, AnyElement, AnyElemen
 
 
 class MujocoGeneratedObject(MujocoObject):
-    """robosuite's ``MujocoGeneratedObject``: shared materials, geom templates, materials.
-
-    Args:
-        obj_type: ``"collision"``, ``"visual"`` or ``"all"`` geoms.
-        duplicate_collision_geoms: Kept for robosuite's signature.
-
-    """
+    """robosuite's ``MujocoGeneratedObject``: geom templates and (shared) materials."""
 
     _robosuite_class = ("robosuite.models.objects", "MujocoGeneratedObject")
+    joint_specs: list[dict[str, Any]]
+    site_specs: list[dict[str, Any]]
 
     def __init__(self, obj_type: str = "all", duplicate_collision_geoms: bool = True) -> None:
         super().__init__(obj_type=obj_type, duplicate_collision_geoms=duplicate_collision_geoms)
@@ -76,6 +86,33 @@ class MujocoGeneratedObject(MujocoObject):
     def get_visual_attrib_template() -> dict[str, str]:
         """Attributes of a visual geom: no contacts, no mass, group 1."""
         return {"conaffinity": "0", "contype": "0", "mass": "1e-8", "group": "1"}
+
+    def _geom_pair(
+        self,
+        obj_type: Any,
+        base: dict[str, Any],
+        collision: Callable[[], dict[str, Any]],
+        visual: dict[str, Any],
+    ) -> list[AnyElement]:
+        """The collision geom and visual geom ``<name>_vis`` that ``obj_type`` asks for.
+
+        Each is ``base``, its template, then its own attributes (``collision()``, called
+        only when that geom is made), in robosuite's order.
+        """
+        geoms: list[AnyElement] = []
+        if obj_type in {"collision", "all"}:
+            template = self.get_collision_attrib_template()
+            geoms.append(rs_geom(**{**base, **template, **collision()}))
+        if obj_type in {"visual", "all"}:
+            template = self.get_visual_attrib_template()
+            geoms.append(rs_geom(**{**base, **template, **visual, "name": base["name"] + "_vis"}))
+        return geoms
+
+    def _root_with_specs(self, more: Iterable[AnyElement] = ()) -> AnyElement:
+        """A composite's ``root`` body: the joints and the sites of the specs, then ``more``."""
+        children: list[AnyElement] = [rs_joint(**spec) for spec in self.joint_specs]
+        children.extend(rs_site(**spec) for spec in self.site_specs)
+        return with_children(_ROOT_BODY, [*children, *more])
 
     def append_material(self, material: Any) -> None:
         """Add a material and its texture to the assets, then prefix the asset names.
@@ -107,22 +144,9 @@ class MujocoGeneratedObject(MujocoObject):
 class PrimitiveObject(MujocoGeneratedObject):
     """robosuite's ``PrimitiveObject``: one geom (collision and/or visual), joints and a site.
 
-    Unlike robosuite, ``material="default"`` uses MuJoCo's built-in flat texture
-    (named ``<name>_tex``), not a PNG file.
-
-    Args:
-        name: Name of the object.
-        size: Geom size (default ``[0.05] * 3``).
-        rgba: Colour of the visual geom (default red).
-        density: Density (default 1000).
-        friction: Three numbers, or one (sliding; torsion and rolling stay MuJoCo's).
-        solref: Contact solver reference (default ``[0.02, 1.0]``).
-        solimp: Contact solver impedance (default ``[0.9, 0.95, 0.001]``).
-        material: ``None``, ``"default"`` (a material of the colour ``rgba``)
-            or a material (this library's ``CustomMaterial`` or robosuite's).
-        joints: ``"default"`` (a free joint), ``None``, or joint attribute dicts.
-        obj_type: ``"collision"``, ``"visual"`` or ``"all"``.
-        duplicate_collision_geoms: Ignored, as in robosuite.
+    The defaults are robosuite's (``size`` ``[0.05] * 3``, red, ``density`` 1000...);
+    ``friction`` may be one number (the sliding one). ``material``: ``None``,
+    ``"default"`` (a flat material of ``rgba``) or a material (ours or robosuite's).
 
     Raises:
         MjcfValueError: ``rgba``, ``friction`` or the size has the wrong length.
@@ -170,7 +194,7 @@ class PrimitiveObject(MujocoGeneratedObject):
             self.append_material(CustomMaterial(texture=self.rgba, tex_name="tex", mat_name="mat"))
         elif material is not None:
             self.append_material(material)
-        self.joint_specs = joint_specs(joints, [self.get_joint_attrib_template()])
+        self.joint_specs = self._named_joints(joints)
         self.sanity_check()
         self._obj = self._get_object_subtree()
         self._get_object_properties()
@@ -180,28 +204,169 @@ class PrimitiveObject(MujocoGeneratedObject):
 
     def _get_object_subtree_(self, ob_type: str = "box") -> AnyElement:
         """The body: collision geom ``g0``, visual geom ``g0_vis``, joints, ``default_site``."""
-        children: list[AnyElement] = []
         base = {"name": "g0", "type": ob_type, "size": array_to_string(self.size)}
-        if self.obj_type in {"collision", "all"}:
-            collision: dict[str, Any] = dict(base)  # robosuite deep-copies: all text
-            collision.update(self.get_collision_attrib_template())
-            collision["density"] = str(self.density)
-            collision["friction"] = array_to_string(self.friction)
-            collision["solref"] = array_to_string(self.solref)
-            collision["solimp"] = array_to_string(self.solimp)
-            children.append(rs_geom(**collision))
-        if self.obj_type in {"visual", "all"}:
-            visual: dict[str, Any] = dict(base)
-            visual.update(self.get_visual_attrib_template())
-            visual["name"] += "_vis"
-            if isinstance(self.material, str) and self.material == "default":
-                visual["rgba"] = "0.5 0.5 0.5 1"
-                visual["material"] = "mat"
-            elif self.material is not None:
-                visual["material"] = material_parts(self.material)[0]
-            else:
-                visual["rgba"] = array_to_string(self.rgba)
-            children.append(rs_geom(**visual))
+        if isinstance(self.material, str) and self.material == "default":
+            visual = {"rgba": "0.5 0.5 0.5 1", "material": "mat"}
+        elif self.material is not None:
+            visual = {"material": material_parts(self.material)[0]}
+        else:
+            visual = {"rgba": array_to_string(self.rgba)}
+        collision = {"density": str(self.density), "friction": array_to_string(self.friction)}
+        children = self._geom_pair(
+            self.obj_type,
+            base,
+            lambda: {
+                **collision,
+                "solref": array_to_string(self.solref),
+                "solimp": array_to_string(self.solimp),
+            },
+            visual,
+        )
         children.extend(rs_joint(**spec) for spec in self.joint_specs)
         children.append(rs_site(**self._default_site()))
         return with_children(_MAIN_BODY, children)
+
+
+class _SizedPrimitive(PrimitiveObject):
+    """The constructor the four primitives share: robosuite's signature, a drawn size."""
+
+    #: robosuite's upper and lower bounds of a drawn size (their length is the size's).
+    _size_max: ClassVar[tuple[float, ...]] = (0.07, 0.07, 0.07)
+    _size_min: ClassVar[tuple[float, ...]] = (0.03, 0.03, 0.03)
+    #: The shape named in the size check's error.
+    _shape: ClassVar[str] = "box"
+    #: This class's own defaults where robosuite's ``PrimitiveObject`` has others (``None``: its).
+    _default_friction: ClassVar[tuple[float, ...] | None] = None
+    _default_solref: ClassVar[tuple[float, ...] | None] = None
+    _default_joints: ClassVar[tuple[dict[str, str], ...] | None] = None
+
+    def __init__(
+        self,
+        name: str,
+        size: Any = None,
+        size_max: Any = None,
+        size_min: Any = None,
+        density: Any = None,
+        friction: Any = None,
+        rgba: Any = None,
+        solref: Any = None,
+        solimp: Any = None,
+        material: Any = None,
+        joints: Any = "default",
+        obj_type: str = "all",
+        duplicate_collision_geoms: bool = True,
+        rng: Any = None,
+    ) -> None:
+        bounds = list(self._size_max), list(self._size_min)
+        try:
+            size = get_size(size, size_max, size_min, *bounds, rng=rng)
+        except ValueError as error:
+            raise MjcfValueError(str(error)) from error
+        if self._default_joints is not None and isinstance(joints, str) and joints == "default":
+            joints = [dict(joint) for joint in self._default_joints]
+        if friction is None and self._default_friction is not None:
+            friction = list(self._default_friction)
+        if solref is None and self._default_solref is not None:
+            solref = list(self._default_solref)
+        super().__init__(
+            name=name,
+            size=size,
+            rgba=rgba,
+            density=density,
+            friction=friction,
+            solref=solref,
+            solimp=solimp,
+            material=material,
+            joints=joints,
+            obj_type=obj_type,
+            duplicate_collision_geoms=duplicate_collision_geoms,
+        )
+
+    def sanity_check(self) -> None:
+        """As many sizes as the bounds have."""
+        count = len(self._size_max)
+        if len(self.size) != count:
+            raise MjcfValueError(
+                f"{self._shape} size should have length {count}, found {self.size!r}"
+            )
+
+
+class BoxObject(_SizedPrimitive):
+    """A box; ``size`` is three half-lengths (drawn from 0.03 to 0.07 by default)."""
+
+    _robosuite_class = ("robosuite.models.objects", "BoxObject")
+    geom_type = "box"
+
+    bottom_offset = property(lambda self: np.array([0, 0, -1 * self.size[2]]), doc="Below.")
+    top_offset = property(lambda self: np.array([0, 0, self.size[2]]), doc="Above.")
+    horizontal_radius = property(
+        lambda self: np.linalg.norm(self.size[0:2], 2), doc="The length of the x, y half-lengths."
+    )
+
+    def get_bounding_box_half_size(self) -> Vector:
+        """The three half-lengths."""
+        return np.array([self.size[0], self.size[1], self.size[2]])
+
+
+class BallObject(_SizedPrimitive):
+    """A sphere; ``size`` is its radius. It takes ``rng`` (robosuite's draws unseeded)."""
+
+    _robosuite_class = ("robosuite.models.objects", "BallObject")
+    geom_type = "sphere"
+    _size_max = (0.07,)
+    _size_min = (0.03,)
+    _shape = "ball"
+
+    bottom_offset = property(lambda self: np.array([0, 0, -1 * self.size[0]]), doc="Below.")
+    top_offset = property(lambda self: np.array([0, 0, self.size[0]]), doc="Above.")
+    horizontal_radius = property(lambda self: self.size[0], doc="The radius.")
+
+    def get_bounding_box_half_size(self) -> Vector:
+        """The radius, three times."""
+        return np.array([self.size[0], self.size[0], self.size[0]])
+
+
+class CylinderObject(_SizedPrimitive):
+    """A cylinder; ``size`` is radius and half-length, with robosuite's stability defaults."""
+
+    _robosuite_class = ("robosuite.models.objects", "CylinderObject")
+    geom_type = "cylinder"
+    _size_max = (0.07, 0.07)
+    _size_min = (0.03, 0.03)
+    _shape = "cylinder"
+    _default_friction = (1, 0.01, 0.001)
+    _default_solref = (0.01, 0.5)
+    _default_joints = ({"type": "free", "damping": "0.0001"},)
+
+    @staticmethod
+    def get_collision_attrib_template() -> dict[str, str]:
+        """The collision template with a 0.001 margin."""
+        return {**MujocoGeneratedObject.get_collision_attrib_template(), "margin": "0.001"}
+
+    bottom_offset = property(lambda self: np.array([0, 0, -1 * self.size[1]]), doc="Below.")
+    top_offset = property(lambda self: np.array([0, 0, self.size[1]]), doc="Above.")
+    horizontal_radius = property(lambda self: self.size[0], doc="The radius.")
+
+    def get_bounding_box_half_size(self) -> Vector:
+        """Radius, radius, half-length."""
+        return np.array([self.size[0], self.size[0], self.size[1]])
+
+
+class CapsuleObject(_SizedPrimitive):
+    """A capsule; ``size`` is radius and half-length of the cylinder part. It takes ``rng``."""
+
+    _robosuite_class = ("robosuite.models.objects", "CapsuleObject")
+    geom_type = "capsule"
+    _size_max = (0.07, 0.07)
+    _size_min = (0.03, 0.03)
+    _shape = "capsule"
+
+    bottom_offset = property(
+        lambda self: np.array([0, 0, -1 * (self.size[0] + self.size[1])]), doc="Below."
+    )
+    top_offset = property(lambda self: np.array([0, 0, self.size[0] + self.size[1]]), doc="Above.")
+    horizontal_radius = property(lambda self: self.size[0], doc="The radius.")
+
+    def get_bounding_box_half_size(self) -> Vector:
+        """Radius, radius, radius plus half-length."""
+        return np.array([self.size[0], self.size[0], self.size[0] + self.size[1]])

@@ -1,18 +1,29 @@
-"""robosuite's habits as node functions: number text, attribute order, what gets scaled.
+"""robosuite's habits as node functions: number text, attribute order, scaling, file reading.
 
 Built on the compatible ``mjcf_utils`` wherever robosuite's objects call ``mjcf_utils``.
+Files are read into generic elements, so attribute text stays exactly as written.
 
 >>> print(rs_geom("g", "box", [0.5, 0, 1]).attributes["size"], "|", value_text(np.float32(0.5)))
 0.5 0 1 | 0.5
+>>> import tempfile, pathlib
+>>> path = pathlib.Path(tempfile.mkdtemp()) / "m.xml"
+>>> _ = path.write_text('<mujoco model="m"><default><default class="a"><geom group="1"/>'
+...     '</default></default><worldbody><geom class="a" size="1"/></worldbody></mujoco>')
+>>> root, paths = read_like_robosuite(str(path))
+>>> [child.tag for child in root.children], paths["asset"]
+(['worldbody', 'actuator', 'sensor', 'asset', 'tendon', 'equality', 'contact'], (3,))
+>>> dict(root.children[0].children[0].attributes)
+{'size': '1', 'group': '1'}
 """
 
 from __future__ import annotations
 
+import os
+import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterable, Mapping
 from typing import Any
 
 import numpy as np
-import numpy.typing as npt
 
 from mjcf_model.compat.mjcf_utils import constants as utils_constants
 from mjcf_model.compat.mjcf_utils.builders import body_node, geom_node, joint_node, site_node
@@ -24,23 +35,30 @@ from mjcf_model.compat.mjcf_utils.scaling import (
     scaled_mesh,
     scaled_site,
 )
-from mjcf_model.compat.mjcf_utils.text import array_to_string, text_of, three_factors
-from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
-from mjcf_model.transforms.naming.repeated import with_texts as checked_texts
+from mjcf_model.compat.mjcf_utils.text import array_to_string, text_of
+from mjcf_model.compat.objects.document import Memo, as_node, is_element
+from mjcf_model.errors import MjcfLookupError, MjcfValueError
+from mjcf_model.nodes.base import AnyElement, GenericElement, Node
+from mjcf_model.transforms.naming.repeated import with_texts
 from mjcf_model.transforms.scaling.scaled import _factors as checked_factors
-from mjcf_model.tree.traversal import with_children
+from mjcf_model.tree.defaults import MAIN, DefaultClasses
+from mjcf_model.tree.traversal import Path, map_tree, with_children
+from serializers.writer import attribute_texts
 
 __all__ = [
     "OBJECT_COLLISION_COLOR",
-    "attribute",
+    "absolute_files",
+    "named_geoms",
+    "named_specs",
+    "read_like_robosuite",
     "robosuite_scaled",
     "rs_body",
     "rs_geom",
     "rs_joint",
     "rs_site",
+    "split_geoms",
     "value_text",
-    "with_texts",
+    "visual_twin",
 ]
 
 #: robosuite's ``OBJECT_COLLISION_COLOR``, as it writes it (``"0.5 0 0 1"``).
@@ -55,6 +73,9 @@ _SCALING_RULES: Mapping[str, Callable[[Node, Any], Node]] = {
     "mesh": scaled_mesh,
 }
 
+#: The sections ``MujocoXML`` makes sure exist, in the order it adds missing ones.
+SECTIONS = ("worldbody", "actuator", "sensor", "asset", "tendon", "equality", "contact")
+
 
 def value_text(value: Any) -> str:
     """Like robosuite's ``convert_to_string``, also accepting numpy scalars (robosuite raises)."""
@@ -64,11 +85,6 @@ def value_text(value: Any) -> str:
     if text is None:
         raise MjcfValueError(f"unsupported attribute value type: got {type(value)} ({value!r})")
     return text
-
-
-def with_texts(element: AnyElement, changes: Mapping[str, str | None]) -> AnyElement:
-    """``element`` with attributes set to text (``None`` removes); positions kept like ``set``."""
-    return checked_texts(element, changes)
 
 
 def rs_geom(
@@ -104,33 +120,186 @@ def rs_body(name: str | None = None, pos: Any = (0, 0, 0), **extra: Any) -> Gene
     return body_node(name, pos, extra, value_text)
 
 
-def scale_factors(scale: Any) -> npt.NDArray[Any]:
-    """Like robosuite's ``normalize_scale_array``: one number or three, as an array of three."""
-    factors = three_factors(scale)
-    if factors is None:
-        raise MjcfValueError(f"Scale must be a scalar or a 3-element array, found {scale!r}")
-    return factors
+def named_specs(
+    specs: Any, stem: str, default: dict[str, str] | None = None, by_position: bool = True
+) -> list[dict[str, Any]]:
+    """Attribute dicts as robosuite takes them: ``"default"`` is ``[default]``; names added.
+
+    The caller's dicts are named ``<stem><k>`` in place, ``k`` their position (not
+    ``by_position``: the count of unnamed ones before, robosuite's composite rule).
+    """
+    if isinstance(specs, str) and specs == "default":
+        specs = [default]
+    named: list[dict[str, Any]] = specs
+    unnamed = 0
+    for index, spec in enumerate(named):
+        if "name" not in spec:
+            spec["name"] = f"{stem}{index if by_position else unnamed}"
+            unnamed += 1
+    return named
 
 
 def robosuite_scaled(node: AnyElement, scale: Any, tags: Iterable[str]) -> AnyElement:
     """What robosuite's objects scale below ``node`` (tags ``tags``), written as robosuite does."""
-    chosen = frozenset(tags)
-    factors = np.array(checked_factors(scale_factors(scale).astype(float)))
+    chosen = frozenset(tags) & _SCALING_RULES.keys()
+    factors = np.array(checked_factors(scale))
 
-    def visit(element: AnyElement, is_root: bool) -> AnyElement:
-        children: list[Node] = [
-            visit(child, False) if isinstance(child, (TypedElement, GenericElement)) else child
-            for child in element.children
-        ]
-        element = with_children(element, children)
-        rule = _SCALING_RULES.get(element.tag)
-        if rule is None or element.tag not in chosen or is_root:
-            return element
+    def scale_one(node: Node) -> Node:
+        if not is_element(node) or node.tag not in chosen:
+            return node
         try:
-            new = rule(element, factors)
+            return _SCALING_RULES[node.tag](node, factors)
         except ValueError as error:
-            raise MjcfValueError(f"<{element.tag}> cannot be scaled: {error}") from error
-        assert isinstance(new, (TypedElement, GenericElement))
-        return new
+            raise MjcfValueError(f"<{node.tag}> cannot be scaled: {error}") from error
 
-    return visit(node, True)
+    return with_children(node, [map_tree(scale_one, child) for child in node.children])
+
+
+def read_like_robosuite(fname: str) -> tuple[AnyElement, dict[str, Path]]:
+    """The document robosuite's ``MujocoXML(fname)`` ends up with, and its section paths."""
+    try:
+        stat = os.stat(fname)
+    except OSError:
+        return _read(fname)  # raises as ElementTree does
+    key = (os.path.abspath(fname), stat.st_ino, stat.st_mtime_ns, stat.st_ctime_ns, stat.st_size)
+    document, paths = _READ.get(key, lambda: _read(fname))
+    return document, dict(paths)
+
+
+#: The documents :func:`read_like_robosuite` read, by path, modification time and size.
+_READ: Memo[tuple[AnyElement, dict[str, Path]]] = Memo(32)
+
+
+def _read(fname: str) -> tuple[AnyElement, dict[str, Path]]:
+    root = as_node(ET.parse(fname).getroot())
+    children: list[Node] = list(root.children)
+    for section in SECTIONS:
+        if not any(is_element(c, section) for c in children):
+            children.append(GenericElement(tag=section))
+    default = next((c for c in children if is_element(c, "default")), None)
+    if default is not None:
+        children.remove(default)
+        assert is_element(default)
+        root = inline_defaults(with_children(root, children), default)
+        children = list(root.children)
+    folder = os.path.abspath(os.path.dirname(fname))
+    paths: dict[str, Path] = {}
+    for index, child in enumerate(children):
+        if is_element(child) and child.tag in SECTIONS:
+            paths.setdefault(child.tag, (index,))
+    asset = children[paths["asset"][0]]
+    assert is_element(asset)
+    children[paths["asset"][0]] = absolute_files(asset, folder)
+    return with_children(root, children), paths
+
+
+def absolute_files(asset: AnyElement, folder: str) -> AnyElement:
+    """``asset`` with each child's ``file`` joined to ``folder``, not normalised, as robosuite."""
+    return with_children(
+        asset,
+        [
+            with_texts(c, {"file": os.path.join(folder, file)})
+            if is_element(c) and (file := attribute(c, "file")) is not None
+            else c
+            for c in asset.children
+        ],
+    )
+
+
+def inline_defaults(root: AnyElement, default: AnyElement) -> AnyElement:
+    """Write ``default``'s classes inline as robosuite does (nested, ``childclass``: as MuJoCo)."""
+    classes = DefaultClasses.of(GenericElement(tag="mujoco", children=[default]))
+
+    def chain(name: str) -> tuple[str, ...]:
+        if name not in classes.parents:
+            known = sorted(c for c in classes.parents if c != MAIN)
+            raise MjcfLookupError(
+                f"unknown default class {name!r}; the classes are {', '.join(known) or 'none'}"
+            )
+        return tuple(c for c in classes.chain(name) if c != MAIN)
+
+    def visit(element: AnyElement, inherited: str | None) -> AnyElement:
+        own = attribute(element, "class")
+        chosen = own if own is not None else inherited
+        changes: dict[str, str | None] = {}
+        if own is not None:
+            changes["class"] = None
+        if chosen is not None:
+            present = {name for name, _ in attribute_texts(element)}
+            for name in chain(chosen):
+                setting = classes.settings.get((name, element.tag))
+                if setting is None:
+                    continue
+                for key, text in attribute_texts(setting):
+                    if key not in present and key not in changes:
+                        changes[key] = text
+        below = inherited
+        childclass = attribute(element, "childclass")
+        if childclass is not None:
+            chain(childclass)
+            changes["childclass"] = None
+            below = childclass
+        children = [visit(c, below) if is_element(c) else c for c in element.children]
+        return with_texts(with_children(element, children), changes)
+
+    return visit(root, None)
+
+
+def split_geoms(body: AnyElement, groups: set[int], duplicate: bool) -> AnyElement:
+    """``MujocoXMLObject``'s geom pass: keep ``groups``, name geom ``i`` ``g<i>``, add twins."""
+    counter = 0
+
+    def visit(element: AnyElement) -> AnyElement:
+        nonlocal counter
+        kept: list[Node] = []
+        twins: list[Node] = []
+        for child in element.children:
+            if not is_element(child):
+                kept.append(child)
+            elif child.tag != "geom":
+                kept.append(visit(child))
+            else:
+                index = counter
+                counter += 1
+                group = attribute(child, "group")
+                if (0 if group is None else int(group)) not in groups:
+                    continue
+                name = attribute(child, "name")
+                if name is None:
+                    name = f"g{index}"
+                geom = with_texts(child, {"name": name})
+                if duplicate and group in (None, "0"):
+                    twins.append(visual_twin(geom, name))
+                    geom = with_texts(geom, {"rgba": OBJECT_COLLISION_COLOR, "material": None})
+                kept.append(geom)
+        return with_children(element, kept + twins)
+
+    return visit(body)
+
+
+def visual_twin(geom: AnyElement, name: str) -> AnyElement:
+    """The visual twin ``<name>_visual`` of collision geom ``geom``: group 1, no contact or mass."""
+    changes = {"group": "1", "conaffinity": "0", "contype": "0", "mass": "1e-8"}
+    return with_texts(geom, {**changes, "name": name + "_visual"})
+
+
+#: ``MujocoXMLModel``'s suffix of an unnamed geom, by its group.
+_GEOM_KINDS = {None: "col", "0": "col", "1": "vis"}
+
+
+def named_geoms(node: AnyElement) -> AnyElement:
+    """Name unnamed geoms ``g<k>_col`` (group 0 or none) and ``g<k>_vis`` (group 1), in order."""
+    counters = {"col": 0, "vis": 0}
+
+    def name(geom: Node) -> Node:
+        if not is_element(geom, "geom") or attribute(geom, "name") is not None:
+            return geom
+        kind = _GEOM_KINDS.get(attribute(geom, "group"))
+        if kind is None:
+            return geom
+        counters[kind] += 1
+        return with_texts(geom, {"name": f"g{counters[kind] - 1}_{kind}"})
+
+    named = map_tree(name, node)  # geoms are leaves: children first is document order for them
+    assert is_element(named)
+    return named

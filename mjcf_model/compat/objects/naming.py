@@ -1,4 +1,4 @@
-"""Prefixing an object's names as robosuite does, once planned for every object of the same shape.
+"""robosuite's names of an object: prefixed, and recorded by category, once per shape.
 
 A tree's *naming skeleton* (shape, tags, naming attributes) decides where the prefix goes
 and which names robosuite records, so both are computed once per skeleton.
@@ -18,15 +18,21 @@ from __future__ import annotations
 from collections.abc import Callable, Hashable
 from typing import Any
 
+from mjcf_model.compat.mjcf_utils.etree_sync import attribute
 from mjcf_model.compat.mjcf_utils.naming import already_prefixed
-from mjcf_model.compat.objects.memo import Memo
+from mjcf_model.compat.objects.document import Memo
+from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, attribute_items
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.transforms.naming.renaming import prefixed
 from mjcf_model.transforms.naming.repeated import PrefixPlan
+from mjcf_model.tree.queries import categorized
 from mjcf_model.values import Value
 
-__all__ = ["robosuite_prefixed", "skeleton_memo"]
+__all__ = ["recorded_names", "robosuite_prefixed", "skeleton_memo"]
+
+#: The name lists robosuite caches, in the order of ``sort_elements``' categories.
+_CATEGORIES = ("bodies", "joints", "actuators", "sites", "sensors", "contact_geoms", "visual_geoms")
 
 #: Attributes a skeleton keeps: naming ones, reference targets, ``file`` and ``group``.
 _SKELETON_ATTRIBUTES = frozenset(
@@ -107,3 +113,19 @@ def robosuite_prefixed(
 
 def _every_reference(node: AnyElement, prefix: str) -> AnyElement:
     return prefixed(node, prefix, undeclared=True)
+
+
+def recorded_names(node: AnyElement) -> tuple[AnyElement, dict[str, Any]]:
+    """The root body of ``node`` (exactly one) and robosuite's raw names (``_root_body``...)."""
+    found = categorized(node)
+    if len(found.root_body) != 1:
+        raise MjcfValueError(
+            "Invalid number of root bodies found for robot model. Expected 1,"
+            f"got {len(found.root_body)}"
+        )
+    root = found.root_body[0]
+    names: dict[str, Any] = {"_root_body": attribute(root, "name")}
+    names["_bodies"] = [attribute(e, "name") for e in (root, *found.bodies)]
+    for category in _CATEGORIES[1:]:
+        names[f"_{category}"] = [attribute(e, "name") for e in getattr(found, category)]
+    return root, names

@@ -15,10 +15,11 @@ from typing import Any
 import numpy as np
 
 from mjcf_model.compat.mjcf_utils.text import array_to_string, assets_root
-from mjcf_model.compat.objects.habits import attribute, with_texts
+from mjcf_model.compat.objects.document import find_path
 from mjcf_model.compat.objects.xml import MujocoXMLObject
 from mjcf_model.errors import MjcfLookupError
-from mjcf_model.tree.traversal import replaced_at, walk
+from mjcf_model.transforms.naming.repeated import with_texts
+from mjcf_model.tree.traversal import replaced_at, subtree_at
 
 __all__ = [
     "BottleObject",
@@ -53,7 +54,8 @@ class _Shipped(MujocoXMLObject):
     """An object of robosuite's assets; subclasses pass ``file=``, their twin has their name."""
 
     _file = ""
-    _joints: Any = "damped"
+    #: ``"damped"`` (a damped free joint), ``"default"`` or ``None``, as robosuite's class.
+    _joint_choice: Any = "damped"
     _obj_type = "all"
 
     def __init_subclass__(cls, file: str | None = None, **kwargs: Any) -> None:
@@ -63,11 +65,11 @@ class _Shipped(MujocoXMLObject):
             cls._robosuite_class = ("robosuite.models.objects", cls.__name__)
 
     def __init__(self, name: str) -> None:
-        joints = [dict(_DAMPED_FREE_JOINT)] if self._joints == "damped" else self._joints
+        joints = self._joint_choice
         super().__init__(
             robosuite_asset(self._file),
             name=name,
-            joints=joints,
+            joints=[dict(_DAMPED_FREE_JOINT)] if joints == "damped" else joints,
             obj_type=self._obj_type,
             duplicate_collision_geoms=True,
         )
@@ -87,7 +89,7 @@ class _WithHandle(_Shipped):
 class _Visual(_Shipped):
     """A visual fiducial: visual geoms only, no joints."""
 
-    _joints = None
+    _joint_choice = None
     _obj_type = "visual"
 
 
@@ -102,7 +104,7 @@ class CanObject(_Shipped, file="objects/can.xml"):
 class LemonObject(_Shipped, file="objects/lemon.xml"):
     """robosuite's lemon (``objects/lemon.xml``), with an undamped free joint."""
 
-    _joints = "default"
+    _joint_choice = "default"
 
 
 class MilkObject(_Shipped, file="objects/milk.xml"):
@@ -144,10 +146,10 @@ class CanVisualObject(_Visual, file="objects/can-visual.xml"):
 class PlateWithHoleObject(_Shipped, file="objects/plate-with-hole.xml"):
     """Square plate with a hole (``objects/plate-with-hole.xml``), used in PegInHole."""
 
-    _joints = None
+    _joint_choice = None
 
 
-class DoorObject(MujocoXMLObject):
+class DoorObject(_Shipped, file="objects/door.xml"):
     """robosuite's door with a handle (``objects/door.xml``, ``door_lock.xml`` with ``lock``).
 
     Args:
@@ -158,19 +160,14 @@ class DoorObject(MujocoXMLObject):
 
     """
 
-    _robosuite_class = ("robosuite.models.objects", "DoorObject")
+    _joint_choice = None
 
     def __init__(
         self, name: str, friction: Any = None, damping: Any = None, lock: bool = False
     ) -> None:
-        file = "objects/door_lock.xml" if lock else "objects/door.xml"
-        super().__init__(
-            robosuite_asset(file),
-            name=name,
-            joints=None,
-            obj_type="all",
-            duplicate_collision_geoms=True,
-        )
+        if lock:
+            self._file = "objects/door_lock.xml"
+        super().__init__(name)
         self.door_body = self.naming_prefix + "door"
         self.frame_body = self.naming_prefix + "frame"
         self.latch_body = self.naming_prefix + "latch"
@@ -185,15 +182,13 @@ class DoorObject(MujocoXMLObject):
 
     def _set_hinge(self, attribute_name: str, value: Any) -> None:
         """Write ``value`` (as robosuite writes ``np.array([value])``) on the hinge joint."""
-        text = array_to_string(np.array([value]))
         world = self._node("worldbody")
-        for path, element in walk(world):
-            if element.tag == "joint" and attribute(element, "name") == self.hinge_joint:
-                place = (*self._paths["worldbody"], *path)
-                changed = with_texts(element, {attribute_name: text})
-                self._set_mjcf(replaced_at(self.mjcf, place, [changed]))
-                return
-        raise MjcfLookupError(f"no joint {self.hinge_joint!r} in {self.file}")
+        path = find_path(world, "joint", name=self.hinge_joint)
+        if path is None:
+            raise MjcfLookupError(f"no joint {self.hinge_joint!r} in {self.file}")
+        text = array_to_string(np.array([value]))
+        hinge = with_texts(subtree_at(world, path), {attribute_name: text})
+        self._replace("worldbody", replaced_at(world, path, [hinge]))
 
     @property
     def important_sites(self) -> dict[str, Any]:

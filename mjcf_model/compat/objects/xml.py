@@ -1,15 +1,24 @@
-"""``MujocoXML`` and ``MujocoXMLObject``: robosuite's file-based models over an immutable model.
+"""robosuite's file-based models: ``MujocoXML``, ``MujocoXMLObject`` and ``MujocoXMLModel``.
 
 >>> import tempfile, pathlib
->>> path = pathlib.Path(tempfile.mkdtemp()) / "ball.xml"
->>> _ = path.write_text('<mujoco><worldbody><body><body name="object">'
+>>> folder = pathlib.Path(tempfile.mkdtemp())
+>>> _ = (folder / "ball.xml").write_text('<mujoco><worldbody><body><body name="object">'
 ...     '<geom size="0.1" group="0"/></body><site name="bottom_site" pos="0 0 -0.1"/>'
 ...     '</body></worldbody></mujoco>')
->>> ball = MujocoXMLObject(str(path), name="ball")
+>>> ball = MujocoXMLObject(str(folder / "ball.xml"), name="ball")
 >>> ball.contact_geoms, ball.visual_geoms, ball.bottom_offset
 (['ball_g0'], ['ball_g0_visual'], array([ 0. ,  0. , -0.1]))
 >>> ball.get_obj() is ball.worldbody[0][0]
 True
+>>> _ = (folder / "hand.xml").write_text('<mujoco><worldbody><body name="hand">'
+...     '<geom size="0.1"/><geom size="0.1" group="1"/></body></worldbody></mujoco>')
+>>> class Hand(MujocoXMLModel):
+...     contact_geom_rgba = property(lambda self: [0, 0, 0.5, 1])
+>>> hand = Hand(str(folder / "hand.xml"), idn=1)
+>>> hand.name, hand.root_body, hand.contact_geoms, hand.visual_geoms
+('Hand1', '1_hand', ['1_g0_col'], ['1_g0_vis'])
+>>> hand.worldbody[0][0].get("rgba")
+'0 0 0.5 1'
 """
 
 from __future__ import annotations
@@ -19,38 +28,44 @@ import xml.dom.minidom
 import xml.etree.ElementTree as ET
 from typing import Any
 
+from mjcf_model.compat.mjcf_utils.etree_sync import attribute
+from mjcf_model.compat.mjcf_utils.materials import recolored
 from mjcf_model.compat.mjcf_utils.text import array_to_string, string_to_array
 from mjcf_model.compat.objects.base import (
     GEOMTYPE2GROUP,
+    MujocoModel,
     MujocoObject,
     Vector,
-    check_obj_type,
-    joint_specs,
+    prefixed_names,
+    unanswered,
 )
-from mjcf_model.compat.objects.class_face import RobosuiteCompatible
-from mjcf_model.compat.objects.document import ModelBacked
-from mjcf_model.compat.objects.habits import attribute, robosuite_scaled, rs_joint, with_texts
-from mjcf_model.compat.objects.memo import Memo
-from mjcf_model.compat.objects.naming import robosuite_prefixed
-from mjcf_model.compat.objects.reading import (
+from mjcf_model.compat.objects.document import (
+    Memo,
+    ModelBacked,
+    RobosuiteCompatible,
+    as_node,
+    find_path,
+    is_element,
+    section_children,
+)
+from mjcf_model.compat.objects.habits import (
     absolute_files,
+    named_geoms,
     read_like_robosuite,
+    robosuite_scaled,
+    rs_joint,
     split_geoms,
     visual_twin,
 )
+from mjcf_model.compat.objects.naming import recorded_names, robosuite_prefixed
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement
-from mjcf_model.tree.traversal import (
-    Path,
-    appended_at,
-    replaced_at,
-    subtree_at,
-    walk,
-    with_children,
-)
-from serializers import from_etree, to_etree
+from mjcf_model.nodes.base import AnyElement, GenericElement
+from mjcf_model.transforms.naming.repeated import with_texts
+from mjcf_model.tree.traversal import appended_at, replaced_at, subtree_at, walk, with_children
+from mjcf_model.values import to_vec4
+from serializers import to_etree
 
-__all__ = ["MujocoXML", "MujocoXMLObject"]
+__all__ = ["MujocoXML", "MujocoXMLModel", "MujocoXMLObject"]
 
 #: Prepared documents, by the document read and the choices that shape the object.
 _PREPARED: Memo[AnyElement] = Memo(32)
@@ -61,25 +76,8 @@ def _typed(attributes: dict[str, Any]) -> tuple[tuple[str, type, Any], ...]:
     return tuple((key, type(value), value) for key, value in attributes.items())
 
 
-def section_children(model: Any, section: str) -> list[AnyElement]:
-    """The elements of the section of ``model`` (ours or robosuite's), as nodes."""
-    if isinstance(model, ModelBacked) and section in model._paths:
-        return list(model._node(section).elements)
-    found = []
-    for child in getattr(model, section):
-        node = from_etree(child, typed=False)
-        assert isinstance(node, (TypedElement, GenericElement))
-        found.append(node)
-    return found
-
-
 class MujocoXML(ModelBacked, RobosuiteCompatible):
-    """robosuite's ``MujocoXML``: an MJCF file, its sections, merging and output.
-
-    Args:
-        fname: Path of the MJCF file.
-
-    """
+    """robosuite's ``MujocoXML``: the MJCF file ``fname``, its sections, merging and output."""
 
     _robosuite_class = ("robosuite.models.base", "MujocoXML")
 
@@ -118,14 +116,7 @@ class MujocoXML(ModelBacked, RobosuiteCompatible):
         """The first ``<name>`` child of the root, added (empty, at the end) if missing."""
         if name not in self._paths:
             children = list(self.mjcf.children)
-            index = next(
-                (
-                    i
-                    for i, c in enumerate(children)
-                    if isinstance(c, (TypedElement, GenericElement)) and c.tag == name
-                ),
-                None,
-            )
+            index = next((i for i, c in enumerate(children) if is_element(c, name)), None)
             if index is None:
                 index = len(children)
                 self._set_mjcf(with_children(self.mjcf, [*children, GenericElement(tag=name)]))
@@ -158,7 +149,10 @@ class MujocoXML(ModelBacked, RobosuiteCompatible):
             if merge_body is not None:
                 place = self._paths["worldbody"]
                 if merge_body != "default":
-                    place = place + self._body_path(merge_body)
+                    path = find_path(self._node("worldbody"), "body", name=merge_body)
+                    if path is None:
+                        raise MjcfLookupError(f"no body named {merge_body!r} in the worldbody")
+                    place = place + path
                 bodies = section_children(other, "worldbody")
                 self._set_mjcf(appended_at(self.mjcf, place, bodies))
             self.merge_assets(other)
@@ -167,12 +161,6 @@ class MujocoXML(ModelBacked, RobosuiteCompatible):
                 if items:
                     node = self._node(section)
                     self._replace(section, with_children(node, [*node.children, *items]))
-
-    def _body_path(self, name: str) -> Path:
-        for path, element in walk(self._node("worldbody")):
-            if element.tag == "body" and attribute(element, "name") == name:
-                return path
-        raise MjcfLookupError(f"no body named {name!r} in the worldbody")
 
     def get_model(self, mode: str = "mujoco") -> Any:
         """Compile the current XML with MuJoCo (``mujoco.MjModel``).
@@ -212,14 +200,8 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
     The outer body's ``bottom_site``, ``top_site`` and ``horizontal_radius_site``
     give the offsets; every name in the document gets ``"<name>_"``.
 
-    Args:
-        fname: Path of the MJCF file.
-        name: Name of the object (its prefix is ``name + "_"``).
-        joints: ``"default"`` (a free joint), ``None``, or joint attribute
-            dicts (unnamed ones are named ``joint<i>`` in the caller's dicts).
-        obj_type: ``"collision"``, ``"visual"`` or ``"all"``.
-        duplicate_collision_geoms: Give collision geoms visual twins.
-        scale: One factor or three.
+    ``joints``: ``"default"`` (a free joint), ``None`` or joint dicts (named
+    ``joint<i>`` in place); ``duplicate_collision_geoms`` gives collision geoms visual twins.
 
     Raises:
         MjcfLookupError: the file has no such body (robosuite: ``AttributeError``).
@@ -238,36 +220,18 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
         scale: Any = None,
     ) -> None:
         MujocoXML.__init__(self, fname)
-        check_obj_type(obj_type)
-        self.obj_type = obj_type
-        self.duplicate_collision_geoms = duplicate_collision_geoms
+        self._init_object(obj_type, duplicate_collision_geoms, scale)  # scaled once prepared
         self._name = name
-        self._scale = scale
-        self._pending_scale = None
-        self._raw = {"root_body": None}
-        self.joint_specs = joint_specs(joints, [self.get_joint_attrib_template()])
-        self._paths["obj"] = self._object_path()
+        self.joint_specs = self._named_joints(joints)
+        path = find_path(self._node("worldbody"), "body", inside="body", name="object")
+        if path is None:
+            raise MjcfLookupError(
+                f"{self.file}: no <body name='object'> inside a top-level body of <worldbody>; "
+                "an XML object is worldbody/body/body[@name='object']"
+            )
+        self._paths["obj"] = (*self._paths["worldbody"], *path)
         self._set_mjcf(self._prepared_document())
-        if scale is not None:
-            self.set_scale(scale)
         self._get_object_properties()
-
-    def _object_path(self) -> Path:
-        world = self._node("worldbody")
-        for i, outer in enumerate(world.children):
-            if not isinstance(outer, (TypedElement, GenericElement)) or outer.tag != "body":
-                continue
-            for j, inner in enumerate(outer.children):
-                if (
-                    isinstance(inner, (TypedElement, GenericElement))
-                    and inner.tag == "body"
-                    and attribute(inner, "name") == "object"
-                ):
-                    return (*self._paths["worldbody"], i, j)
-        raise MjcfLookupError(
-            f"{self.file}: no <body name='object'> inside a top-level body of <worldbody>; "
-            "an XML object is worldbody/body/body[@name='object']"
-        )
 
     def _prepared_document(self) -> AnyElement:
         """The document with the object body prepared (:meth:`_prepared`), remembered."""
@@ -302,9 +266,7 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
     @staticmethod
     def _duplicate_visual_from_collision(element: ET.Element) -> ET.Element:
         """A visual copy of a collision geom element (robosuite's helper, on ElementTree)."""
-        node = from_etree(element, typed=False)
-        assert isinstance(node, (TypedElement, GenericElement))
-        return to_etree(visual_twin(node, str(element.get("name"))))
+        return to_etree(visual_twin(as_node(element), str(element.get("name"))))
 
     def _prefix_names(self) -> None:
         self._set_mjcf(robosuite_prefixed(self.mjcf, self.naming_prefix, self._excluded))
@@ -335,33 +297,24 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
         return string_to_array(attribute(self.obj_node, "euler") or "0.0 0.0 0.0")[2]
 
     def _outer_site_pos(self, name: str) -> Vector:
-        wanted = self.naming_prefix + name
-        for outer in self._node("worldbody").elements:
-            if outer.tag != "body":
-                continue
-            for site in outer.elements:
-                if site.tag == "site" and attribute(site, "name") == wanted:
-                    return string_to_array(attribute(site, "pos") or "0 0 0")
-        raise MjcfLookupError(f"{self.file}: no site {wanted!r} in a top-level body of <worldbody>")
+        world, wanted = self._node("worldbody"), self.naming_prefix + name
+        path = find_path(world, "site", inside="body", name=wanted)
+        if path is None:
+            raise MjcfLookupError(
+                f"{self.file}: no site {wanted!r} in a top-level body of <worldbody>"
+            )
+        return string_to_array(attribute(subtree_at(world, path), "pos") or "0 0 0")
 
-    @property
-    def bottom_offset(self) -> Vector:
-        """Position of the outer body's ``bottom_site``."""
-        return self._outer_site_pos("bottom_site")
-
-    @property
-    def top_offset(self) -> Vector:
-        """Position of the outer body's ``top_site``."""
-        return self._outer_site_pos("top_site")
-
-    @property
-    def horizontal_radius(self) -> Any:
-        """The x of the outer body's ``horizontal_radius_site``."""
-        return self._outer_site_pos("horizontal_radius_site")[0]
+    bottom_offset = property(lambda self: self._outer_site_pos("bottom_site"), doc="Bottom site.")
+    top_offset = property(lambda self: self._outer_site_pos("top_site"), doc="Top site.")
+    horizontal_radius = property(
+        lambda self: self._outer_site_pos("horizontal_radius_site")[0], doc="Its x."
+    )
 
     def get_bounding_box_half_size(self) -> Vector:
         """``horizontal_radius_site`` position minus :attr:`bottom_offset`."""
-        return self._outer_site_pos("horizontal_radius_site") - self.bottom_offset
+        half: Vector = self._outer_site_pos("horizontal_radius_site") - self.bottom_offset
+        return half
 
     def _get_elements_by_name(
         self,
@@ -380,3 +333,64 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
         bodies = {b: first("body", prefix + b) for b in body_names or []}
         joints = {j: first("joint", prefix + j) for j in joint_names or []}
         return geoms, bodies, joints
+
+
+class MujocoXMLModel(MujocoXML, MujocoModel):
+    """robosuite's ``MujocoXMLModel``: a file-based model with one root body and a prefix.
+
+    Unnamed geoms are named, the names recorded and prefixed, and the collision
+    geoms take ``contact_geom_rgba``. Subclasses give ``contact_geom_rgba``, the raw
+    ``_important_*`` names and maybe ``naming_prefix`` (default ``"<idn>_"``).
+
+    Raises:
+        MjcfValueError: the worldbody has more or less than one top body.
+
+    """
+
+    _robosuite_class = ("robosuite.models.base", "MujocoXMLModel")
+
+    def __init__(self, fname: str, idn: Any = 0) -> None:
+        super().__init__(fname)
+        self.idn = idn
+        self.mount: Any = None
+        document = named_geoms(self.mjcf)
+        root, names = recorded_names(document)
+        vars(self).update(names)  # _root_body, _bodies, _joints...
+        self._base_offset = string_to_array(attribute(root, "pos") or "0 0 0")
+        self._set_mjcf(robosuite_prefixed(document, self.naming_prefix, self._excluded))
+        rgba = self.contact_geom_rgba
+        self._change("worldbody", lambda world: self._recolored(world, rgba))
+
+    @staticmethod
+    def _recolored(world: AnyElement, rgba: Any) -> AnyElement:
+        """Paint the collision geoms as ``recolor_collision_geoms`` does (four-number ``rgba``)."""
+        to_vec4(rgba)  # raises MjcfValueError for anything else
+        recolored_world = recolored(world, rgba)
+        assert is_element(recolored_world)
+        return recolored_world
+
+    exclude_from_prefixing = MujocoXMLObject.exclude_from_prefixing
+
+    @property
+    def base_offset(self) -> Vector:
+        """The root body's ``pos`` (zeros when not written)."""
+        return self._base_offset
+
+    @property
+    def name(self) -> Any:
+        """``"<class name><idn>"``."""
+        return f"{type(self).__name__}{self.idn}"
+
+    @property
+    def naming_prefix(self) -> str:
+        """``"<idn>_"`` (subclasses change it, e.g. ``"gripper0_"``)."""
+        return f"{self.idn}_"
+
+    important_sites = prefixed_names("important_sites", "Important sites.")
+    important_geoms = prefixed_names("important_geoms", "Important geoms.")
+    important_sensors = prefixed_names("important_sensors", "Important sensors.")
+    _important_sites = unanswered("Raw important site names.")
+    _important_geoms = unanswered("Raw important geom names.")
+    _important_sensors = unanswered("Raw important sensor names.")
+    contact_geom_rgba = unanswered("Colour of the collision geoms.")
+    bottom_offset = property(lambda self: self.base_offset, doc="The root body's offset.")
