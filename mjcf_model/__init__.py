@@ -10,7 +10,7 @@ changed copies; :mod:`serializers` reads and writes MJCF without losing anything
 """
 
 from mjcf_model import errors, nodes
-from mjcf_model.builders import (
+from mjcf_model.compat.typed_builders import (
     new_actuator,
     new_body,
     new_element,

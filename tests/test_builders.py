@@ -25,8 +25,8 @@ from mjcf_model import (
     TypedElement,
     Velocity,
 )
-from mjcf_model.builders import (
-    RED,
+from mjcf_model.compat.mjcf_utils.constants import RED
+from mjcf_model.compat.typed_builders import (
     new_actuator,
     new_body,
     new_element,
@@ -238,8 +238,8 @@ def test_unknown_actuator_type_raises_a_lookup_error() -> None:
 
 def test_red_is_robosuites_red() -> None:
     """``RED`` equals robosuite's ``RED`` and is the site default."""
-    assert list(RED) == mjcf_utils.RED
-    assert new_site("s").rgba == RED
+    assert RED == mjcf_utils.RED
+    assert new_site("s").rgba == tuple(RED)
 
 
 def test_inputs_are_not_mutated() -> None:
@@ -317,4 +317,4 @@ def test_typed_element_attribute_order_is_recorded() -> None:
     site = new_site("s", type="sphere")
     assert isinstance(site, TypedElement)
     assert site.attribute_order == ("type", "pos", "size", "rgba", "name")
-    assert site == Site(name="s", type="sphere", pos=(0, 0, 0), size=(0.005,), rgba=RED)
+    assert site == Site(name="s", type="sphere", pos=(0, 0, 0), size=(0.005,), rgba=tuple(RED))

@@ -205,7 +205,6 @@ def test_can_scaled_twice_golden() -> None:
     np.testing.assert_array_equal(can.bottom_offset, [0.0, 0.0, -0.24])
 
 
-
 def test_set_scale_of_another_body_scales_it_in_place_as_robosuite_does() -> None:
     """``set_scale(scale, obj=body)`` scales that live body in place, and the object's meshes."""
     trees = []
@@ -217,6 +216,7 @@ def test_set_scale_of_another_body_scales_it_in_place_as_robosuite_does() -> Non
     (theirs, their_asset), (mine, my_asset) = trees
     assert_same_tree(mine, theirs)
     assert_same_tree(my_asset, their_asset)
+
 
 # -- MujocoXMLObject on the contract's fixture --------------------------------------
 

@@ -26,7 +26,6 @@ from typing import Any, Generic, NamedTuple, TypeVar, cast
 
 import attrs
 
-from mjcf_model.builders import typed_node
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.asset import Material, Texture
 from mjcf_model.nodes.base import (
@@ -36,6 +35,7 @@ from mjcf_model.nodes.base import (
     Node,
     TypedElement,
     get_attribute,
+    ordered_node,
     with_attributes,
 )
 from mjcf_model.tree.queries import geom_role
@@ -227,7 +227,7 @@ class CustomMaterial:
             values["rgb2"] = rgb  # the bottom face of a cube texture
             values.setdefault("width", _FLAT_SIZE)
             values.setdefault("height", _FLAT_SIZE)
-        return typed_node(Texture, list(values.items()))
+        return ordered_node(Texture, values.items())
 
     @property
     def material_node(self) -> Material:
@@ -249,7 +249,7 @@ class CustomMaterial:
         texture = self.texture
         if texture is not None and not isinstance(texture, str) and texture[3] < 1:
             values.setdefault("rgba", (1.0, 1.0, 1.0, texture[3]))
-        return typed_node(Material, list(values.items()))
+        return ordered_node(Material, values.items())
 
     def prefixed(self, prefix: str) -> CustomMaterial:
         """A copy whose texture and material names start with ``prefix`` (unless ``shared``).

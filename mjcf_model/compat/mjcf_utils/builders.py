@@ -1,7 +1,10 @@
 """robosuite's element constructors (``new_element``, ``new_geom``...) and their node builders.
 
-Attribute text is :func:`convert_to_string`'s, in robosuite's order: keyword
-arguments, then the named parameters, then ``name``.
+Each node builder writes robosuite's order (keyword arguments, then the named
+parameters, then ``name``) with a text rule: :func:`convert_to_string` for the
+ElementTree constructors here, robosuite's object habits in
+:mod:`mjcf_model.compat.objects.habits`, or ``None`` for the typed nodes of
+:mod:`mjcf_model.compat.typed_builders`.
 """
 
 from __future__ import annotations
@@ -12,7 +15,17 @@ from typing import Any
 
 from mjcf_model.compat.mjcf_utils.constants import RED
 from mjcf_model.compat.mjcf_utils.text import convert_to_string
-from mjcf_model.nodes.base import AttributeMap, GenericElement, build_node
+from mjcf_model.nodes.base import (
+    AnyElement,
+    AttributeMap,
+    GenericElement,
+    build_node,
+    ordered_node,
+    with_attributes,
+)
+from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.schema.namespaces import child_key, guess_context
+from mjcf_model.values import plain_value
 from serializers import to_etree
 
 __all__ = [
@@ -20,6 +33,7 @@ __all__ = [
     "body_node",
     "element_node",
     "geom_node",
+    "inertial_node",
     "joint_node",
     "new_actuator",
     "new_body",
@@ -31,14 +45,27 @@ __all__ = [
     "site_node",
 ]
 
-#: How a builder writes a value as attribute text.
-TextRule = Callable[[Any], str]
+#: How a builder writes a value as attribute text; ``None``: a typed node keeps numbers.
+TextRule = Callable[[Any], str] | None
+#: Keyword arguments that stand for another MJCF attribute (``class`` is a Python keyword).
+_KEYWORD_ATTRIBUTES = {"dclass": "class"}
 
 
 def element_node(
     tag: str, attributes: Iterable[tuple[str, Any]], text: TextRule = convert_to_string
-) -> GenericElement:
-    """A generic node with ``attributes`` in order, ``None`` values dropped, written by ``text``."""
+) -> AnyElement:
+    """A node with ``attributes`` in order, ``None`` values dropped, written by ``text``.
+
+    With ``text=None`` the node is typed where ``tag`` has a class in its likely
+    context (values converted; ``dclass`` stands for ``class``), else generic.
+    """
+    if text is None:
+        items = [(_KEYWORD_ATTRIBUTES.get(k, k), v) for k, v in attributes if v is not None]
+        key = child_key(guess_context(tag), tag)
+        cls = CLASS_BY_KEY.get(key) if key is not None else None
+        if cls is not None:
+            return ordered_node(cls, items)
+        return with_attributes(GenericElement(tag=tag), {k: plain_value(v) for k, v in items})
     values = {key: text(value) for key, value in attributes if value is not None}
     # Unchecked, as robosuite's ElementTree takes text XML cannot carry.
     return build_node(GenericElement, {"tag": tag, "attributes": AttributeMap.unchecked(values)})
@@ -46,7 +73,7 @@ def element_node(
 
 def joint_node(
     name: str | None, kwargs: Mapping[str, Any], text: TextRule = convert_to_string
-) -> GenericElement:
+) -> AnyElement:
     """The node of ``new_joint``: ``kwargs``, then ``name``."""
     return element_node("joint", [*kwargs.items(), ("name", name)], text)
 
@@ -58,7 +85,7 @@ def site_node(
     size: Any,
     kwargs: Mapping[str, Any],
     text: TextRule = convert_to_string,
-) -> GenericElement:
+) -> AnyElement:
     """The node of ``new_site``: ``kwargs``, ``pos``, ``size``, ``rgba``, ``name``."""
     named = [("pos", pos), ("size", size), ("rgba", rgba), ("name", name)]
     return element_node("site", [*kwargs.items(), *named], text)
@@ -72,7 +99,7 @@ def geom_node(
     group: Any,
     kwargs: Mapping[str, Any],
     text: TextRule = convert_to_string,
-) -> GenericElement:
+) -> AnyElement:
     """The node of ``new_geom``: ``kwargs``, ``type``, ``size``, ``pos``, ``group``, ``name``."""
     named = [("type", type), ("size", size), ("pos", pos), ("group", group), ("name", name)]
     return element_node("geom", [*kwargs.items(), *named], text)
@@ -80,9 +107,16 @@ def geom_node(
 
 def body_node(
     name: str | None, pos: Any, kwargs: Mapping[str, Any], text: TextRule = convert_to_string
-) -> GenericElement:
+) -> AnyElement:
     """The node of ``new_body``: ``kwargs``, ``pos``, ``name``."""
     return element_node("body", [*kwargs.items(), ("pos", pos), ("name", name)], text)
+
+
+def inertial_node(
+    pos: Any, mass: Any, kwargs: Mapping[str, Any], text: TextRule = convert_to_string
+) -> AnyElement:
+    """The node of ``new_inertial``: ``kwargs``, ``mass``, ``pos`` (no name)."""
+    return element_node("inertial", [*kwargs.items(), ("mass", mass), ("pos", pos)], text)
 
 
 def new_element(tag: str, name: str | None, **kwargs: Any) -> ET.Element:
@@ -182,4 +216,4 @@ def new_inertial(pos: Any = (0, 0, 0), mass: Any = None, **kwargs: Any) -> ET.El
         '<inertial diaginertia="1 1 1" mass="1.0" pos="0 0 0" />'
 
     """
-    return new_element(tag="inertial", name=None, **{**kwargs, "mass": mass, "pos": pos})
+    return to_etree(inertial_node(pos, mass, kwargs))

@@ -94,7 +94,7 @@ def rs_geom(
     pos: Any = (0, 0, 0),
     group: Any = 0,
     **extra: Any,
-) -> GenericElement:
+) -> AnyElement:
     """Like robosuite's ``new_geom``: extra attributes, then type, size, pos, group, name."""
     return geom_node(name, type, size, pos, group, extra, value_text)
 
@@ -105,17 +105,17 @@ def rs_site(
     pos: Any = (0, 0, 0),
     size: Any = (0.005,),
     **extra: Any,
-) -> GenericElement:
+) -> AnyElement:
     """Like robosuite's ``new_site``: extra attributes, then pos, size, rgba, name."""
     return site_node(name, rgba, pos, size, extra, value_text)
 
 
-def rs_joint(name: str | None = None, **extra: Any) -> GenericElement:
+def rs_joint(name: str | None = None, **extra: Any) -> AnyElement:
     """Like robosuite's ``new_joint``: the attributes, then name."""
     return joint_node(name, extra, value_text)
 
 
-def rs_body(name: str | None = None, pos: Any = (0, 0, 0), **extra: Any) -> GenericElement:
+def rs_body(name: str | None = None, pos: Any = (0, 0, 0), **extra: Any) -> AnyElement:
     """Like robosuite's ``new_body``: the attributes, then pos, then name."""
     return body_node(name, pos, extra, value_text)
 
