@@ -10,6 +10,8 @@ changed copies; :mod:`serializers` reads and writes MJCF without losing anything
 """
 
 from mjcf_model import errors, nodes
+from mjcf_model.compat.materials import CustomMaterial, recolored_collision_geoms, with_material
+from mjcf_model.compat.mjcf_utils.queries import Categories, categorized
 from mjcf_model.compat.typed_builders import (
     new_actuator,
     new_body,
@@ -35,10 +37,9 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.transforms.composition.attach import attach, attach_all
 from mjcf_model.transforms.composition.inlining import inlined_attachments
-from mjcf_model.transforms.materials import CustomMaterial, recolored_collision_geoms, with_material
 from mjcf_model.transforms.naming.renaming import declared_names, prefix_map, prefixed, renamed
 from mjcf_model.transforms.scaling.scaled import scaled
-from mjcf_model.tree.queries import Categories, categorized, find, find_all, parent_of
+from mjcf_model.tree.queries import find, find_all, parent_of
 from mjcf_model.tree.traversal import map_elements, map_tree, walk
 from mjcf_model.values import Unparsed
 

@@ -28,8 +28,7 @@ from mjcf_model import (
     Texture,
     Worldbody,
 )
-from mjcf_model.nodes.base import AnyElement, Element, get_attribute
-from mjcf_model.transforms.materials import (
+from mjcf_model.compat.materials import (
     DEFAULT_MATERIAL,
     TEXTURE_FILES,
     CustomMaterial,
@@ -37,6 +36,7 @@ from mjcf_model.transforms.materials import (
     recolored_collision_geoms,
     with_material,
 )
+from mjcf_model.nodes.base import AnyElement, Element, get_attribute
 from serializers import dumps, load, loads, to_etree
 from tests.conftest import corpus_id, loading_corpus
 

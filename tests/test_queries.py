@@ -12,9 +12,10 @@ from robosuite.utils import mjcf_utils
 
 import serializers
 from mjcf_model import Body, Geom, Mujoco, Site, Worldbody
+from mjcf_model.compat.mjcf_utils.queries import Categories, categorized
 from mjcf_model.nodes.base import AnyElement, get_attribute
 from mjcf_model.tree import traversal
-from mjcf_model.tree.queries import Categories, categorized, find, find_all, parent_of, walk
+from mjcf_model.tree.queries import find, find_all, parent_of, walk
 from serializers import load, loads
 from tests.conftest import corpus_id, loading_corpus
 

@@ -52,7 +52,8 @@ _ATTRIBUTES_REMOVED_SINCE_OLDEST = {
 def test_every_printed_element_is_in_the_table() -> None:
     """Each element MuJoCo prints has a table entry (a new element fails here)."""
     missing = set(PRINTED) - set(SCHEMA)
-    assert sorted(missing - (set() if TABLE_RELEASE_INSTALLED else _REMOVED_SINCE_OLDEST)) == []
+    new = sorted(missing - (set() if TABLE_RELEASE_INSTALLED else _REMOVED_SINCE_OLDEST))
+    assert new == [], f"add rows for {new} to mjcf_model/schema/namespaces.py"
 
 
 @pytest.mark.parametrize("key", sorted(set(PRINTED) & set(SCHEMA)))

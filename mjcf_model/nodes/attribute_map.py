@@ -108,6 +108,8 @@ class AttributeMap(Mapping[str, str]):
     def replaced(self, changes: Mapping[str, str | None]) -> AttributeMap:
         """Return a copy with ``changes`` applied; ``None`` removes a key.
 
+        Only the new names and text are checked (the others were when this map was made).
+
         Example:
             >>> AttributeMap({"a": "1"}).replaced({"a": None, "b": "2"})
             AttributeMap({'b': '2'})
@@ -117,9 +119,13 @@ class AttributeMap(Mapping[str, str]):
         for key, value in changes.items():
             if value is None:
                 data.pop(key, None)
-            else:
-                data[key] = value
-        return AttributeMap(data)
+                continue
+            if key not in data:
+                check_name(key, "attribute name")
+            if not isinstance(value, str):
+                raise MjcfValueError(f"attribute values must be text, found {key!r}={value!r}")
+            data[key] = check_text(value, f"attribute {key!r}")
+        return AttributeMap.unchecked(data)
 
 
 #: The empty map every element without such attributes shares.

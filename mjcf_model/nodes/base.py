@@ -357,8 +357,11 @@ def with_attributes(element: _E, changes: Mapping[str, Value | None]) -> _E:
     if not changes:
         return element
     if isinstance(element, GenericElement):
-        text = {k: None if v is None else format_value(v) for k, v in changes.items()}
-        return attrs.evolve(element, attributes=element.attributes.replaced(text))
+        text = {
+            k: v if v is None or type(v) is str else format_value(v) for k, v in changes.items()
+        }
+        attributes = element.attributes.replaced(text)  # checks only the new text
+        return build_node(type(element), {"attributes": attributes}, element)
     assert isinstance(element, TypedElement)
     table = field_table(type(element))
     fields: dict[str, Any] = {}

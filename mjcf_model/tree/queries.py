@@ -1,4 +1,4 @@
-"""Looking things up in a node tree: find elements, parents and robosuite's categories.
+"""Looking things up in a node tree: find elements and parents, and a geom's role.
 
 All queries are read-only: they return nodes of the tree itself (so ``is`` works
 on the results), in document order.
@@ -19,10 +19,8 @@ on the results), in document order.
 from __future__ import annotations
 
 import operator
-from collections.abc import Callable, Collection, Iterable, Iterator
+from collections.abc import Callable, Collection, Iterator
 from typing import Literal
-
-import attrs
 
 from mjcf_model.nodes.base import (
     AnyElement,
@@ -36,10 +34,8 @@ from mjcf_model.tree.traversal import walk
 from mjcf_model.values import Value, format_value, plain_value
 
 __all__ = [
-    "Categories",
     "GeomRole",
     "attribute_values",
-    "categorized",
     "geom_role",
     "find",
     "find_all",
@@ -49,10 +45,6 @@ __all__ = [
 
 #: Keyword arguments that stand for another MJCF attribute (``class`` is a Python keyword).
 _KEYWORD_ATTRIBUTES = {"dclass": "class"}
-
-#: Sections whose element children robosuite files under ``actuators`` and ``sensors``.
-_ACTUATOR_SECTION = "actuator"
-_SENSOR_SECTION = "sensor"
 
 
 #: The reader :func:`attribute_values` made for each typed class and attribute names.
@@ -210,63 +202,6 @@ def parent_of(root: Node, node: Node) -> AnyElement | None:
     return None
 
 
-def _elements(items: Iterable[AnyElement]) -> tuple[AnyElement, ...]:
-    return tuple(items)
-
-
-@attrs.frozen(kw_only=True)
-class Categories:
-    """The elements of a tree sorted the way robosuite's ``sort_elements`` sorts them.
-
-    Every field lists elements in document order. See :func:`categorized` for
-    the rules.
-
-    Example:
-        >>> from mjcf_model import Body, Geom
-        >>> found = categorized(Body(name="b", children=[Geom(name="g")]))
-        >>> [b.name for b in found.root_body], [g.name for g in found.contact_geoms]
-        (['b'], ['g'])
-
-    """
-
-    #: Bodies whose parent is not a ``<body>`` (or that are the queried node itself).
-    root_body: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
-    #: Bodies inside another body.
-    bodies: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
-    #: Joints that are degrees of freedom (no ``joint``/``joint1`` reference attribute).
-    joints: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
-    #: Every element child of an ``<actuator>`` section.
-    actuators: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
-    #: Sites.
-    sites: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
-    #: Every element child of a ``<sensor>`` section.
-    sensors: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
-    #: Geoms in group 0 or without a group.
-    contact_geoms: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
-    #: Geoms in group 1.
-    visual_geoms: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
-
-
-def _category(element: AnyElement, parent: AnyElement | None) -> str | None:
-    """The category robosuite's ``_element_filter`` gives (sensors: see :func:`categorized`)."""
-    if parent is not None and parent.tag == _ACTUATOR_SECTION:
-        return "actuators"
-    tag = element.tag
-    if tag == "joint":
-        is_reference = (
-            get_attribute(element, "joint") is not None
-            or get_attribute(element, "joint1") is not None
-        )
-        return None if is_reference else "joints"
-    if tag == "body":
-        return "root_body" if parent is None or parent.tag != "body" else "bodies"
-    if tag == "site":
-        return "sites"
-    if parent is not None and parent.tag == _SENSOR_SECTION:
-        return "sensors"
-    return _ROLE_CATEGORIES.get(geom_role(element))  # type: ignore[arg-type]
-
-
 #: A geom's role in robosuite's convention, which the library follows.
 GeomRole = Literal["collision", "visual"]
 #: The categories of the two roles.
@@ -292,55 +227,3 @@ def geom_role(element: AnyElement) -> GeomRole | None:
     if group is None or group == "0":
         return "collision"
     return "visual" if group == "1" else None
-
-
-def categorized(node: AnyElement) -> Categories:
-    """Sort the elements of ``node`` (itself included) into robosuite's categories.
-
-    The rules are those of robosuite's ``_element_filter``, tried in this order,
-    by tag alone (so ``<default>`` geoms, joints and sites count too):
-
-    * any element child of an ``<actuator>`` section: ``actuators``;
-    * a ``joint`` with neither a ``joint`` nor a ``joint1`` attribute (not a
-      tendon or equality reference): ``joints``;
-    * a ``body`` whose parent is not a ``<body>`` (``worldbody``, ``frame``, ...)
-      or that is ``node`` itself: ``root_body``; any other body: ``bodies``;
-    * a ``site``: ``sites``;
-    * any element child of a ``<sensor>`` section: ``sensors``;
-    * a ``geom`` whose group is not written or ``0``: ``contact_geoms``; group
-      ``1``: ``visual_geoms``; other groups: neither.
-
-    Sensors differ from robosuite on purpose: robosuite files any element whose
-    tag is in its ``SENSOR_TYPES`` set (35 tags, wherever the element stands),
-    so newer sensors (``camprojection``, ``clock``, ``contact``, ``distance``,
-    ``e_kinetic``, ``plugin``, ...) are missing from its list. Here every
-    child of ``<sensor>`` is a sensor.
-
-    Example:
-        >>> from serializers import loads
-        >>> model = loads(
-        ...     '<mujoco><worldbody><body name="a"><joint name="j"/>'
-        ...     '<geom name="v" group="1"/><body name="b"/></body></worldbody>'
-        ...     '<actuator><motor name="m" joint="j"/></actuator>'
-        ...     '<sensor><clock name="t"/></sensor></mujoco>'
-        ... )
-        >>> found = categorized(model)
-        >>> [[e.name for e in getattr(found, f)] for f in ("root_body", "bodies", "joints")]
-        [['a'], ['b'], ['j']]
-        >>> [e.name for e in found.visual_geoms + found.actuators + found.sensors]
-        ['v', 'm', 't']
-
-    """
-    found: dict[str, list[AnyElement]] = {f.name: [] for f in attrs.fields(Categories)}
-    stack: list[tuple[AnyElement, AnyElement | None]] = [(node, None)]
-    while stack:
-        element, parent = stack.pop()
-        key = _category(element, parent)
-        if key is not None:
-            found[key].append(element)
-        stack.extend(
-            (child, element)
-            for child in reversed(element.children)
-            if isinstance(child, (TypedElement, GenericElement))
-        )
-    return Categories(**found)

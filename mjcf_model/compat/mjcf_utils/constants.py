@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 
-from mjcf_model.transforms import materials
+from mjcf_model.compat import materials
 
 __all__ = [
     "ALL_TEXTURES",

@@ -15,6 +15,8 @@ from typing import Any
 
 import numpy as np
 
+from mjcf_model.compat.materials import DEFAULT_MATERIAL, with_material
+from mjcf_model.compat.materials import CustomMaterial as FrozenMaterial
 from mjcf_model.compat.mjcf_utils.builders import new_element
 from mjcf_model.compat.mjcf_utils.constants import ALL_TEXTURES, TEXTURES
 from mjcf_model.compat.mjcf_utils.etree_sync import (
@@ -27,12 +29,7 @@ from mjcf_model.compat.mjcf_utils.etree_sync import (
 from mjcf_model.compat.mjcf_utils.naming import already_prefixed
 from mjcf_model.compat.mjcf_utils.text import array_to_string, parse_numbers, xml_path_completion
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
-from mjcf_model.transforms.materials import (
-    DEFAULT_MATERIAL,
-    with_collision_colour,
-    with_material,
-)
-from mjcf_model.transforms.materials import CustomMaterial as FrozenMaterial
+from mjcf_model.transforms.recolouring import with_collision_colour
 from mjcf_model.tree.traversal import edited_at
 
 __all__ = [

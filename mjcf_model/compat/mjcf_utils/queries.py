@@ -6,8 +6,10 @@ Each converts the tree, queries the nodes, and returns the live elements found.
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Collection, Iterable, Iterator
 from typing import Any
+
+import attrs
 
 from mjcf_model.compat.mjcf_utils.constants import SENSOR_TYPES
 from mjcf_model.compat.mjcf_utils.etree_sync import (
@@ -23,6 +25,8 @@ from mjcf_model.tree.queries import find_all, geom_role, parent_of
 from mjcf_model.tree.traversal import walk
 
 __all__ = [
+    "Categories",
+    "categorized",
     "filter_key",
     "find_elements",
     "find_elements_by_substring",
@@ -40,11 +44,15 @@ def _tag(node: Node | None) -> str | None:
     return node.tag if isinstance(node, (TypedElement, GenericElement)) else None
 
 
-def filter_key(node: Node, parent: Node | None) -> str | None:
+def filter_key(
+    node: Node, parent: Node | None, sensor_tags: Collection[str] | None = SENSOR_TYPES
+) -> str | None:
     """The category robosuite gives ``node`` under ``parent`` (``"joints"``...), or ``None``.
 
     Any child of ``<actuator>`` (comments too) is ``"actuators"``; a geom is contact or
-    visual by its :func:`~mjcf_model.tree.queries.geom_role`.
+    visual by its :func:`~mjcf_model.tree.queries.geom_role`. A sensor is an element
+    whose tag is in ``sensor_tags`` (robosuite's list), or with ``None`` any child of
+    ``<sensor>`` (the newer sensors too).
     """
     if parent is not None and _tag(parent) == "actuator":
         return "actuators"
@@ -56,7 +64,8 @@ def filter_key(node: Node, parent: Node | None) -> str | None:
         return "root_body" if parent is None or _tag(parent) != "body" else "bodies"
     if tag == "site":
         return "sites"
-    if tag in SENSOR_TYPES:
+    is_sensor = tag in sensor_tags if sensor_tags is not None else _tag(parent) == "sensor"
+    if is_sensor:
         return "sensors"
     if tag == "geom":
         assert isinstance(node, (TypedElement, GenericElement))
@@ -254,3 +263,92 @@ def get_elements(
         (_parent if parent is None else live[id(parent)], live[id(child)])  # type: ignore[misc]
         for parent, child in typed_pairs(node, element_type, include_root=_parent is not None)
     ]
+
+
+def _elements(items: Iterable[AnyElement]) -> tuple[AnyElement, ...]:
+    return tuple(items)
+
+
+@attrs.frozen(kw_only=True)
+class Categories:
+    """The elements of a tree sorted the way robosuite's ``sort_elements`` sorts them.
+
+    Every field lists elements in document order. See :func:`categorized` for
+    the rules.
+
+    Example:
+        >>> from mjcf_model import Body, Geom
+        >>> found = categorized(Body(name="b", children=[Geom(name="g")]))
+        >>> [b.name for b in found.root_body], [g.name for g in found.contact_geoms]
+        (['b'], ['g'])
+
+    """
+
+    #: Bodies whose parent is not a ``<body>`` (or that are the queried node itself).
+    root_body: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
+    #: Bodies inside another body.
+    bodies: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
+    #: Joints that are degrees of freedom (no ``joint``/``joint1`` reference attribute).
+    joints: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
+    #: Every element child of an ``<actuator>`` section.
+    actuators: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
+    #: Sites.
+    sites: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
+    #: Every element child of a ``<sensor>`` section.
+    sensors: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
+    #: Geoms in group 0 or without a group.
+    contact_geoms: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
+    #: Geoms in group 1.
+    visual_geoms: tuple[AnyElement, ...] = attrs.field(default=(), converter=_elements)
+
+
+def categorized(node: AnyElement) -> Categories:
+    """Sort the elements of ``node`` (itself included) into robosuite's categories.
+
+    The rules are those of robosuite's ``_element_filter``, tried in this order,
+    by tag alone (so ``<default>`` geoms, joints and sites count too):
+
+    * any element child of an ``<actuator>`` section: ``actuators``;
+    * a ``joint`` with neither a ``joint`` nor a ``joint1`` attribute (not a
+      tendon or equality reference): ``joints``;
+    * a ``body`` whose parent is not a ``<body>`` (``worldbody``, ``frame``, ...)
+      or that is ``node`` itself: ``root_body``; any other body: ``bodies``;
+    * a ``site``: ``sites``;
+    * any element child of a ``<sensor>`` section: ``sensors``;
+    * a ``geom`` whose group is not written or ``0``: ``contact_geoms``; group
+      ``1``: ``visual_geoms``; other groups: neither.
+
+    Sensors differ from robosuite on purpose: robosuite files any element whose
+    tag is in its ``SENSOR_TYPES`` set (35 tags, wherever the element stands),
+    so newer sensors (``camprojection``, ``clock``, ``contact``, ``distance``,
+    ``e_kinetic``, ``plugin``, ...) are missing from its list. Here every
+    child of ``<sensor>`` is a sensor.
+
+    Example:
+        >>> from serializers import loads
+        >>> model = loads(
+        ...     '<mujoco><worldbody><body name="a"><joint name="j"/>'
+        ...     '<geom name="v" group="1"/><body name="b"/></body></worldbody>'
+        ...     '<actuator><motor name="m" joint="j"/></actuator>'
+        ...     '<sensor><clock name="t"/></sensor></mujoco>'
+        ... )
+        >>> found = categorized(model)
+        >>> [[e.name for e in getattr(found, f)] for f in ("root_body", "bodies", "joints")]
+        [['a'], ['b'], ['j']]
+        >>> [e.name for e in found.visual_geoms + found.actuators + found.sensors]
+        ['v', 'm', 't']
+
+    """
+    found: dict[str, list[AnyElement]] = {f.name: [] for f in attrs.fields(Categories)}
+    stack: list[tuple[AnyElement, AnyElement | None]] = [(node, None)]
+    while stack:
+        element, parent = stack.pop()
+        key = filter_key(element, parent, sensor_tags=None)
+        if key is not None:
+            found[key].append(element)
+        stack.extend(
+            (child, element)
+            for child in reversed(element.children)
+            if isinstance(child, (TypedElement, GenericElement))
+        )
+    return Categories(**found)

@@ -15,7 +15,9 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from mjcf_model.compat.mjcf_utils.constants import RED
 from mjcf_model.compat.mjcf_utils.etree_sync import write_back
+from mjcf_model.compat.mjcf_utils.text import array_to_string
 from mjcf_model.compat.objects.document import ModelBacked, RobosuiteCompatible, as_node
 from mjcf_model.compat.objects.habits import named_specs, robosuite_scaled
 from mjcf_model.compat.objects.naming import (
@@ -285,7 +287,7 @@ class MujocoObject(ModelBacked, MujocoModel):
         return {
             "pos": "0 0 0",
             "size": "0.002 0.002 0.002",
-            "rgba": "1 0 0 1",
+            "rgba": array_to_string(RED),
             "type": "sphere",
             "group": "0",
         }

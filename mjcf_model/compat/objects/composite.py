@@ -21,7 +21,7 @@ import numpy as np
 from mjcf_model.compat.mjcf_utils.text import array_to_string
 from mjcf_model.compat.objects.base import Vector
 from mjcf_model.compat.objects.generated import MujocoGeneratedObject
-from mjcf_model.compat.objects.habits import OBJECT_COLLISION_COLOR
+from mjcf_model.compat.objects.habits import OBJECT_COLLISION_RGBA_TEXT
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement
 
@@ -175,7 +175,7 @@ class CompositeObject(MujocoGeneratedObject):
             own["friction"] = array_to_string(_DEFAULT_FRICTION if friction is None else friction)
             own["solref"] = array_to_string(solref)
             own["solimp"] = array_to_string(solimp)
-            own["rgba"] = OBJECT_COLLISION_COLOR
+            own["rgba"] = OBJECT_COLLISION_RGBA_TEXT
             if condim is not None:
                 own["condim"] = str(condim)
             return own

@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from mjcf_model.compat.materials import CustomMaterial
 from mjcf_model.compat.mjcf_utils.constants import BLUE, RED
 from mjcf_model.compat.mjcf_utils.text import array_to_string
 from mjcf_model.compat.objects.base import MujocoObject, Vector
@@ -26,9 +27,7 @@ from mjcf_model.compat.objects.generated import BoxObject, CylinderObject, Mujoc
 from mjcf_model.compat.objects.habits import named_specs, rs_joint
 from mjcf_model.compat.objects.naming import robosuite_prefixed
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.nodes.base import AnyElement
-from mjcf_model.transforms.materials import CustomMaterial
-from mjcf_model.transforms.naming.repeated import with_texts
+from mjcf_model.nodes.base import AnyElement, with_attributes
 from mjcf_model.tree.traversal import appended_at, with_children
 
 __all__ = ["CompositeBodyObject", "HingedBoxObject"]
@@ -153,7 +152,7 @@ class CompositeBodyObject(MujocoGeneratedObject):
             assert self.total_size is not None
             half = obj.get_bounding_box_half_size()
             pos = [(-self.total_size[k] + half[k]) + pos[k] for k in range(3)]
-        placed = with_texts(
+        placed = with_attributes(
             _without_joints(body), {"pos": array_to_string(pos), "quat": array_to_string(quat)}
         )
         self.merge_assets(other=obj)

@@ -20,10 +20,12 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from mjcf_model.compat.materials import CustomMaterial
+from mjcf_model.compat.mjcf_utils.constants import RED
 from mjcf_model.compat.mjcf_utils.text import array_to_string, get_size
 from mjcf_model.compat.objects.base import MujocoObject, Vector
 from mjcf_model.compat.objects.habits import (
-    OBJECT_COLLISION_COLOR,
+    OBJECT_COLLISION_RGBA_TEXT,
     rs_body,
     rs_geom,
     rs_joint,
@@ -33,7 +35,6 @@ from mjcf_model.compat.objects.habits import (
 from mjcf_model.compat.objects.naming import robosuite_prefixed
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement
-from mjcf_model.transforms.materials import CustomMaterial
 from mjcf_model.tree.traversal import with_children
 
 __all__ = [
@@ -80,7 +81,7 @@ class MujocoGeneratedObject(MujocoObject):
     @staticmethod
     def get_collision_attrib_template() -> dict[str, str]:
         """Attributes of a collision geom: group 0, the object collision colour."""
-        return {"group": "0", "rgba": OBJECT_COLLISION_COLOR}
+        return {"group": "0", "rgba": OBJECT_COLLISION_RGBA_TEXT}
 
     @staticmethod
     def get_visual_attrib_template() -> dict[str, str]:
@@ -174,7 +175,7 @@ class PrimitiveObject(MujocoGeneratedObject):
         super().__init__(obj_type=obj_type, duplicate_collision_geoms=duplicate_collision_geoms)
         self._name = name
         self.size = list([0.05, 0.05, 0.05] if size is None else size)
-        self.rgba = list([1, 0, 0, 1] if rgba is None else rgba)
+        self.rgba = list(RED if rgba is None else rgba)
         if len(self.rgba) != 4:
             raise MjcfValueError(f"rgba must be a length 4 array, found {self.rgba!r}")
         self.density = 1000 if density is None else density

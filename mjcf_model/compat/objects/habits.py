@@ -38,15 +38,14 @@ from mjcf_model.compat.mjcf_utils.scaling import (
 from mjcf_model.compat.mjcf_utils.text import array_to_string, text_of
 from mjcf_model.compat.objects.document import Memo, as_node, is_element
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.nodes.base import AnyElement, GenericElement, Node
-from mjcf_model.transforms.naming.repeated import with_texts
+from mjcf_model.nodes.base import AnyElement, GenericElement, Node, with_attributes
 from mjcf_model.transforms.scaling.scaled import _factors as checked_factors
 from mjcf_model.tree.defaults import MAIN, DefaultClasses
 from mjcf_model.tree.traversal import Path, map_tree, with_children
 from serializers.writer import attribute_texts
 
 __all__ = [
-    "OBJECT_COLLISION_COLOR",
+    "OBJECT_COLLISION_RGBA_TEXT",
     "absolute_files",
     "named_geoms",
     "named_specs",
@@ -61,8 +60,8 @@ __all__ = [
     "visual_twin",
 ]
 
-#: robosuite's ``OBJECT_COLLISION_COLOR``, as it writes it (``"0.5 0 0 1"``).
-OBJECT_COLLISION_COLOR = array_to_string(utils_constants.OBJECT_COLLISION_COLOR)
+#: robosuite's ``OBJECT_COLLISION_COLOR`` (a list), as its objects write it: ``"0.5 0 0 1"``.
+OBJECT_COLLISION_RGBA_TEXT = array_to_string(utils_constants.OBJECT_COLLISION_COLOR)
 
 #: ``scale_mjcf_model``'s rule per tag (robosuite's objects pass ``scale_slide_joints=False``).
 _SCALING_RULES: Mapping[str, Callable[[Node, Any], Node]] = {
@@ -101,7 +100,7 @@ def rs_geom(
 
 def rs_site(
     name: str | None = None,
-    rgba: Any = (1, 0, 0, 1),
+    rgba: Any = tuple(utils_constants.RED),
     pos: Any = (0, 0, 0),
     size: Any = (0.005,),
     **extra: Any,
@@ -198,7 +197,7 @@ def absolute_files(asset: AnyElement, folder: str) -> AnyElement:
     return with_children(
         asset,
         [
-            with_texts(c, {"file": os.path.join(folder, file)})
+            with_attributes(c, {"file": os.path.join(folder, file)})
             if is_element(c) and (file := attribute(c, "file")) is not None
             else c
             for c in asset.children
@@ -240,7 +239,7 @@ def inline_defaults(root: AnyElement, default: AnyElement) -> AnyElement:
             changes["childclass"] = None
             below = childclass
         children = [visit(c, below) if is_element(c) else c for c in element.children]
-        return with_texts(with_children(element, children), changes)
+        return with_attributes(with_children(element, children), changes)
 
     return visit(root, None)
 
@@ -267,10 +266,12 @@ def split_geoms(body: AnyElement, groups: set[int], duplicate: bool) -> AnyEleme
                 name = attribute(child, "name")
                 if name is None:
                     name = f"g{index}"
-                geom = with_texts(child, {"name": name})
+                geom = with_attributes(child, {"name": name})
                 if duplicate and group in (None, "0"):
                     twins.append(visual_twin(geom, name))
-                    geom = with_texts(geom, {"rgba": OBJECT_COLLISION_COLOR, "material": None})
+                    geom = with_attributes(
+                        geom, {"rgba": OBJECT_COLLISION_RGBA_TEXT, "material": None}
+                    )
                 kept.append(geom)
         return with_children(element, kept + twins)
 
@@ -280,7 +281,7 @@ def split_geoms(body: AnyElement, groups: set[int], duplicate: bool) -> AnyEleme
 def visual_twin(geom: AnyElement, name: str) -> AnyElement:
     """The visual twin ``<name>_visual`` of collision geom ``geom``: group 1, no contact or mass."""
     changes = {"group": "1", "conaffinity": "0", "contype": "0", "mass": "1e-8"}
-    return with_texts(geom, {**changes, "name": name + "_visual"})
+    return with_attributes(geom, {**changes, "name": name + "_visual"})
 
 
 #: ``MujocoXMLModel``'s suffix of an unnamed geom, by its group.
@@ -298,7 +299,7 @@ def named_geoms(node: AnyElement) -> AnyElement:
         if kind is None:
             return geom
         counters[kind] += 1
-        return with_texts(geom, {"name": f"g{counters[kind] - 1}_{kind}"})
+        return with_attributes(geom, {"name": f"g{counters[kind] - 1}_{kind}"})
 
     named = map_tree(name, node)  # geoms are leaves: children first is document order for them
     assert is_element(named)

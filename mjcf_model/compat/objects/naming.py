@@ -20,13 +20,13 @@ from typing import Any
 
 from mjcf_model.compat.mjcf_utils.etree_sync import attribute
 from mjcf_model.compat.mjcf_utils.naming import already_prefixed
+from mjcf_model.compat.mjcf_utils.queries import categorized
 from mjcf_model.compat.objects.document import Memo
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, attribute_items
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.transforms.naming.renaming import prefixed
 from mjcf_model.transforms.naming.repeated import PrefixPlan
-from mjcf_model.tree.queries import categorized
 from mjcf_model.values import Value
 
 __all__ = ["recorded_names", "robosuite_prefixed", "skeleton_memo"]

@@ -18,7 +18,7 @@ from mjcf_model.compat.mjcf_utils.text import array_to_string, assets_root
 from mjcf_model.compat.objects.document import find_path
 from mjcf_model.compat.objects.xml import MujocoXMLObject
 from mjcf_model.errors import MjcfLookupError
-from mjcf_model.transforms.naming.repeated import with_texts
+from mjcf_model.nodes.base import with_attributes
 from mjcf_model.tree.traversal import replaced_at, subtree_at
 
 __all__ = [
@@ -187,7 +187,7 @@ class DoorObject(_Shipped, file="objects/door.xml"):
         if path is None:
             raise MjcfLookupError(f"no joint {self.hinge_joint!r} in {self.file}")
         text = array_to_string(np.array([value]))
-        hinge = with_texts(subtree_at(world, path), {attribute_name: text})
+        hinge = with_attributes(subtree_at(world, path), {attribute_name: text})
         self._replace("worldbody", replaced_at(world, path, [hinge]))
 
     @property

@@ -59,8 +59,7 @@ from mjcf_model.compat.objects.habits import (
 )
 from mjcf_model.compat.objects.naming import recorded_names, robosuite_prefixed
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.nodes.base import AnyElement, GenericElement
-from mjcf_model.transforms.naming.repeated import with_texts
+from mjcf_model.nodes.base import AnyElement, GenericElement, with_attributes
 from mjcf_model.tree.traversal import appended_at, replaced_at, subtree_at, walk, with_children
 from mjcf_model.values import to_vec4
 from serializers import to_etree
@@ -257,7 +256,7 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
         return _PREPARED.of(document, prepared, choices)
 
     def _prepared(self, obj: AnyElement) -> AnyElement:
-        obj = with_texts(obj, {"name": "main"})
+        obj = with_attributes(obj, {"name": "main"})
         obj = split_geoms(obj, GEOMTYPE2GROUP[self.obj_type], self.duplicate_collision_geoms)
         extra = [rs_joint(**spec) for spec in self.joint_specs]
         extra.append(GenericElement(tag="site", attributes=self._default_site(hidden=True)))
@@ -285,11 +284,11 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
 
     def set_pos(self, pos: Any) -> None:
         """Set the object body's ``pos`` (written as robosuite writes numbers)."""
-        self._change("obj", lambda obj: with_texts(obj, {"pos": array_to_string(pos)}))
+        self._change("obj", lambda obj: with_attributes(obj, {"pos": array_to_string(pos)}))
 
     def set_euler(self, euler: Any) -> None:
         """Set the object body's ``euler``."""
-        self._change("obj", lambda obj: with_texts(obj, {"euler": array_to_string(euler)}))
+        self._change("obj", lambda obj: with_attributes(obj, {"euler": array_to_string(euler)}))
 
     @property
     def rot(self) -> Any:

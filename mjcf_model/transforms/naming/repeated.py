@@ -21,10 +21,9 @@ True
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
 from typing import TypeVar
 
-from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import (
     AnyElement,
     AttributeMap,
@@ -36,9 +35,9 @@ from mjcf_model.nodes.base import (
     field_table,
     with_attributes,
 )
-from mjcf_model.values import Value, check_name, check_text
+from mjcf_model.values import Value, check_text
 
-__all__ = ["MARK", "PrefixPlan", "Prefixer", "RepeatedPrefixing", "with_texts"]
+__all__ = ["MARK", "PrefixPlan", "Prefixer", "RepeatedPrefixing"]
 
 #: The marker a plan is traced with: a private-use character, legal in XML text and
 #: in no name people write (a tree whose changed attributes hold it has no plan).
@@ -265,38 +264,3 @@ def _kept_text(marked: str, prefix: str, keep: Callable[[str], bool]) -> str | N
                 words[index] = prefix + name
                 written = True
     return " ".join(words) if written else None
-
-
-def with_texts(element: _E, changes: Mapping[str, str | None]) -> _E:
-    """``element`` with attributes set to text (``None`` removes one), checking only the new text.
-
-    :func:`mjcf_model.nodes.base.with_attributes` for text; a generic element keeps
-    its other attributes without checking them again (they were checked when
-    it was built), so a transform that renames a few attributes of many
-    elements pays for those alone. Positions are kept; new attributes go last.
-
-    Example:
-        >>> geom = GenericElement(tag="geom", attributes={"a": "1", "b": "2"})
-        >>> dict(with_texts(geom, {"a": "3", "c": "4", "b": None}).attributes)
-        {'a': '3', 'c': '4'}
-
-    """
-    if not isinstance(element, GenericElement):
-        return with_attributes(element, changes)
-    attributes = _replaced_texts(element.attributes, changes)
-    return build_node(type(element), {"attributes": attributes}, element)
-
-
-def _replaced_texts(texts: AttributeMap, changes: Mapping[str, str | None]) -> AttributeMap:
-    """``texts`` with ``changes`` (``None`` removes), checking only the new text."""
-    data = {key: texts[key] for key in texts}
-    for key, text in changes.items():
-        if text is None:
-            data.pop(key, None)
-            continue
-        if key not in data:
-            check_name(key, "attribute name")
-        if not isinstance(text, str):
-            raise MjcfValueError(f"attribute values must be text, found {key!r}={text!r}")
-        data[key] = check_text(text, f"attribute {key!r}")
-    return AttributeMap.unchecked(data)

@@ -1,4 +1,4 @@
-"""Textures and materials the robosuite way, without mutation or files written.
+"""robosuite's textures and materials as frozen values, without mutation or files written.
 
 :class:`CustomMaterial` is the frozen equivalent of robosuite's class of the
 same name: it describes a texture and a material and makes their nodes.
@@ -38,6 +38,7 @@ from mjcf_model.nodes.base import (
     ordered_node,
     with_attributes,
 )
+from mjcf_model.transforms.recolouring import with_collision_colour
 from mjcf_model.tree.queries import geom_role
 from mjcf_model.tree.traversal import map_tree
 from mjcf_model.values import Floats, Value, format_value, plain_value, to_floats, to_vec4
@@ -48,7 +49,6 @@ __all__ = [
     "CustomMaterial",
     "MaterialResult",
     "recolored_collision_geoms",
-    "with_collision_colour",
     "with_material",
 ]
 
@@ -376,37 +376,3 @@ def recolored_collision_geoms(
     colour: Value | None = to_vec4(rgba)
     assert colour is not None, "to_vec4 refuses None: rgba is required"
     return with_collision_colour(node, lambda: colour, exclude)
-
-
-def with_collision_colour(
-    node: _E, colour: Callable[[], Value], exclude: Callable[[AnyElement], Any] | None = None
-) -> _E:
-    """Paint every collision geom not excluded ``colour()`` and remove its ``material``.
-
-    Collision geoms are those :func:`~mjcf_model.tree.queries.geom_role` says so of;
-    unchanged subtrees are the input's own. ``colour`` is called once, at the first
-    such geom (never when there is none), so its value may be text or numbers, as
-    the caller writes colours.
-
-    Example:
-        >>> from mjcf_model import Body, Geom
-        >>> body = Body(children=[Geom(name="c"), Geom(name="v", group=1)])
-        >>> new = with_collision_colour(body, lambda: "1 0 0 1")
-        >>> new.geoms[0].rgba, new.geoms[1] is body.geoms[1]
-        ((1.0, 0.0, 0.0, 1.0), True)
-
-    """
-    made: list[Value] = []
-
-    def visit(current: Node) -> Node:
-        if (
-            isinstance(current, (TypedElement, GenericElement))
-            and geom_role(current) == "collision"
-            and (exclude is None or not exclude(current))
-        ):
-            if not made:
-                made.append(colour())
-            return with_attributes(current, {"rgba": made[0], "material": None})
-        return current
-
-    return cast(_E, map_tree(visit, node))
