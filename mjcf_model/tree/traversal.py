@@ -17,7 +17,7 @@ True
 from __future__ import annotations
 
 import operator
-from collections.abc import Callable, Collection, Iterator, Mapping, Sequence
+from collections.abc import Callable, Collection, Iterator, Sequence
 from typing import TypeVar
 
 from mjcf_model.errors import MjcfValueError
@@ -29,27 +29,22 @@ from mjcf_model.nodes.base import (
     TypedElement,
     build_node,
     to_children,
-    with_attributes,
 )
 from mjcf_model.schema.namespaces import child_key, guess_context
 from mjcf_model.tree.ancestry import Ancestors
-from mjcf_model.values import Value
 
 __all__ = [
     "GUESS",
     "Path",
     "ElementVisitor",
-    "appended_at",
-    "edited_at",
     "keyed_walk",
     "map_elements",
     "map_tree",
     "refuse_opaque",
-    "replaced_at",
     "schema_key",
-    "subtree_at",
     "walk",
     "with_children",
+    "with_mapped_children",
 ]
 
 #: A position in a tree: the index of each step in its parent's ``children``.
@@ -194,7 +189,7 @@ def _key_of(context: str | None, tag: str) -> str | None:
         return key
 
 
-def _with_mapped(element: _A, mapped: list[Node]) -> _A:
+def with_mapped_children(element: _A, mapped: list[Node]) -> _A:
     """:func:`with_children` for children the walk built (nodes already, not checked again)."""
     old = element.children
     if len(old) == len(mapped) and all(map(operator.is_, old, mapped)):
@@ -237,7 +232,7 @@ def _map_elements(
             mapped.append(child if child_key in kept else fn(child, child_key, below))
         else:
             stack.pop()
-            result = fn(_with_mapped(element, mapped), key, ancestors)
+            result = fn(with_mapped_children(element, mapped), key, ancestors)
             if not stack:
                 return result
             stack[-1][5].append(result)
@@ -331,113 +326,3 @@ def keyed_walk(
                 break
         else:
             stack.pop()
-
-
-def replaced_at(node: _A, path: Path, new: Sequence[Node]) -> _A:
-    """``node`` with the element at ``path`` (as :func:`walk` gives it) replaced by ``new``.
-
-    ``new`` may hold several nodes, or none (the element is removed). Only the
-    elements on the path are rebuilt; everything else is shared.
-
-    Example:
-        >>> from serializers import loads
-        >>> from mjcf_model import Site
-        >>> model = loads('<mujoco><worldbody><geom size="1"/></worldbody></mujoco>')
-        >>> replaced_at(model, (0, 0), [Site(), Site()]).worldbody.elements
-        (Site(), Site())
-
-    """
-    chain: list[AnyElement] = [node]
-    for index in path[:-1]:
-        inner = chain[-1].children[index]
-        assert isinstance(inner, (TypedElement, GenericElement))
-        chain.append(inner)
-    replacement: list[Node] = list(new)
-    for holder, index in zip(reversed(chain), reversed(path), strict=True):
-        children = list(holder.children)
-        children[index : index + 1] = replacement
-        replacement = [with_children(holder, children)]
-    if not path:
-        replacement = list(new)
-    result = replacement[0]
-    assert isinstance(result, type(node))
-    return result
-
-
-def subtree_at(node: AnyElement, path: Path) -> AnyElement:
-    """The element at ``path`` (child indexes from ``node`` down, as :func:`walk` gives them).
-
-    Example:
-        >>> from mjcf_model import Body, Geom
-        >>> subtree_at(Body(children=[Body(children=[Geom(name="g")])]), (0, 0)).name
-        'g'
-
-    """
-    current = node
-    for index in path:
-        child = current.children[index]
-        if not isinstance(child, _ELEMENTS):
-            raise MjcfValueError(f"no element at {path}: child {index} is a {type(child).__name__}")
-        current = child
-    return current
-
-
-def appended_at(node: _A, path: Path, children: Sequence[Node]) -> _A:
-    """``node`` with ``children`` appended to the element at ``path``; the rest is shared.
-
-    Example:
-        >>> from mjcf_model import Body, Geom
-        >>> appended_at(Body(children=[Body()]), (0,), [Geom()]).bodies[0].geoms
-        (Geom(),)
-
-    """
-    target = subtree_at(node, path)
-    grown = with_children(target, [*target.children, *children])
-    return grown if not path else replaced_at(node, path, [grown])  # type: ignore[return-value]
-
-
-def edited_at(node: _N, edits: Mapping[Path, Mapping[str, Value | None]]) -> _N:
-    """``node`` with attribute changes applied by path (``None`` removes one); the rest shared.
-
-    Only the elements on the edited paths are rebuilt, each once, however many
-    edits lie below it; a path to a comment is skipped.
-
-    Example:
-        >>> from mjcf_model import Body, Geom
-        >>> body = Body(children=[Geom(name="a"), Geom(name="b")])
-        >>> new = edited_at(body, {(1,): {"name": "c"}, (): {"name": "top"}})
-        >>> new.name, [g.name for g in new.geoms], new.children[0] is body.children[0]
-        ('top', ['a', 'c'], True)
-
-    """
-    if not edits or not isinstance(node, _ELEMENTS):
-        return node
-    touched = {path[:depth] for path in edits for depth in range(len(path) + 1)}
-
-    def finished(element: AnyElement, path: Path, mapped: list[Node] | None) -> AnyElement:
-        if mapped is not None:
-            element = _with_mapped(element, mapped)
-        changes = edits.get(path)
-        return with_attributes(element, changes) if changes else element
-
-    # An explicit stack, so trees of any depth are edited; untouched subtrees are not entered.
-    stack: list[tuple[AnyElement, Path, list[Node], Iterator[tuple[int, Node]]]] = [
-        (node, (), [], iter(enumerate(node.children)))
-    ]
-    while True:
-        element, path, mapped, pending = stack[-1]
-        for index, child in pending:
-            below = (*path, index)
-            if below not in touched or not isinstance(child, _ELEMENTS):
-                mapped.append(child)
-            elif child.children:
-                stack.append((child, below, [], iter(enumerate(child.children))))
-                break
-            else:
-                mapped.append(finished(child, below, None))
-        else:
-            stack.pop()
-            result = finished(element, path, mapped)
-            if not stack:
-                return result  # type: ignore[return-value]
-            stack[-1][2].append(result)

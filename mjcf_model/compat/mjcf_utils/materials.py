@@ -30,7 +30,7 @@ from mjcf_model.compat.mjcf_utils.naming import already_prefixed
 from mjcf_model.compat.mjcf_utils.text import array_to_string, parse_numbers, xml_path_completion
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.transforms.recolouring import with_collision_colour
-from mjcf_model.tree.traversal import edited_at
+from mjcf_model.tree.paths import edited_at
 
 __all__ = [
     "CustomMaterial",

@@ -14,7 +14,7 @@ from mjcf_model.compat.mjcf_utils.etree_sync import (
     write_back,
 )
 from mjcf_model.nodes.base import GenericElement, Node, TypedElement, attribute_items
-from mjcf_model.tree.traversal import edited_at
+from mjcf_model.tree.paths import edited_at
 
 __all__ = ["add_prefix", "already_prefixed", "prefixed_attributes"]
 

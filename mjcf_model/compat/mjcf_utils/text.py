@@ -24,7 +24,6 @@ __all__ = [
     "save_sim_model",
     "string_to_array",
     "text_of",
-    "three_factors",
     "xml_path_completion",
 ]
 
@@ -275,15 +274,9 @@ def normalize_scale_array(scale: Any) -> npt.NDArray[Any]:
         (array([2, 2, 2]), array([1., 2., 3.]))
 
     """
-    scale_array = three_factors(scale)
-    if scale_array is None:
-        raise ValueError("Scale must be a scalar or a 3-element array.")
-    return scale_array
-
-
-def three_factors(scale: Any) -> npt.NDArray[Any] | None:
-    """The factors of :func:`normalize_scale_array`, or ``None`` where it raises."""
     scale_array = np.array(scale).flatten()
     if scale_array.size == 1:
         return np.repeat(scale_array, 3)
-    return scale_array if scale_array.size == 3 else None
+    if scale_array.size != 3:
+        raise ValueError("Scale must be a scalar or a 3-element array.")
+    return scale_array

@@ -28,7 +28,8 @@ from mjcf_model.compat.objects.habits import named_specs, rs_joint
 from mjcf_model.compat.objects.naming import robosuite_prefixed
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, with_attributes
-from mjcf_model.tree.traversal import appended_at, with_children
+from mjcf_model.tree.paths import appended_at
+from mjcf_model.tree.traversal import with_children
 
 __all__ = ["CompositeBodyObject", "HingedBoxObject"]
 

@@ -37,15 +37,9 @@ from typing import Any, ClassVar, Generic, TypeGuard, TypeVar
 from mjcf_model.compat.mjcf_utils.etree_sync import attribute, sync_element
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, Node, TypedElement
+from mjcf_model.tree.paths import appended_at, replaced_at, subtree_at
 from mjcf_model.tree.queries import find
-from mjcf_model.tree.traversal import (
-    Path,
-    appended_at,
-    replaced_at,
-    subtree_at,
-    walk,
-    with_children,
-)
+from mjcf_model.tree.traversal import Path, walk, with_children
 from serializers import from_etree, to_etree
 
 __all__ = [

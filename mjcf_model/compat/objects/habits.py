@@ -39,7 +39,7 @@ from mjcf_model.compat.mjcf_utils.text import array_to_string, text_of
 from mjcf_model.compat.objects.document import Memo, as_node, is_element
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, with_attributes
-from mjcf_model.transforms.scaling.scaled import _factors as checked_factors
+from mjcf_model.transforms.scaling.scaled import three_factors
 from mjcf_model.tree.defaults import MAIN, DefaultClasses
 from mjcf_model.tree.traversal import Path, map_tree, with_children
 from serializers.writer import attribute_texts
@@ -141,7 +141,7 @@ def named_specs(
 def robosuite_scaled(node: AnyElement, scale: Any, tags: Iterable[str]) -> AnyElement:
     """What robosuite's objects scale below ``node`` (tags ``tags``), written as robosuite does."""
     chosen = frozenset(tags) & _SCALING_RULES.keys()
-    factors = np.array(checked_factors(scale))
+    factors = np.array(three_factors(scale))
 
     def scale_one(node: Node) -> Node:
         if not is_element(node) or node.tag not in chosen:

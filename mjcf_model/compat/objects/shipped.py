@@ -19,7 +19,7 @@ from mjcf_model.compat.objects.document import find_path
 from mjcf_model.compat.objects.xml import MujocoXMLObject
 from mjcf_model.errors import MjcfLookupError
 from mjcf_model.nodes.base import with_attributes
-from mjcf_model.tree.traversal import replaced_at, subtree_at
+from mjcf_model.tree.paths import replaced_at, subtree_at
 
 __all__ = [
     "BottleObject",

@@ -60,7 +60,8 @@ from mjcf_model.compat.objects.habits import (
 from mjcf_model.compat.objects.naming import recorded_names, robosuite_prefixed
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, with_attributes
-from mjcf_model.tree.traversal import appended_at, replaced_at, subtree_at, walk, with_children
+from mjcf_model.tree.paths import appended_at, replaced_at, subtree_at
+from mjcf_model.tree.traversal import walk, with_children
 from mjcf_model.values import to_vec4
 from serializers import to_etree
 

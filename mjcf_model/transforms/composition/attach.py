@@ -49,7 +49,8 @@ from mjcf_model.transforms.composition.places import (
 )
 from mjcf_model.transforms.naming.renaming import declarations, declared_names, prefixed_declared
 from mjcf_model.transforms.naming.repeated import RepeatedPrefixing
-from mjcf_model.tree.traversal import keyed_walk, refuse_opaque, replaced_at, walk, with_children
+from mjcf_model.tree.paths import replaced_at
+from mjcf_model.tree.traversal import keyed_walk, refuse_opaque, walk, with_children
 
 __all__ = ["AttachKind", "attach", "attach_all", "attach_in_frame"]
 

@@ -82,8 +82,9 @@ from mjcf_model.transforms.composition.conventions import in_conventions
 from mjcf_model.transforms.composition.keyframes import keys_of
 from mjcf_model.transforms.naming.generated import declarations, model_file_path
 from mjcf_model.transforms.naming.renaming import declared_names
+from mjcf_model.tree.paths import replaced_at
 from mjcf_model.tree.traversal import Path as TreePath
-from mjcf_model.tree.traversal import keyed_walk, replaced_at, walk, with_children
+from mjcf_model.tree.traversal import keyed_walk, walk, with_children
 
 if TYPE_CHECKING:
     import mujoco

@@ -39,7 +39,7 @@ from mjcf_model.transforms.scaling.rules import RULES
 from mjcf_model.tree.defaults import DefaultClasses
 from mjcf_model.tree.traversal import GUESS, map_elements, refuse_opaque
 
-__all__ = ["MassPolicy", "scaled"]
+__all__ = ["MassPolicy", "scaled", "three_factors"]
 
 #: ``"keep"``: every body keeps its mass (written masses stay; geoms weighed by
 #: density get the density that keeps their mass) and inertias scale with length
@@ -49,7 +49,14 @@ __all__ = ["MassPolicy", "scaled"]
 MassPolicy = Literal["keep", "volume"]
 
 
-def _factors(factor: npt.ArrayLike) -> tuple[float, float, float]:
+def three_factors(factor: npt.ArrayLike) -> tuple[float, float, float]:
+    """One factor for all three axes, or three: finite and positive (the one place they are read).
+
+    Example:
+        >>> three_factors(2), three_factors([1, 2, 3])
+        ((2.0, 2.0, 2.0), (1.0, 2.0, 3.0))
+
+    """
     values = np.asarray(factor, dtype=float).ravel()
     if values.size == 1:
         values = np.repeat(values, 3)
@@ -103,7 +110,7 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
         Inertial(pos=(2.0, 0.0, 0.0), diaginertia=(32.0, 32.0, 32.0), mass=16.0)
 
     """
-    factors = _factors(factor)
+    factors = three_factors(factor)
     if mass not in ("keep", "volume"):
         raise MjcfValueError(f"mass policy is 'keep' or 'volume', found {mass!r}")
     if factors == (1.0, 1.0, 1.0):
