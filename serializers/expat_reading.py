@@ -39,6 +39,8 @@ __all__ = ["Reader"]
 
 
 #: The first two bytes by which expat recognises UTF-16, and the codec that reads it.
+#: The byte order marks of UTF-32, which neither MuJoCo nor expat reads.
+_UTF32_BOMS = frozenset({b"\xff\xfe\x00\x00", b"\x00\x00\xfe\xff"})
 _UTF16_STARTS = {
     b"\xff\xfe": "utf-16",
     b"\xfe\xff": "utf-16",
@@ -280,6 +282,10 @@ class Reader:
     def parse(self, data: str | bytes) -> list[Node]:
         """Read one document; text MuJoCo's lenient parser reads is repaired first."""
         raw = data.encode("utf-8", "surrogatepass") if isinstance(data, str) else data
+        if raw[:4] in _UTF32_BOMS:
+            raise MjcfSyntaxError(
+                "a UTF-32 file; save it as UTF-8, which MuJoCo reads", file=self.filename
+            )
         utf16 = _UTF16_STARTS.get(raw[:2])
         if utf16 is not None:
             # expat follows a UTF-16 byte order mark, and detects UTF-16 from a first
@@ -291,6 +297,12 @@ class Reader:
                     f"malformed UTF-16: {error.reason}; save the file as UTF-8, which MuJoCo reads",
                     file=self.filename,
                 ) from None
+        if b"\x00" in raw[:2]:  # expat would take the text for UTF-16, whatever it is
+            raise MjcfSyntaxError(
+                "a NUL byte at the start, which XML cannot carry; save the file as UTF-8",
+                file=self.filename,
+                line=1,
+            )
         try:
             self.raw = raw
             self.origin = SourceText(raw)

@@ -730,6 +730,9 @@ MINIMAL_CASES: dict[str, bytes] = {
     + _named("\u00e9".encode()),
     "UTF-16 declared, UTF-8 bytes": b'<?xml version="1.0" encoding="UTF-16"?><mujoco/>',
     "UTF-16 honest": '<?xml version="1.0" encoding="UTF-16"?><mujoco/>'.encode("utf-16"),
+    "UTF-32 with a byte order mark": '<?xml version="1.0" encoding="UTF-32"?><mujoco><!-- c -->'
+    "</mujoco>".encode("utf-32"),
+    "UTF-32 without one": "<mujoco><!-- c --></mujoco>".encode("utf-32-le"),
     "BOM": b"\xef\xbb\xbf<mujoco/>",
     "whitespace before the declaration": b'  <?xml version="1.0"?><mujoco/>',
     "empty encoding declared": b'<?xml version="1.0" encoding=""?>' + _named(b"b"),

@@ -23,6 +23,7 @@ from email.message import Message
 from pathlib import Path
 
 import mujoco
+import pytest
 
 import mjcf_model
 from tests.conftest import compiling_corpus, corpus_files
@@ -164,3 +165,24 @@ def test_mujoco_is_a_tested_release() -> None:
     else:
         assert _release(_pinned("oldest", "mujoco")) <= installed
         assert installed <= _release(_pinned("newest", "mujoco"))
+
+
+@pytest.mark.parametrize(
+    "statement",
+    [
+        "import serializers",
+        "from serializers import loads, to_dict",
+        "import serializers.dicts",
+        "import mjcf_model",
+        "import mjcf_model.compat.objects",
+        "from mjcf_model.compat import mjcf_utils",
+        "import mjcf_model.strategies",
+        "import mjcf_model.tools.cli",
+    ],
+)
+def test_each_public_module_imports_first_in_a_fresh_interpreter(statement: str) -> None:
+    """Whatever a program imports first imports: the packages have no import cycle."""
+    result = subprocess.run(
+        [sys.executable, "-c", statement], capture_output=True, text=True, check=False
+    )
+    assert result.returncode == 0, result.stderr

@@ -20,8 +20,8 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.tree.traversal import Path
 from mjcf_model.values import format_value
-from serializers import from_etree
 from serializers.canonical import attribute_texts
+from serializers.etree_reading import from_etree
 
 __all__ = [
     "Edits",
