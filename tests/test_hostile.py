@@ -30,7 +30,9 @@ from mjcf_model import (
     MjcfSyntaxError,
     MjcfValueError,
     Mujoco,
+    Node,
     Unparsed,
+    attach,
     prefixed,
     scaled,
 )
@@ -189,8 +191,9 @@ OPERATIONS: dict[str, Callable[[Mujoco], object]] = {
         (_chain_text(MUJOCO_DEEPEST_BODY_CHAIN), "bodies as deep as MuJoCo reads"),
         (_default_chain_text(495), "default classes as deep as MuJoCo reads"),
         (_chain_text(5_000), "bodies ten times deeper"),
+        (_default_chain_text(5_000), "default classes ten times deeper"),
     ],
-    ids=["bodies-496", "defaults-495", "bodies-5000"],
+    ids=["bodies-496", "defaults-495", "bodies-5000", "defaults-5000"],
 )
 def test_deep_trees_work_without_recursion_limits(text: str, label: str, operation: str) -> None:
     """Every operation works at MuJoCo's depth and beyond, with Python's default limit."""
@@ -443,3 +446,23 @@ def test_memory_stays_a_small_multiple_of_a_huge_attribute() -> None:
     assert len(written) > len(text) * 0.9
     assert load_peak < 12 * len(text), load_peak / len(text)
     assert dump_peak < 12 * len(text), dump_peak / len(text)
+
+
+def test_attach_classes_replicates_nested_deeper_than_the_recursion_limit() -> None:
+    """A parent whose world nests replicates 3,000 deep keeps its main defaults when attached to."""
+    depth = 3_000
+    opened = '<replicate count="1" offset="0 0 0">' * depth
+    parent = loads(
+        f'<mujoco><default><geom rgba="1 0 0 1"/></default><worldbody>{opened}'
+        f'<geom size="0.1"/>{"</replicate>" * depth}</worldbody></mujoco>'
+    )
+    child = loads(
+        '<mujoco><default><geom rgba="0 1 0 1"/></default>'
+        '<worldbody><body name="b"><geom size="0.1"/></body></worldbody></mujoco>'
+    )
+    scene = attach(parent, child, prefix="c_", at=None)
+    inner: Node = scene.worldbody.children[0]  # the replicates; the attached body follows
+    for _ in range(depth - 1):
+        (inner,) = inner.children  # type: ignore[attr-defined]
+    (geom,) = inner.children  # type: ignore[attr-defined]
+    assert geom.dclass == "parent_main"  # the parent's main class, moved where it applies

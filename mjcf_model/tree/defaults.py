@@ -15,7 +15,7 @@ class's parents. Transforms that depend on a value written elsewhere (a joint's
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from types import MappingProxyType
 from typing import Any
 
@@ -24,6 +24,7 @@ import attrs
 from mjcf_model.nodes.base import (
     AnyElement,
     GenericElement,
+    Node,
     TypedElement,
     attribute_items,
     get_attribute,
@@ -82,21 +83,27 @@ class DefaultClasses:
         parents: dict[str, str | None] = {MAIN: None}
         settings: dict[tuple[str, str], AnyElement] = {}
 
-        def read(default: AnyElement, name: str, parent: str | None) -> None:
-            parents[name] = parent
-            for child in default.children:
-                if not isinstance(child, (TypedElement, GenericElement)):
-                    continue
-                if child.tag == "default":
-                    inner = get_attribute(child, "class")
-                    read(child, inner if isinstance(inner, str) else "", name)
-                else:
+        elements = (TypedElement, GenericElement)
+        tops = [c for c in model.children if isinstance(c, elements) and c.tag == "default"]
+        for top in tops if model.tag == "mujoco" else []:
+            parents[MAIN] = None
+            # Each level: the children of a <default> still to read, and its class name;
+            # an explicit stack, read in document order, so classes nest to any depth.
+            stack: list[tuple[Iterator[Node], str]] = [(iter(top.children), MAIN)]
+            while stack:
+                pending, name = stack[-1]
+                for child in pending:
+                    if not isinstance(child, elements):
+                        continue
+                    if child.tag == "default":
+                        inner = get_attribute(child, "class")
+                        inner_name = inner if isinstance(inner, str) else ""
+                        parents[inner_name] = name
+                        stack.append((iter(child.children), inner_name))
+                        break
                     settings[(name, child.tag)] = child
-
-        if model.tag == "mujoco":
-            for child in model.children:
-                if isinstance(child, (TypedElement, GenericElement)) and child.tag == "default":
-                    read(child, MAIN, None)
+                else:
+                    stack.pop()
         return cls(parents=MappingProxyType(parents), settings=MappingProxyType(settings))
 
     def chain(self, name: str) -> tuple[str, ...]:

@@ -30,7 +30,7 @@ as before.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 
 import attrs
 
@@ -60,13 +60,25 @@ def _classed_world(nodes: Sequence[Node], main: Default) -> list[Node]:
     """:func:`classed` for the world, going into the replicates at its top level.
 
     A replicate has no ``childclass``; its copies take the classes of the world.
+    Nested replicates are entered from an explicit stack: any depth is classed.
     """
-    result = []
-    for node in classed(nodes, main, "body"):
-        if isinstance(node, (TypedElement, GenericElement)) and node.tag in _TRANSPARENT:
-            node = with_children(node, _classed_world(node.children, main))
-        result.append(node)
-    return result
+    # Each level: the classed nodes still to go through, what is done, and the
+    # replicate they belong to (``None`` for the world itself).
+    stack: list[tuple[Iterator[Node], list[Node], AnyElement | None]] = [
+        (iter(classed(nodes, main, "body")), [], None)
+    ]
+    while True:
+        pending, done, owner = stack[-1]
+        for node in pending:
+            if isinstance(node, (TypedElement, GenericElement)) and node.tag in _TRANSPARENT:
+                stack.append((iter(classed(node.children, main, "body")), [], node))
+                break
+            done.append(node)
+        else:
+            stack.pop()
+            if owner is None:
+                return done
+            stack[-1][1].append(with_children(owner, done))
 
 
 def _main_renamed(model: Mujoco, name: str) -> Mujoco:
