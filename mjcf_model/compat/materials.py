@@ -18,7 +18,6 @@ every unchanged subtree with the input.
 
 from __future__ import annotations
 
-import importlib.util
 import os
 from collections.abc import Callable, Mapping
 from types import MappingProxyType
@@ -26,7 +25,8 @@ from typing import Any, Generic, NamedTuple, TypeVar, cast
 
 import attrs
 
-from mjcf_model.errors import MjcfLookupError, MjcfValueError
+from mjcf_model.compat.assets import assets_root
+from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.asset import Material, Texture
 from mjcf_model.nodes.base import (
     AnyElement,
@@ -123,15 +123,10 @@ def _to_texts(value: Mapping[str, object] | None) -> AttributeMap:
     return AttributeMap(texts)
 
 
-def _textures_dir() -> str:
-    """The directory of robosuite's textures, found without importing robosuite."""
-    spec = importlib.util.find_spec("robosuite")
-    if spec is None or not spec.submodule_search_locations:
-        raise MjcfLookupError(
-            "named textures are image files shipped with robosuite, which is not installed; "
-            "install robosuite, or give a file path or an RGBA instead"
-        )
-    return os.path.join(spec.submodule_search_locations[0], "models", "assets", "textures")
+_NO_TEXTURES = (
+    "named textures are image files shipped with robosuite, which is not installed; "
+    "install robosuite, or give a file path or an RGBA instead"
+)
 
 
 @attrs.frozen(kw_only=True)
@@ -219,7 +214,9 @@ class CustomMaterial:
             if "/" in texture:
                 values["file"] = texture
             else:
-                values["file"] = os.path.join(_textures_dir(), TEXTURE_FILES[texture])
+                values["file"] = os.path.join(
+                    assets_root(_NO_TEXTURES), "textures", TEXTURE_FILES[texture]
+                )
         elif texture is not None:
             rgb = texture[:3]
             values["builtin"] = "flat"

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import importlib.util
 import os
 from collections.abc import Iterable
 from typing import Any, cast
@@ -10,12 +9,11 @@ from typing import Any, cast
 import numpy as np
 import numpy.typing as npt
 
-from mjcf_model.errors import MjcfLookupError
+from mjcf_model.compat.assets import assets_root
 
 __all__ = [
     "add_to_dict",
     "array_to_string",
-    "assets_root",
     "convert_to_string",
     "get_ids",
     "get_size",
@@ -29,21 +27,6 @@ __all__ = [
 
 #: The element types ``get_ids`` accepts.
 _ID_TYPES = ["geom", "body", "joint", "site", "actuator", "sensor", "tendon", "camera", "light"]
-
-
-def assets_root(missing: str | None = None) -> str:
-    """The ``models/assets`` directory of robosuite, found without importing it.
-
-    Raises ``MjcfLookupError`` (with message ``missing``, if given) when robosuite is absent.
-    """
-    spec = importlib.util.find_spec("robosuite")
-    if spec is None or not spec.submodule_search_locations:
-        raise MjcfLookupError(
-            missing
-            or "robosuite's asset files (named textures, relative asset paths) are needed, "
-            "but robosuite is not installed; install robosuite or give an absolute path"
-        )
-    return os.path.join(next(iter(spec.submodule_search_locations)), "models", "assets")
 
 
 def xml_path_completion(xml_path: str, root: str | None = None) -> str:

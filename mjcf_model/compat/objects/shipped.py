@@ -14,7 +14,8 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.compat.mjcf_utils.text import array_to_string, assets_root
+from mjcf_model.compat.assets import assets_root
+from mjcf_model.compat.mjcf_utils.text import array_to_string
 from mjcf_model.compat.objects.document import find_path
 from mjcf_model.compat.objects.xml import MujocoXMLObject
 from mjcf_model.errors import MjcfLookupError
