@@ -362,3 +362,13 @@ def test_composite_scaling_matches(scale: Any) -> None:
     theirs.set_scale(scale)
     mine.set_scale(scale)
     assert_same_object(mine, theirs)
+
+
+@pytest.mark.parametrize("geom_type", ["mesh", "plane", "hfield"])
+def test_composite_unsupported_geom_type_raises(geom_type: str) -> None:
+    """A geom type robosuite cannot place raises there (an Exception) and a MjcfValueError here."""
+    kwargs = {**COMPOSITE, "geom_types": [geom_type, "cylinder", "sphere", "capsule"]}
+    with pytest.raises(Exception, match="unsupported geom type"):
+        rs.CompositeObject(**kwargs)
+    with pytest.raises(MjcfValueError, match=f"unsupported geom type '{geom_type}'"):
+        ours.CompositeObject(**kwargs)

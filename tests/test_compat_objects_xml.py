@@ -136,3 +136,28 @@ def test_prefixes_references_robosuite_misses(tmp_path: Path) -> None:
     mine.asset[0].set("file", str(Path(xml_path_completion("textures/wood-tiles.png"))))
     model = mine.get_model()
     assert model.neq == 1 and model.ntex == 1
+
+
+def test_deep_object_file_is_read_without_recursion(tmp_path: Path) -> None:
+    """An object 3,000 bodies deep reads: defaults inlined through childclass, geoms split."""
+    depth = 3000
+    inner = '<geom size="0.01"/>'
+    for level in reversed(range(depth)):
+        inner = f'<body name="b{level}"><geom size="0.01" group="1"/>{inner}</body>'
+    path = tmp_path / "deep.xml"
+    path.write_text(
+        '<mujoco><default><default class="grey"><geom rgba="0.5 0.5 0.5 1"/></default></default>'
+        '<worldbody><body><body name="object" childclass="grey">'
+        f"{inner}</body></body></worldbody></mujoco>"
+    )
+    deep = ours.MujocoXMLObject(str(path), name="deep")
+    geoms = list(deep.get_obj().iter("geom"))
+    assert len(geoms) == depth + 2  # the innermost collision geom gains a visual twin
+    assert all(geom.get("rgba") in ("0.5 0.5 0.5 1", "0.5 0 0 1") for geom in geoms)
+    assert [geom.get("name") for geom in geoms[:2]] == ["deep_g0", "deep_g1"]
+    assert geoms[-1].get("name") == f"deep_g{depth}_visual"
+    assert all(element.get("childclass") is None for element in deep.get_obj().iter())
+    assert len(deep.visual_geoms) == depth + 1 and deep.contact_geoms == [f"deep_g{depth}"]
+    live = geoms[-2]
+    deep.set_scale(2)  # the live elements handed out are patched in place, all the way down
+    assert live.get("size") == "0.02" and next(deep.get_obj().iter("geom")) is geoms[0]

@@ -20,9 +20,8 @@ import numpy as np
 
 from mjcf_model.compat.mjcf_utils.text import array_to_string
 from mjcf_model.compat.objects.base import Vector
-from mjcf_model.compat.objects.generated import MujocoGeneratedObject
+from mjcf_model.compat.objects.generated import MujocoGeneratedObject, half_extents
 from mjcf_model.compat.objects.habits import OBJECT_COLLISION_RGBA_TEXT
-from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement
 
 __all__ = ["CompositeObject"]
@@ -184,21 +183,8 @@ class CompositeObject(MujocoGeneratedObject):
         visual["rgba"] = rgba if rgba is not None else self.rgba
         return self._geom_pair(obj_type, base, collision, visual)
 
-    @staticmethod
-    def _size_to_cartesian_half_lengths(geom_type: Any, geom_size: Any) -> Any:
-        """The x, y and z half-lengths of a geom's bounding box, from its type and size."""
-        if geom_type in ("box", "ellipsoid"):
-            return geom_size
-        if geom_type == "sphere":
-            return [geom_size[0], geom_size[0], geom_size[0]]
-        if geom_type == "capsule":
-            return [geom_size[0], geom_size[0], geom_size[0] + geom_size[1]]
-        if geom_type == "cylinder":
-            return [geom_size[0], geom_size[0], geom_size[1]]
-        raise MjcfValueError(
-            f"unsupported geom type {geom_type!r} for a composite object; "
-            "supported: box, ellipsoid, sphere, capsule, cylinder"
-        )
+    #: robosuite's name for :func:`~mjcf_model.compat.objects.generated.half_extents`.
+    _size_to_cartesian_half_lengths = staticmethod(half_extents)
 
     bottom_offset = property(lambda self: np.array([0.0, 0.0, -self.total_size[2]]), doc="Below.")
     top_offset = property(lambda self: np.array([0.0, 0.0, self.total_size[2]]), doc="Above.")

@@ -233,35 +233,48 @@ class EtreeView:
         return element
 
     def _record(self, node: AnyElement, element: ET.Element) -> ET.Element:
-        kids = list(element)
-        self._kids[element] = kids
-        for child, kid in zip(node.children, kids, strict=True):
-            if is_element(child):
-                self._record(child, kid)
+        """Record the elements built for ``node``'s subtree (a stack: any depth)."""
+        pending = [(node, element)]
+        while pending:
+            parent, built = pending.pop()
+            kids = self._kids[built] = list(built)
+            pending.extend(
+                (child, kid)
+                for child, kid in zip(parent.children, kids, strict=True)
+                if is_element(child)
+            )
         return element
 
     def _forget(self, element: ET.Element) -> None:
-        for kid in self._kids.pop(element, []):
-            self._forget(kid)
+        pending = [element]
+        while pending:
+            pending.extend(self._kids.pop(pending.pop(), []))
 
     def _patch(self, old: AnyElement, new: AnyElement, element: ET.Element) -> None:
-        if old is new:
-            return
-        sync_element(element, old, new)
-        if old.children is not new.children:
-            self._patch_children(old, new, element)
+        """Make ``element`` show ``new`` instead of ``old`` (a stack: any depth)."""
+        pending = [(old, new, element)]
+        while pending:
+            old, new, element = pending.pop()
+            if old is new:
+                continue
+            sync_element(element, old, new)
+            if old.children is not new.children:
+                pending.extend(self._patch_children(old, new, element))
 
-    def _patch_children(self, old: AnyElement, new: AnyElement, element: ET.Element) -> None:
+    def _patch_children(
+        self, old: AnyElement, new: AnyElement, element: ET.Element
+    ) -> list[tuple[AnyElement, AnyElement, ET.Element]]:
+        """Patch the children of ``element``; the changed children left to patch are returned."""
         kids = self._kids.get(element, [])
         pairs = list(zip(old.children, new.children, strict=False))
         if len(old.children) == len(new.children) and all(
             _same_tag(a, b) for a, b in pairs
         ):  # the same elements, some of them changed
-            for (a, b), kid in zip(pairs, kids, strict=True):
-                if a is not b and is_element(a):
-                    assert is_element(b)
-                    self._patch(a, b, kid)
-            return
+            return [
+                (a, b, kid)
+                for (a, b), kid in zip(pairs, kids, strict=True)
+                if a is not b and is_element(a) and is_element(b)
+            ]
         # Elements came or went: keep the elements of unchanged children, build the others.
         by_identity = {id(child): index for index, child in enumerate(old.children)}
         used: set[int] = set()
@@ -288,6 +301,7 @@ class EtreeView:
         for kid in dropped:
             self._forget(kid)
         self._kids[element] = new_kids
+        return []
 
 
 def _same_tag(a: Node, b: Node) -> bool:

@@ -63,6 +63,32 @@ def material_parts(material: Any) -> tuple[str, str, bool, AnyElement, AnyElemen
     return str(material.name), tex_attrib["name"], bool(material.shared), texture, node
 
 
+def half_extents(geom_type: Any, size: Any) -> Any:
+    """The x, y and z half-lengths of a geom's bounding box, from its type and size.
+
+    robosuite's own expressions (its primitives' offsets and ``CompositeObject``'s placing).
+
+    Raises:
+        MjcfValueError: a geom type other than box, ellipsoid, sphere, capsule, cylinder.
+
+    Example:
+        >>> half_extents("capsule", [0.02, 0.04])
+        [0.02, 0.02, 0.06]
+
+    """
+    if geom_type in ("box", "ellipsoid"):
+        return size
+    if geom_type == "sphere":
+        return [size[0], size[0], size[0]]
+    if geom_type == "capsule":
+        return [size[0], size[0], size[0] + size[1]]
+    if geom_type == "cylinder":
+        return [size[0], size[0], size[1]]
+    raise MjcfValueError(
+        f"unsupported geom type {geom_type!r}; supported: box, ellipsoid, sphere, capsule, cylinder"
+    )
+
+
 class MujocoGeneratedObject(MujocoObject):
     """robosuite's ``MujocoGeneratedObject``: geom templates and (shared) materials."""
 
@@ -291,22 +317,27 @@ class _SizedPrimitive(PrimitiveObject):
                 f"{self._shape} size should have length {count}, found {self.size!r}"
             )
 
+    bottom_offset = property(
+        lambda self: np.array([0, 0, -1 * half_extents(self.geom_type, self.size)[2]]), doc="Below."
+    )
+    top_offset = property(
+        lambda self: np.array([0, 0, half_extents(self.geom_type, self.size)[2]]), doc="Above."
+    )
+    horizontal_radius = property(lambda self: self.size[0], doc="The radius.")
+
+    def get_bounding_box_half_size(self) -> Vector:
+        """The half-lengths along x, y and z."""
+        return np.array(half_extents(self.geom_type, self.size))
+
 
 class BoxObject(_SizedPrimitive):
     """A box; ``size`` is three half-lengths (drawn from 0.03 to 0.07 by default)."""
 
     _robosuite_class = ("robosuite.models.objects", "BoxObject")
     geom_type = "box"
-
-    bottom_offset = property(lambda self: np.array([0, 0, -1 * self.size[2]]), doc="Below.")
-    top_offset = property(lambda self: np.array([0, 0, self.size[2]]), doc="Above.")
     horizontal_radius = property(
         lambda self: np.linalg.norm(self.size[0:2], 2), doc="The length of the x, y half-lengths."
     )
-
-    def get_bounding_box_half_size(self) -> Vector:
-        """The three half-lengths."""
-        return np.array([self.size[0], self.size[1], self.size[2]])
 
 
 class BallObject(_SizedPrimitive):
@@ -317,14 +348,6 @@ class BallObject(_SizedPrimitive):
     _size_max = (0.07,)
     _size_min = (0.03,)
     _shape = "ball"
-
-    bottom_offset = property(lambda self: np.array([0, 0, -1 * self.size[0]]), doc="Below.")
-    top_offset = property(lambda self: np.array([0, 0, self.size[0]]), doc="Above.")
-    horizontal_radius = property(lambda self: self.size[0], doc="The radius.")
-
-    def get_bounding_box_half_size(self) -> Vector:
-        """The radius, three times."""
-        return np.array([self.size[0], self.size[0], self.size[0]])
 
 
 class CylinderObject(_SizedPrimitive):
@@ -344,14 +367,6 @@ class CylinderObject(_SizedPrimitive):
         """The collision template with a 0.001 margin."""
         return {**MujocoGeneratedObject.get_collision_attrib_template(), "margin": "0.001"}
 
-    bottom_offset = property(lambda self: np.array([0, 0, -1 * self.size[1]]), doc="Below.")
-    top_offset = property(lambda self: np.array([0, 0, self.size[1]]), doc="Above.")
-    horizontal_radius = property(lambda self: self.size[0], doc="The radius.")
-
-    def get_bounding_box_half_size(self) -> Vector:
-        """Radius, radius, half-length."""
-        return np.array([self.size[0], self.size[0], self.size[1]])
-
 
 class CapsuleObject(_SizedPrimitive):
     """A capsule; ``size`` is radius and half-length of the cylinder part. It takes ``rng``."""
@@ -361,13 +376,3 @@ class CapsuleObject(_SizedPrimitive):
     _size_max = (0.07, 0.07)
     _size_min = (0.03, 0.03)
     _shape = "capsule"
-
-    bottom_offset = property(
-        lambda self: np.array([0, 0, -1 * (self.size[0] + self.size[1])]), doc="Below."
-    )
-    top_offset = property(lambda self: np.array([0, 0, self.size[0] + self.size[1]]), doc="Above.")
-    horizontal_radius = property(lambda self: self.size[0], doc="The radius.")
-
-    def get_bounding_box_half_size(self) -> Vector:
-        """Radius, radius, radius plus half-length."""
-        return np.array([self.size[0], self.size[0], self.size[0] + self.size[1]])

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import os
 import xml.etree.ElementTree as ET
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -40,8 +40,9 @@ from mjcf_model.compat.objects.document import Memo, as_node, is_element
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, with_attributes
 from mjcf_model.transforms.scaling.scaled import three_factors
+from mjcf_model.tree.ancestry import Ancestors
 from mjcf_model.tree.defaults import MAIN, DefaultClasses
-from mjcf_model.tree.traversal import Path, map_tree, with_children
+from mjcf_model.tree.traversal import Path, map_elements, map_tree, with_children
 from serializers.writer import attribute_texts
 
 __all__ = [
@@ -217,9 +218,9 @@ def inline_defaults(root: AnyElement, default: AnyElement) -> AnyElement:
             )
         return tuple(c for c in classes.chain(name) if c != MAIN)
 
-    def visit(element: AnyElement, inherited: str | None) -> AnyElement:
+    def visit(element: AnyElement, _key: str | None, ancestors: Sequence[AnyElement]) -> AnyElement:
         own = attribute(element, "class")
-        chosen = own if own is not None else inherited
+        chosen = own if own is not None else _inherited_class(ancestors)
         changes: dict[str, str | None] = {}
         if own is not None:
             changes["class"] = None
@@ -232,50 +233,69 @@ def inline_defaults(root: AnyElement, default: AnyElement) -> AnyElement:
                 for key, text in attribute_texts(setting):
                     if key not in present and key not in changes:
                         changes[key] = text
-        below = inherited
         childclass = attribute(element, "childclass")
         if childclass is not None:
             chain(childclass)
             changes["childclass"] = None
-            below = childclass
-        children = [visit(c, below) if is_element(c) else c for c in element.children]
-        return with_attributes(with_children(element, children), changes)
+        return with_attributes(element, changes)
 
-    return visit(root, None)
+    return map_elements(visit, root)
+
+
+def _inherited_class(ancestors: Sequence[AnyElement]) -> str | None:
+    """The ``childclass`` of the nearest ancestor that has one (``None``: none does)."""
+    if isinstance(ancestors, Ancestors):
+        return ancestors.folded(_below, None)
+    inherited = None
+    for ancestor in ancestors:
+        inherited = _below(inherited, ancestor)
+    return inherited
+
+
+def _below(inherited: str | None, ancestor: AnyElement) -> str | None:
+    """The class ``ancestor``'s children inherit, given the one it inherits."""
+    childclass = attribute(ancestor, "childclass")
+    return inherited if childclass is None else childclass
 
 
 def split_geoms(body: AnyElement, groups: set[int], duplicate: bool) -> AnyElement:
-    """``MujocoXMLObject``'s geom pass: keep ``groups``, name geom ``i`` ``g<i>``, add twins."""
+    """``MujocoXMLObject``'s geom pass: keep ``groups``, name geom ``i`` ``g<i>``, add twins.
+
+    Geom ``i`` is the ``i``-th in document order, dropped ones counted; a parent's
+    twins follow its other children.
+    """
     counter = 0
+    dropped: dict[int, Node] = {}  # by identity, each kept alive while it is the key
+    twins: dict[int, Node] = {}
 
-    def visit(element: AnyElement) -> AnyElement:
+    def visit(node: Node) -> Node:
         nonlocal counter
-        kept: list[Node] = []
-        twins: list[Node] = []
-        for child in element.children:
-            if not is_element(child):
-                kept.append(child)
-            elif child.tag != "geom":
-                kept.append(visit(child))
-            else:
-                index = counter
-                counter += 1
-                group = attribute(child, "group")
-                if (0 if group is None else int(group)) not in groups:
-                    continue
-                name = attribute(child, "name")
-                if name is None:
-                    name = f"g{index}"
-                geom = with_attributes(child, {"name": name})
-                if duplicate and group in (None, "0"):
-                    twins.append(visual_twin(geom, name))
-                    geom = with_attributes(
-                        geom, {"rgba": OBJECT_COLLISION_RGBA_TEXT, "material": None}
-                    )
-                kept.append(geom)
-        return with_children(element, kept + twins)
+        if is_element(node, "geom"):  # geoms hold no geoms: visited in document order
+            index = counter
+            counter += 1
+            group = attribute(node, "group")
+            if (0 if group is None else int(group)) not in groups:
+                dropped[id(node)] = node
+                return node
+            name = attribute(node, "name")
+            if name is None:
+                name = f"g{index}"
+            geom = with_attributes(node, {"name": name})
+            if duplicate and group in (None, "0"):
+                twin = visual_twin(geom, name)
+                geom = with_attributes(geom, {"rgba": OBJECT_COLLISION_RGBA_TEXT, "material": None})
+                twins[id(geom)] = twin
+            return geom
+        if not is_element(node) or not any(
+            id(child) in dropped or id(child) in twins for child in node.children
+        ):
+            return node
+        kept = [child for child in node.children if id(child) not in dropped]
+        return with_children(node, kept + [twins[id(c)] for c in kept if id(c) in twins])
 
-    return visit(body)
+    split = map_tree(visit, body)
+    assert is_element(split)
+    return split
 
 
 def visual_twin(geom: AnyElement, name: str) -> AnyElement:
