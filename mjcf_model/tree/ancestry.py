@@ -13,7 +13,7 @@ from typing import Any, TypeVar, overload
 
 from mjcf_model.nodes.base import AnyElement
 
-__all__ = ["Ancestors"]
+__all__ = ["Ancestors", "fold_ancestors"]
 
 _V = TypeVar("_V")
 
@@ -120,3 +120,28 @@ class Ancestors(Sequence[AnyElement]):
 
     def __repr__(self) -> str:
         return f"Ancestors({self.as_tuple()!r})"
+
+
+def fold_ancestors(
+    ancestors: Sequence[AnyElement], step: Callable[[_V, AnyElement], _V], initial: _V
+) -> _V:
+    """``step`` folded over ``ancestors`` root first, from ``initial``.
+
+    On :class:`Ancestors` (what the walks hand out) this is :meth:`Ancestors.folded`,
+    constant time per level; any other sequence is folded from the start.
+
+    Example:
+        >>> from mjcf_model import Body
+        >>> def childclass(inherited, element):
+        ...     return element.childclass or inherited
+        >>> chain = [Body(childclass="a"), Body(), Body(childclass="b"), Body()]
+        >>> fold_ancestors(chain[:2], childclass, None), fold_ancestors(chain, childclass, None)
+        ('a', 'b')
+
+    """
+    if isinstance(ancestors, Ancestors):
+        return ancestors.folded(step, initial)
+    value = initial
+    for ancestor in ancestors:
+        value = step(value, ancestor)
+    return value

@@ -29,7 +29,7 @@ from mjcf_model.nodes.base import (
     attribute_items,
     get_attribute,
 )
-from mjcf_model.tree.ancestry import Ancestors
+from mjcf_model.tree.ancestry import fold_ancestors
 from mjcf_model.tree.queries import attribute_values
 from mjcf_model.values import Value
 
@@ -315,12 +315,7 @@ def _value(found: tuple[Value, str] | None) -> Value | None:
 
 def _scope_of(ancestors: Sequence[AnyElement]) -> _Scope:
     """The scope of an element with these ancestors."""
-    if isinstance(ancestors, Ancestors):
-        return ancestors.folded(_scope, _NO_SCOPE)
-    scope = _NO_SCOPE
-    for ancestor in ancestors:
-        scope = _scope(scope, ancestor)
-    return scope
+    return fold_ancestors(ancestors, _scope, _NO_SCOPE)
 
 
 def _scope(scope: _Scope, ancestor: AnyElement) -> _Scope:

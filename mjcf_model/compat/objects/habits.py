@@ -40,7 +40,7 @@ from mjcf_model.compat.objects.document import Memo, as_node, is_element
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, with_attributes
 from mjcf_model.transforms.scaling.scaled import three_factors
-from mjcf_model.tree.ancestry import Ancestors
+from mjcf_model.tree.ancestry import fold_ancestors
 from mjcf_model.tree.defaults import MAIN, DefaultClasses
 from mjcf_model.tree.traversal import Path, map_elements, map_tree, with_children
 from serializers.writer import attribute_texts
@@ -220,7 +220,7 @@ def inline_defaults(root: AnyElement, default: AnyElement) -> AnyElement:
 
     def visit(element: AnyElement, _key: str | None, ancestors: Sequence[AnyElement]) -> AnyElement:
         own = attribute(element, "class")
-        chosen = own if own is not None else _inherited_class(ancestors)
+        chosen = own if own is not None else fold_ancestors(ancestors, _below, None)
         changes: dict[str, str | None] = {}
         if own is not None:
             changes["class"] = None
@@ -242,18 +242,8 @@ def inline_defaults(root: AnyElement, default: AnyElement) -> AnyElement:
     return map_elements(visit, root)
 
 
-def _inherited_class(ancestors: Sequence[AnyElement]) -> str | None:
-    """The ``childclass`` of the nearest ancestor that has one (``None``: none does)."""
-    if isinstance(ancestors, Ancestors):
-        return ancestors.folded(_below, None)
-    inherited = None
-    for ancestor in ancestors:
-        inherited = _below(inherited, ancestor)
-    return inherited
-
-
 def _below(inherited: str | None, ancestor: AnyElement) -> str | None:
-    """The class ``ancestor``'s children inherit, given the one it inherits."""
+    """The class ``ancestor``'s children inherit (its ``childclass``), given the one it inherits."""
     childclass = attribute(ancestor, "childclass")
     return inherited if childclass is None else childclass
 
