@@ -1,0 +1,230 @@
+"""What changed between two models, element by element, rather than line by line.
+
+:func:`changes_between` matches the elements of two models and lists what was
+added, removed, moved or changed, ignoring how the files are written: formatting,
+comments, attribute order and number spelling (``0.10`` is ``.1``).
+
+* An element that declares a name (a body, a geom, a default class...) is matched
+  by its namespace and name, wherever it stands; one that stands under another
+  parent has **moved**.
+* An element without a name is matched by its parent and its position among the
+  parent's unnamed children of the same tag (the second unnamed ``geom`` of
+  ``arm`` is ``body[arm]/geom[#1]``).
+* An added or removed element is listed once: what is below it is not listed again.
+
+>>> from serializers import loads
+>>> a = loads('<mujoco><worldbody><body name="arm"><geom size="0.10"/></body></worldbody></mujoco>')
+>>> b = loads('<mujoco><worldbody><body name="arm"><geom size=".1" rgba="1 0 0 1"/>'
+...           '<site name="tip"/></body></worldbody></mujoco>')
+>>> for change in changes_between(a, b):
+...     print(change)
+~ worldbody/body[arm]/geom[#0] rgba: (not written) -> 1 0 0 1
++ worldbody/body[arm]/site[tip]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any, Literal
+
+import attrs
+
+from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, attribute_items
+from mjcf_model.schema.namespaces import SCHEMA, guess_context
+from mjcf_model.tree.traversal import schema_key
+from mjcf_model.values import format_value
+
+__all__ = ["Change", "ChangeKind", "changes_between"]
+
+#: ``added``: only in the second model; ``removed``: only in the first; ``moved``:
+#: under another parent; ``changed``: one attribute (or the text) differs.
+ChangeKind = Literal["added", "removed", "moved", "changed"]
+
+#: The sign :meth:`Change.__str__` starts a line with, by kind.
+_SIGNS = {"added": "+", "removed": "-", "moved": ">", "changed": "~"}
+
+
+@attrs.frozen(kw_only=True)
+class Change:
+    """One difference between two models.
+
+    Example:
+        >>> print(Change(kind="changed", path="worldbody/geom[g]", attribute="size",
+        ...              old="0.1", new="0.2"))
+        ~ worldbody/geom[g] size: 0.1 -> 0.2
+
+    """
+
+    #: What happened to the element.
+    kind: ChangeKind
+    #: Where the element stands: in the second model (in the first for ``removed``).
+    path: str
+    #: Where a moved element stood in the first model.
+    old_path: str | None = None
+    #: The attribute that changed; ``None`` for the element's text (and other kinds).
+    attribute: str | None = None
+    #: The old text (``None``: not written).
+    old: str | None = None
+    #: The new text (``None``: not written).
+    new: str | None = None
+
+    def to_dict(self) -> dict[str, Any]:
+        """The change as a JSON-ready dict (keys with ``None`` left out).
+
+        Example:
+            >>> Change(kind="added", path="worldbody/site[tip]").to_dict()
+            {'kind': 'added', 'path': 'worldbody/site[tip]'}
+
+        """
+        return {key: value for key, value in attrs.asdict(self).items() if value is not None}
+
+    def __str__(self) -> str:
+        line = f"{_SIGNS[self.kind]} {self.path}"
+        if self.kind == "moved":
+            line += f" (was {self.old_path})"
+        elif self.kind == "changed":
+            what = "text" if self.attribute is None else self.attribute
+            line += f" {what}: {_shown(self.old)} -> {_shown(self.new)}"
+        return line
+
+
+def _shown(text: str | None) -> str:
+    return "(not written)" if text is None else text
+
+
+@attrs.frozen
+class _Seen:
+    """An element of one model as the diff sees it."""
+
+    #: What it is matched by (see the module docstring).
+    identity: tuple[Any, ...]
+    #: Its parent's identity (``None`` for the root).
+    parent: tuple[Any, ...] | None
+    #: Where it stands, for people.
+    path: str
+    #: The element.
+    element: AnyElement
+
+
+def changes_between(first: Node, second: Node) -> list[Change]:
+    """The differences from ``first`` to ``second``: removals first, then the rest in order.
+
+    Example:
+        >>> from serializers import loads
+        >>> a = loads('<mujoco><worldbody><body name="a"><body name="b"/></body></worldbody>'
+        ...           '</mujoco>')
+        >>> b = loads('<mujoco><worldbody><body name="a"/><body name="b"/></worldbody></mujoco>')
+        >>> [str(change) for change in changes_between(a, b)]
+        ['> worldbody/body[b] (was worldbody/body[a]/body[b])']
+        >>> changes_between(a, a)
+        []
+
+    """
+    old = {seen.identity: seen for seen in _elements(first)}
+    new = {seen.identity: seen for seen in _elements(second)}
+    found: list[Change] = [
+        Change(kind="removed", path=seen.path)
+        for seen in old.values()
+        if seen.identity not in new and (seen.parent is None or seen.parent in new)
+    ]
+    for seen in new.values():
+        before = old.get(seen.identity)
+        if before is None:
+            if seen.parent is None or seen.parent in old:
+                found.append(Change(kind="added", path=seen.path))
+            continue
+        if before.parent != seen.parent:
+            found.append(Change(kind="moved", path=seen.path, old_path=before.path))
+        found.extend(_changed(before.element, seen.element, seen.path))
+    return found
+
+
+def _changed(old: AnyElement, new: AnyElement, path: str) -> Iterator[Change]:
+    """The attributes (and text) that differ between two matched elements."""
+    before, after = _texts(old), _texts(new)
+    for name in [*before, *(name for name in after if name not in before)]:
+        was, now = before.get(name), after.get(name)
+        if _comparable(was) != _comparable(now):
+            yield Change(kind="changed", path=path, attribute=name, old=was, new=now)
+    if (old.text or "").strip() != (new.text or "").strip():
+        yield Change(kind="changed", path=path, old=old.text, new=new.text)
+
+
+def _texts(element: AnyElement) -> dict[str, str]:
+    return {name: format_value(value) for name, value in attribute_items(element)}
+
+
+def _comparable(text: str | None) -> object:
+    """Text as compared: numbers as floats (``0.10`` is ``.1``), anything else as written."""
+    if text is None:
+        return None
+    words = text.split()
+    try:
+        return tuple(float(word) for word in words)
+    except ValueError:
+        return text
+
+
+def _elements(root: Node) -> Iterator[_Seen]:
+    """Every element of ``root`` with its identity, in document order (a stack: any depth)."""
+    if not isinstance(root, (TypedElement, GenericElement)):
+        return
+    top = _Seen(("root", root.tag), None, root.tag, root)
+    yield top
+    context = guess_context(root.tag)
+    stack = [_Level(top, _inner(context, schema_key(root, context)))]
+    while stack:
+        level = stack[-1]
+        for child in level.pending:
+            if not isinstance(child, (TypedElement, GenericElement)):
+                continue
+            key = schema_key(child, level.context)
+            seen = level.seen_child(child, key)
+            yield seen
+            if child.children:
+                stack.append(_Level(seen, _inner(level.context, key)))
+                break
+        else:
+            stack.pop()
+
+
+def _inner(context: str | None, key: str | None) -> str | None:
+    """The schema context of the children of an element with ``key`` read in ``context``."""
+    return context if key is None or key == "include" else key
+
+
+class _Level:
+    """One parent in :func:`_elements`' stack: its children still to see and their counts."""
+
+    def __init__(self, parent: _Seen, context: str | None) -> None:
+        self.parent = parent
+        self.context = context
+        self.pending = iter(parent.element.children)
+        self._unnamed: dict[str, int] = {}
+        self._named: dict[tuple[str, str], int] = {}
+
+    def seen_child(self, child: AnyElement, key: str | None) -> _Seen:
+        declared = _declared(child, key)
+        if declared is None:
+            index = self._unnamed[child.tag] = self._unnamed.get(child.tag, -1) + 1
+            identity: tuple[Any, ...] = (self.parent.identity, child.tag, index)
+            label = f"{child.tag}[#{index}]"
+            if self.parent.parent is None and index == 0:
+                label = child.tag  # a section of the root: its tag says it
+        else:
+            again = self._named[declared] = self._named.get(declared, -1) + 1  # a name repeated
+            identity = ("named", *declared, again)
+            label = f"{child.tag}[{declared[1]}]" + (f"[#{again}]" if again else "")
+        path = label if self.parent.parent is None else f"{self.parent.path}/{label}"
+        return _Seen(identity, self.parent.identity, path, child)
+
+
+def _declared(element: AnyElement, key: str | None) -> tuple[str, str] | None:
+    """The namespace and name ``element`` declares (``None``: it declares none)."""
+    spec = SCHEMA.get(key) if key is not None else None
+    declares = spec.declares if spec is not None else {"name": element.tag}
+    for attribute, namespace in declares.items():
+        for name, value in attribute_items(element):
+            if name == attribute and isinstance(value, str) and value:
+                return namespace, value
+    return None
