@@ -34,6 +34,7 @@ __all__ = [
     "MjcfError",
     "MjcfIncludeError",
     "MjcfLookupError",
+    "MjcfRenderError",
     "MjcfSecurityError",
     "MjcfSyntaxError",
     "MjcfValueError",
@@ -132,6 +133,10 @@ class MjcfAssetError(MjcfError, OSError):
 
 class MjcfCompileError(MjcfError, ValueError):
     """MuJoCo rejects the model; the message is MuJoCo's own."""
+
+
+class MjcfRenderError(MjcfError, RuntimeError):
+    """MuJoCo cannot draw: no OpenGL backend works here; the message says what to install."""
 
 
 class MjcfSecurityError(MjcfError, ValueError):

@@ -37,7 +37,7 @@ from mjcf_model.tree.traversal import keyed_walk
 from serializers.canonical import attribute_texts, write_canonical
 from serializers.kept_format import write_kept
 
-__all__ = ["attribute_texts", "dump", "dumps", "to_etree"]
+__all__ = ["attribute_texts", "dump", "dumps", "to_etree", "write_atomically"]
 
 
 def dumps(node: Node, *, indent: str = "  ", canonical: bool = False) -> str:
@@ -116,10 +116,29 @@ def dump(
         return
     path = Path(target)
     text = dumps(_relocated_for(node, path.parent), indent=indent, canonical=canonical)
+    write_atomically(text, path)
+
+
+def write_atomically(data: str | bytes, target: str | os.PathLike[str]) -> None:
+    """Write ``data`` (text as UTF-8, line breaks as they are) to ``target``, all or nothing.
+
+    The data goes to a temporary file beside the target, which then replaces it
+    (keeping its permissions); if anything fails, the old file is untouched and no
+    partial file is left.
+
+    Example:
+        >>> import tempfile, pathlib
+        >>> path = pathlib.Path(tempfile.mkdtemp()) / "out.xml"
+        >>> write_atomically("<mujoco/>", path)
+        >>> path.read_text()
+        '<mujoco/>'
+
+    """
+    path = Path(target)
     handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
-        with os.fdopen(handle, "w", encoding="utf-8", newline="") as stream:
-            stream.write(text)
+        with os.fdopen(handle, "wb") as stream:
+            stream.write(data.encode("utf-8") if isinstance(data, str) else data)
             stream.flush()
             os.fsync(stream.fileno())
         if path.exists():

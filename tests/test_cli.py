@@ -48,7 +48,7 @@ def test_a_difference_fails_the_run(
     monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
     """When the compiled models differ the fields are listed and the exit status is 1."""
-    import mjcf_model.tools.cli as cli
+    import mjcf_model.tools.cli.check as cli
 
     def differing(path: str, *, inline_includes: bool = False) -> CheckResult:
         return CheckResult(path=str(path), status="different", differences=("geom_size",))

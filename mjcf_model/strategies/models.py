@@ -143,8 +143,12 @@ def bodies(
     if depth > 0:
         for _ in range(draw(st.integers(0, 2))):
             children.append(draw(bodies(depth=depth - 1, registry=reg)))
+    childclass = None
+    if reg.classes and draw(st.integers(0, 3)) == 0:
+        childclass = draw(st.sampled_from(reg.classes))
     return Body(
         name=name,
+        childclass=childclass,
         pos=draw(_vec(3)),
         quat=draw(st.none() | _unit_quat()),
         children=_maybe_comment(draw, children),
@@ -152,13 +156,24 @@ def bodies(
 
 
 def _defaults(draw: _Draw[Any], reg: _Registry) -> Default:
-    classes: list[Node] = []
-    for _ in range(draw(st.integers(0, 2))):
-        name = reg.names("class")
-        reg.classes.append(name)
-        inner = [Geom(rgba=draw(_rgba()), density=draw(_length(100.0, 2000.0)))]
-        classes.append(Default(dclass=name, children=inner))
-    main: list[Node] = [JointNode(damping=(draw(_length(0.0, 1.0)),)), *classes]
+    """Main defaults and up to three classes, each under main or under an earlier class."""
+    parents: list[int | None] = []
+    settings: list[list[Node]] = []
+    for index in range(draw(st.integers(0, 3))):
+        reg.classes.append(reg.names("class"))
+        parents.append(draw(st.none() | st.integers(0, index - 1)) if index else None)
+        own: list[Node] = []
+        if draw(st.integers(0, 3)):
+            own.append(Geom(rgba=draw(_rgba()), density=draw(_length(100.0, 2000.0))))
+        if draw(st.booleans()):
+            own.append(JointNode(armature=draw(_length(0.0, 0.5))))
+        settings.append(own)
+    built: dict[int, Default] = {}
+    for index in reversed(range(len(parents))):  # a class is built after the classes in it
+        inner = [built[i] for i in range(index + 1, len(parents)) if parents[i] == index]
+        built[index] = Default(dclass=reg.classes[index], children=[*settings[index], *inner])
+    tops = [built[i] for i in range(len(parents)) if parents[i] is None]
+    main: list[Node] = [JointNode(damping=(draw(_length(0.0, 1.0)),)), *tops]
     return Default(children=_maybe_comment(draw, main))
 
 

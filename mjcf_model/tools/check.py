@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Literal
+from typing import Any, Literal
 
 import attrs
 
@@ -20,7 +20,7 @@ from mjcf_model.errors import MjcfError
 from mjcf_model.files.compiling import compiled
 from mjcf_model.tools.compare import model_differences, path_fields
 
-__all__ = ["CheckResult", "check_file"]
+__all__ = ["CheckResult", "check_file", "written_differences"]
 
 #: ``identical``: both compile to the same model; ``different``: they compile to
 #: different models; ``not-compiled``: MuJoCo rejects the original itself;
@@ -62,7 +62,7 @@ def check_file(path: str | os.PathLike[str], *, inline_includes: bool = False) -
     """
     import mujoco
 
-    from serializers import dumps, load, loads
+    from serializers import dumps, load
 
     name = str(path)
     if not Path(path).is_file():
@@ -73,14 +73,34 @@ def check_file(path: str | os.PathLike[str], *, inline_includes: bool = False) -
         return CheckResult(path=name, status="not-compiled", message=str(error).strip())
     try:
         written = dumps(load(path, inline_includes=inline_includes))
-        reread = loads(written, base_dir=Path(path).parent, filename=name)
+        differences = written_differences(original, written, name)
     except MjcfError as error:
         return CheckResult(path=name, status="error", message=str(error))
+    status: Status = "different" if differences else "identical"
+    return CheckResult(path=name, status=status, differences=differences)
+
+
+def written_differences(original: Any, written: str, path: str) -> tuple[str, ...]:
+    """The ``MjModel`` fields in which ``written`` compiles differently from ``original``.
+
+    ``written`` is read as if it were the file ``path`` (its relative files resolve
+    from there) and compiled in memory; recorded file paths are not compared.
+
+    Raises:
+        MjcfError: ``written`` cannot be read, or does not compile (the message says so).
+
+    Example:
+        >>> import mujoco
+        >>> original = mujoco.MjModel.from_xml_string("<mujoco><worldbody/></mujoco>")
+        >>> written_differences(original, "<mujoco/>", "m.xml")
+        ()
+
+    """
+    from serializers import loads
+
+    reread = loads(written, base_dir=Path(path).parent, filename=path)
     try:
         again = compiled(reread)
     except MjcfError as error:
-        message = f"the written model does not compile: {error.detail}"
-        return CheckResult(path=name, status="error", message=message)
-    differences = tuple(model_differences(original, again, ignore=path_fields()))
-    status: Status = "different" if differences else "identical"
-    return CheckResult(path=name, status=status, differences=differences)
+        raise type(error)(f"the written model does not compile: {error.detail}") from error
+    return tuple(model_differences(original, again, ignore=path_fields()))

@@ -8,8 +8,10 @@ comments, attribute order and number spelling (``0.10`` is ``.1``).
   by its namespace and name, wherever it stands; one that stands under another
   parent has **moved**.
 * An element without a name is matched by its parent and its position among the
-  parent's unnamed children of the same tag (the second unnamed ``geom`` of
-  ``arm`` is ``body[arm]/geom[#1]``).
+  parent's unnamed children of the same tag.
+
+Paths are written as in error messages: ``/mujoco/worldbody/body[@name='arm']/geom[2]``
+is the second unnamed ``geom`` of the body ``arm``.
 * An added or removed element is listed once: what is below it is not listed again.
 
 >>> from serializers import loads
@@ -18,8 +20,8 @@ comments, attribute order and number spelling (``0.10`` is ``.1``).
 ...           '<site name="tip"/></body></worldbody></mujoco>')
 >>> for change in changes_between(a, b):
 ...     print(change)
-~ worldbody/body[arm]/geom[#0] rgba: (not written) -> 1 0 0 1
-+ worldbody/body[arm]/site[tip]
+~ /mujoco/worldbody/body[@name='arm']/geom rgba: (not written) -> 1 0 0 1
++ /mujoco/worldbody/body[@name='arm']/site[@name='tip']
 """
 
 from __future__ import annotations
@@ -49,9 +51,9 @@ class Change:
     """One difference between two models.
 
     Example:
-        >>> print(Change(kind="changed", path="worldbody/geom[g]", attribute="size",
+        >>> print(Change(kind="changed", path="/mujoco/worldbody/geom", attribute="size",
         ...              old="0.1", new="0.2"))
-        ~ worldbody/geom[g] size: 0.1 -> 0.2
+        ~ /mujoco/worldbody/geom size: 0.1 -> 0.2
 
     """
 
@@ -72,8 +74,8 @@ class Change:
         """The change as a JSON-ready dict (keys with ``None`` left out).
 
         Example:
-            >>> Change(kind="added", path="worldbody/site[tip]").to_dict()
-            {'kind': 'added', 'path': 'worldbody/site[tip]'}
+            >>> Change(kind="added", path="/mujoco/worldbody/site").to_dict()
+            {'kind': 'added', 'path': '/mujoco/worldbody/site'}
 
         """
         return {key: value for key, value in attrs.asdict(self).items() if value is not None}
@@ -114,8 +116,11 @@ def changes_between(first: Node, second: Node) -> list[Change]:
         >>> a = loads('<mujoco><worldbody><body name="a"><body name="b"/></body></worldbody>'
         ...           '</mujoco>')
         >>> b = loads('<mujoco><worldbody><body name="a"/><body name="b"/></worldbody></mujoco>')
-        >>> [str(change) for change in changes_between(a, b)]
-        ['> worldbody/body[b] (was worldbody/body[a]/body[b])']
+        >>> [moved] = changes_between(a, b)
+        >>> moved.kind, moved.path
+        ('moved', "/mujoco/worldbody/body[@name='b']")
+        >>> moved.old_path
+        "/mujoco/worldbody/body[@name='a']/body[@name='b']"
         >>> changes_between(a, a)
         []
 
@@ -169,7 +174,7 @@ def _elements(root: Node) -> Iterator[_Seen]:
     """Every element of ``root`` with its identity, in document order (a stack: any depth)."""
     if not isinstance(root, (TypedElement, GenericElement)):
         return
-    top = _Seen(("root", root.tag), None, root.tag, root)
+    top = _Seen(("root", root.tag), None, f"/{root.tag}", root)
     yield top
     context = guess_context(root.tag)
     stack = [_Level(top, _inner(context, schema_key(root, context)))]
@@ -206,25 +211,23 @@ class _Level:
     def seen_child(self, child: AnyElement, key: str | None) -> _Seen:
         declared = _declared(child, key)
         if declared is None:
-            index = self._unnamed[child.tag] = self._unnamed.get(child.tag, -1) + 1
+            index = self._unnamed[child.tag] = self._unnamed.get(child.tag, 0) + 1
             identity: tuple[Any, ...] = (self.parent.identity, child.tag, index)
-            label = f"{child.tag}[#{index}]"
-            if self.parent.parent is None and index == 0:
-                label = child.tag  # a section of the root: its tag says it
+            step = child.tag if index == 1 else f"{child.tag}[{index}]"
         else:
-            again = self._named[declared] = self._named.get(declared, -1) + 1  # a name repeated
-            identity = ("named", *declared, again)
-            label = f"{child.tag}[{declared[1]}]" + (f"[#{again}]" if again else "")
-        path = label if self.parent.parent is None else f"{self.parent.path}/{label}"
-        return _Seen(identity, self.parent.identity, path, child)
+            attribute, namespace, name = declared
+            again = self._named[namespace, name] = self._named.get((namespace, name), 0) + 1
+            identity = ("named", namespace, name, again)  # ``again``: a name repeated
+            step = f"{child.tag}[@{attribute}={name!r}]" + (f"[{again}]" if again > 1 else "")
+        return _Seen(identity, self.parent.identity, f"{self.parent.path}/{step}", child)
 
 
-def _declared(element: AnyElement, key: str | None) -> tuple[str, str] | None:
-    """The namespace and name ``element`` declares (``None``: it declares none)."""
+def _declared(element: AnyElement, key: str | None) -> tuple[str, str, str] | None:
+    """The attribute, namespace and name ``element`` declares (``None``: it declares none)."""
     spec = SCHEMA.get(key) if key is not None else None
     declares = spec.declares if spec is not None else {"name": element.tag}
     for attribute, namespace in declares.items():
         for name, value in attribute_items(element):
             if name == attribute and isinstance(value, str) and value:
-                return namespace, value
+                return attribute, namespace, value
     return None

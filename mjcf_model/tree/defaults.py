@@ -29,14 +29,22 @@ from mjcf_model.nodes.base import (
     attribute_items,
     get_attribute,
 )
+from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.tree.ancestry import fold_ancestors
 from mjcf_model.tree.queries import attribute_values
 from mjcf_model.values import Value
 
-__all__ = ["MAIN", "DefaultClasses"]
+__all__ = ["ACTUATOR_DEFAULT_TAGS", "MAIN", "DefaultClasses"]
 
 #: The name of the top-level default class.
 MAIN = "main"
+
+#: The ``<default>`` tags that set actuator defaults: each of them reaches every actuator.
+ACTUATOR_DEFAULT_TAGS = frozenset(
+    key.partition("/")[2]
+    for key in SCHEMA
+    if key.startswith("default/") and f"actuator/{key.partition('/')[2]}" in SCHEMA
+)
 
 
 @attrs.frozen(kw_only=True)
@@ -223,6 +231,47 @@ class DefaultClasses:
             return _NOTHING
         name = self._giver(element, ancestors)
         return _NOTHING if name is None else self.given(name, tag)
+
+    def given_to(
+        self, element: AnyElement, ancestors: Sequence[AnyElement]
+    ) -> Mapping[str, tuple[Value, str]]:
+        """What ``element``'s classes give it, read where MuJoCo reads it, with the giving class.
+
+        A tendon reads its class's ``<tendon>``; an actuator reads every actuator
+        element of its class (``<general>``, ``<motor>``, ``<position>``... set one
+        shared actuator default, the last written winning); other elements read
+        the element of their own tag (see :meth:`inherited`).
+
+        Example:
+            >>> from serializers import loads
+            >>> model = loads('<mujoco><default><general ctrlrange="-1 1"/><motor gear="2"/>'
+            ...               '</default><actuator><position name="p" joint="j"/></actuator>'
+            ...               '<worldbody><body><joint name="j"/></body></worldbody></mujoco>')
+            >>> classes = DefaultClasses.of(model)
+            >>> actuator = model.actuator.elements[0]
+            >>> dict(classes.given_to(actuator, (model, model.actuator)))
+            {'ctrlrange': ((-1.0, 1.0), 'main'), 'gear': ((2.0,), 'main')}
+
+        """
+        section = ancestors[-1].tag if ancestors else ""
+        if section == "tendon":
+            return self.inherited(element, ancestors, "tendon")
+        if section != "actuator":
+            return self.inherited(element, ancestors)
+        name = self._giver(element, ancestors)
+        if name is None:
+            return _NOTHING
+        memo = self._memo.get(("actuator", name))
+        if memo is None:
+            merged: dict[str, tuple[Value, str]] = {}
+            for current in reversed(self.chain(name)):
+                for (owner, tag), setting in self.settings.items():
+                    if owner == current and tag in ACTUATOR_DEFAULT_TAGS:
+                        for attribute, value in attribute_items(setting):
+                            merged[attribute] = (value, current)
+            memo = self._memo[("actuator", name)] = MappingProxyType(merged)
+        given: Mapping[str, tuple[Value, str]] = memo
+        return given
 
     def _giver(self, element: AnyElement, ancestors: Sequence[AnyElement]) -> str | None:
         """The class whose settings ``element`` inherits (``None``: none, in the main default)."""

@@ -6,9 +6,7 @@
 
 from __future__ import annotations
 
-import struct
 import xml.etree.ElementTree as ET
-import zlib
 from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
@@ -28,6 +26,7 @@ from mjcf_model.compat.mjcf_utils.etree_sync import (
 )
 from mjcf_model.compat.mjcf_utils.naming import already_prefixed
 from mjcf_model.compat.mjcf_utils.text import array_to_string, parse_numbers, xml_path_completion
+from mjcf_model.files.png import png_bytes
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
 from mjcf_model.transforms.recolouring import with_collision_colour
 from mjcf_model.tree.paths import edited_at
@@ -45,23 +44,6 @@ __all__ = [
 _TEMP_TEXTURES = "/tmp/robosuite_temp_tex"
 #: Side of that PNG, in pixels.
 _PNG_SIDE = 100
-
-
-def _png(width: int, height: int, pixel: bytes) -> bytes:
-    """A PNG image of one RGBA colour (8 bits per channel), without an imaging library."""
-
-    def chunk(kind: bytes, data: bytes) -> bytes:
-        crc = zlib.crc32(kind + data) & 0xFFFFFFFF
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", crc)
-
-    header = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)
-    rows = (b"\x00" + pixel * width) * height
-    return (
-        b"\x89PNG\r\n\x1a\n"
-        + chunk(b"IHDR", header)
-        + chunk(b"IDAT", zlib.compress(rows))
-        + chunk(b"IEND", b"")
-    )
 
 
 def _pixel(channels: tuple[Any, ...]) -> bytes:
@@ -136,7 +118,8 @@ class CustomMaterial:
             pixel = _pixel(tuple((np.array(texture) * 255).astype("int")))
             Path(_TEMP_TEXTURES).mkdir(parents=True, exist_ok=True)
             path = _TEMP_TEXTURES + f"/{tex_name}.png"
-            Path(path).write_bytes(_png(_PNG_SIDE, _PNG_SIDE, pixel))
+            flat = np.frombuffer(pixel, dtype=np.uint8)
+            Path(path).write_bytes(png_bytes(np.tile(flat, (_PNG_SIDE, _PNG_SIDE, 1))))
             self.tex_attrib["file"] = path
 
 

@@ -78,7 +78,6 @@ from mjcf_model.transforms.composition.compiler_settings import (
     Settings,
     compiler_settings,
 )
-from mjcf_model.transforms.composition.defaults import ACTUATOR_DEFAULT_TAGS
 from mjcf_model.transforms.composition.inertia import Changes, inertia_kept
 from mjcf_model.transforms.composition.rotations import (
     euler_angles,
@@ -140,25 +139,11 @@ class _Rewriter:
         self, element: AnyElement, ancestors: Sequence[AnyElement], name: str
     ) -> Value | None:
         """``name`` for ``element``: its own, else its classes' (where actuators share one)."""
-        section = ancestors[-1].tag if ancestors else ""
-        if section != "actuator":
-            return self.classes.resolve(
-                element, ancestors, name, section if section == "tendon" else None
-            )
         own = get_attribute(element, name)
         if own is not None:
             return own
-        for cls in self.classes.chain(self.classes.class_of(element, ancestors)):
-            found = [
-                value
-                for (owner, tag), setting in self.classes.settings.items()
-                if owner == cls
-                and tag in ACTUATOR_DEFAULT_TAGS
-                and (value := get_attribute(setting, name)) is not None
-            ]
-            if found:
-                return found[-1]
-        return None
+        found = self.classes.given_to(element, ancestors).get(name)
+        return None if found is None else found[0]
 
     def __call__(
         self, element: AnyElement, key: str | None, ancestors: Sequence[AnyElement]

@@ -26,8 +26,9 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.nodes.default import Default
 from mjcf_model.schema.namespaces import SCHEMA
+from mjcf_model.tree.defaults import ACTUATOR_DEFAULT_TAGS
 
-__all__ = ["ACTUATOR_DEFAULT_TAGS", "classed", "merged_settings", "sets_values"]
+__all__ = ["classed", "merged_settings", "sets_values"]
 
 
 def sets_values(default: AnyElement) -> bool:
@@ -75,14 +76,6 @@ def _with_class(element: AnyElement, attribute: str, name: str) -> AnyElement:
         if get_attribute(element, attribute) is not None
         else with_attributes(element, {attribute: name})
     )
-
-
-#: The ``<default>`` tags that set actuator defaults: each of them reaches every actuator.
-ACTUATOR_DEFAULT_TAGS = frozenset(
-    key.partition("/")[2]
-    for key in SCHEMA
-    if key.startswith("default/") and f"actuator/{key.partition('/')[2]}" in SCHEMA
-)
 
 
 def _reached_by(key: str, settings: frozenset[str]) -> bool:

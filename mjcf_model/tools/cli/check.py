@@ -1,4 +1,4 @@
-"""The ``mjcf-model`` command line.
+"""``mjcf-model check``: whether each file survives a round trip, as MuJoCo compiles it.
 
 ``mjcf-model check FILE...`` loads each file, writes it back, compiles the
 original and the written model with MuJoCo and reports whether the two are
@@ -7,6 +7,7 @@ fails, 0 otherwise. ``mjcf-model check --example`` runs it on the example
 model that ships with the package.
 
 Example:
+    >>> from mjcf_model.tools.cli import main
     >>> main(["check", "--example", "--quiet"])
     0
 
@@ -16,18 +17,14 @@ from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterable
 from importlib import resources
-from typing import TextIO, TypeVar
+from typing import Any, TextIO
 
 from mjcf_model.tools.check import CheckResult, check_file
+from mjcf_model.tools.cli.common import progress, show_progress
 
-__all__ = ["main"]
-
-_T = TypeVar("_T")
-
-#: Draw a progress bar when at least this many files are checked.
-_PROGRESS_FROM = 5
+__all__ = ["add_parsers", "example_path"]
 
 
 def example_path() -> str:
@@ -39,21 +36,6 @@ def example_path() -> str:
 
     """
     return str(resources.files("mjcf_model") / "examples" / "arm.xml")
-
-
-def _progress(items: Sequence[_T], stream: TextIO, enabled: bool) -> Iterator[_T]:
-    """Yield ``items``, drawing a one-line progress bar on ``stream`` as it goes."""
-    total = len(items)
-    for done, item in enumerate(items, start=1):
-        yield item
-        if enabled:
-            width = 30
-            filled = width * done // total
-            bar = "#" * filled + "-" * (width - filled)
-            stream.write(f"\r[{bar}] {done}/{total}")
-            stream.flush()
-    if enabled:
-        stream.write("\n")
 
 
 def _report(result: CheckResult, out: TextIO, verbose: bool) -> None:
@@ -83,9 +65,9 @@ def _check(arguments: argparse.Namespace) -> int:
     if not files:
         sys.stderr.write("mjcf-model check: no files given (try --example)\n")
         return 2
-    show_bar = len(files) >= _PROGRESS_FROM and not arguments.quiet and sys.stderr.isatty()
+    show_bar = show_progress(len(files), arguments.quiet)
     results = []
-    for path in _progress(files, sys.stderr, show_bar):
+    for path in progress(files, sys.stderr, show_bar):
         result = check_file(path, inline_includes=arguments.inline_includes)
         results.append(result)
         if not arguments.quiet:
@@ -102,11 +84,8 @@ def _check(arguments: argparse.Namespace) -> int:
     return 1 if failed else 0
 
 
-def _parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
-        prog="mjcf-model", description="Typed, immutable MJCF: command-line tools."
-    )
-    commands = parser.add_subparsers(dest="command", required=True)
+def add_parsers(commands: Any) -> None:
+    """Add ``check`` to the command line's verbs."""
     check = commands.add_parser(
         "check",
         help="round-trip MJCF files and compare the compiled models",
@@ -126,17 +105,3 @@ def _parser() -> argparse.ArgumentParser:
     )
     check.add_argument("-q", "--quiet", action="store_true", help="print nothing; exit status only")
     check.set_defaults(run=_check)
-    return parser
-
-
-def main(argv: Sequence[str] | None = None) -> int:
-    """Run the command line; return the exit status.
-
-    Example:
-        >>> main(["check", "--example", "--quiet"])
-        0
-
-    """
-    arguments = _parser().parse_args(argv)
-    status: int = arguments.run(arguments)
-    return status

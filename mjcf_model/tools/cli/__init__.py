@@ -1,0 +1,49 @@
+"""The ``mjcf-model`` command line: one module per verb, each adding its own parser.
+
+Every verb reads files or ``-`` (standard input), writes files atomically or ``-``
+(standard output), and exits non-zero with the library's error message (file, line
+and element path) when it fails. ``mjcf-model VERB --help`` describes each.
+
+Example:
+    >>> main(["check", "--example", "--quiet"])
+    0
+
+"""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Sequence
+
+from mjcf_model.tools.cli import check, diff, fmt, info, render, transforms
+from mjcf_model.tools.cli.check import example_path
+
+__all__ = ["example_path", "main"]
+
+#: The verbs, in the order ``--help`` lists them.
+_VERBS = (check, fmt, diff, transforms, info, render)
+
+
+def parser() -> argparse.ArgumentParser:
+    """The parser of the whole command line."""
+    top = argparse.ArgumentParser(
+        prog="mjcf-model",
+        description="MuJoCo MJCF files: check, format, diff, compose, inspect and render.",
+    )
+    commands = top.add_subparsers(dest="command", required=True, metavar="VERB")
+    for verb in _VERBS:
+        verb.add_parsers(commands)
+    return top
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; return the exit status.
+
+    Example:
+        >>> main(["check", "--example", "--quiet"])
+        0
+
+    """
+    arguments = parser().parse_args(argv)
+    status: int = arguments.run(arguments)
+    return status

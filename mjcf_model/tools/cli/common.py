@@ -1,0 +1,125 @@
+"""What every verb of the command line shares: reading and writing models, errors, progress.
+
+A file argument may be ``-``: the model is read from standard input, or written to
+standard output. Files are written atomically (:func:`serializers.dump`): a
+failed command leaves them as they were.
+
+>>> import io
+>>> stream = io.StringIO()
+>>> list(progress([1, 2], stream, enabled=True)), stream.getvalue().strip()[-5:]
+([1, 2], '] 2/2')
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Callable, Iterator, Sequence
+from typing import TextIO, TypeVar
+
+from mjcf_model.errors import MjcfError
+from mjcf_model.nodes.root import Mujoco
+
+__all__ = [
+    "STDIO",
+    "Failed",
+    "guarded",
+    "progress",
+    "read_model",
+    "show_progress",
+    "write_model",
+    "write_text",
+]
+
+_T = TypeVar("_T")
+
+#: The file argument that stands for standard input or output.
+STDIO = "-"
+#: Draw a progress bar when a verb works on at least this many files.
+_PROGRESS_FROM = 5
+
+
+class Failed(Exception):
+    """A verb cannot go on: the message is printed and the command exits with ``status``."""
+
+    def __init__(self, message: str, status: int = 2) -> None:
+        super().__init__(message)
+        #: The exit status.
+        self.status = status
+
+
+def show_progress(count: int, quiet: bool = False) -> bool:
+    """Whether to draw a progress bar: many files, not quiet, and a terminal to draw on."""
+    return count >= _PROGRESS_FROM and not quiet and sys.stderr.isatty()
+
+
+def progress(items: Sequence[_T], stream: TextIO, enabled: bool) -> Iterator[_T]:
+    """Yield ``items``, drawing a one-line progress bar on ``stream`` as it goes."""
+    total = len(items)
+    for done, item in enumerate(items, start=1):
+        yield item
+        if enabled:
+            width = 30
+            filled = width * done // total
+            bar = "#" * filled + "-" * (width - filled)
+            stream.write(f"\r[{bar}] {done}/{total}")
+            stream.flush()
+    if enabled:
+        stream.write("\n")
+
+
+def read_model(source: str) -> Mujoco:
+    """The model in the file ``source`` (``-``: standard input, paths read from here).
+
+    Raises:
+        MjcfError: The file cannot be read or is not MJCF (the message names file and line).
+
+    """
+    import serializers
+
+    if source == STDIO:
+        return serializers.loads(sys.stdin.read())
+    return serializers.load(source)
+
+
+def write_model(model: Mujoco, target: str, *, canonical: bool = False) -> None:
+    """Write ``model`` to the file ``target`` atomically (``-``: standard output)."""
+    import serializers
+
+    if target == STDIO:
+        sys.stdout.write(serializers.dumps(model, canonical=canonical))
+    else:
+        serializers.dump(model, target, canonical=canonical)
+
+
+def write_text(text: str, target: str) -> None:
+    """Write ``text`` to ``target`` atomically (``-``: standard output)."""
+    if target == STDIO:
+        sys.stdout.write(text)
+        return
+    from serializers.writer import write_atomically
+
+    write_atomically(text, target)
+
+
+def guarded(run: Callable[[argparse.Namespace], int]) -> Callable[[argparse.Namespace], int]:
+    """``run``, with library errors and :class:`Failed` printed as ``mjcf-model <verb>: ...``.
+
+    An :class:`~mjcf_model.errors.MjcfError` (its message names the file, line and
+    element path) or an ``OSError`` exits with status 2.
+    """
+
+    def verb(arguments: argparse.Namespace) -> int:
+        try:
+            return run(arguments)
+        except Failed as failure:
+            return _report(arguments, str(failure), failure.status)
+        except (MjcfError, OSError) as error:
+            return _report(arguments, str(error), 2)
+
+    return verb
+
+
+def _report(arguments: argparse.Namespace, message: str, status: int) -> int:
+    sys.stderr.write(f"mjcf-model {arguments.command}: {message}\n")
+    return status

@@ -1,0 +1,126 @@
+"""``mjcf-model fmt``: rewrite MJCF files in canonical form, as ``ruff format`` does for code.
+
+A file is rewritten only with proof that MuJoCo compiles the rewrite to the same
+model (:mod:`mjcf_model.tools.formatting`); otherwise it is left alone and the
+command fails. ``--check`` and ``--diff`` write nothing.
+
+Exit status: 0 when all is well, 1 when ``--check`` or ``--diff`` finds a file to
+reformat, 2 when a file cannot be read or could not be rewritten safely.
+
+Example:
+    >>> import pathlib, tempfile
+    >>> from mjcf_model.tools.cli import main
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "m.xml"
+    >>> _ = path.write_text("<mujoco><worldbody><geom size='.1'/></worldbody></mujoco>")
+    >>> main(["fmt", "--check", "--quiet", str(path)]), main(["fmt", "--quiet", str(path)])
+    (1, 0)
+    >>> main(["fmt", "--check", "--quiet", str(path)])
+    0
+
+"""
+
+from __future__ import annotations
+
+import argparse
+import difflib
+import sys
+from typing import Any
+
+from mjcf_model.errors import MjcfError
+from mjcf_model.tools.cli.common import STDIO, progress, show_progress, write_text
+from mjcf_model.tools.formatting import Formatted, format_file, format_text
+
+__all__ = ["add_parsers"]
+
+
+def _formatted(path: str) -> Formatted:
+    if path == STDIO:
+        return format_text(sys.stdin.read(), filename="<stdin>")
+    return format_file(path)
+
+
+def _unified(result: Formatted) -> str:
+    return "".join(
+        difflib.unified_diff(
+            result.original.splitlines(keepends=True),
+            result.text.splitlines(keepends=True),
+            fromfile=result.path,
+            tofile=result.path,
+        )
+    )
+
+
+def _fmt(arguments: argparse.Namespace) -> int:
+    files: list[str] = arguments.files
+    writing = not (arguments.check or arguments.diff)
+    shown = show_progress(len(files), arguments.quiet)
+    counts = {"reformatted": 0, "unchanged": 0, "failed": 0}
+    for path in progress(files, sys.stderr, shown):
+        try:
+            result = _formatted(path)
+        except MjcfError as error:
+            _say(arguments, f"error: {error}", shown)
+            counts["failed"] += 1
+            continue
+        if not result.safe:
+            why = "; ".join(result.differences[:5])
+            _say(arguments, f"error: {path}: not rewritten, it changes the model: {why}", shown)
+            counts["failed"] += 1
+            continue
+        if path == STDIO and writing:
+            write_text(result.text, STDIO)
+        if not result.changed:
+            counts["unchanged"] += 1
+            continue
+        counts["reformatted"] += 1
+        if arguments.diff:
+            sys.stdout.write(_unified(result))
+        elif arguments.check:
+            _say(arguments, f"would reformat {path}", shown)
+        elif path != STDIO:
+            write_text(result.text, path)
+    if not arguments.quiet:
+        done = "would be reformatted" if not writing else "reformatted"
+        summary = f"{_files(counts['reformatted'])} {done}, {_files(counts['unchanged'])} unchanged"
+        failed = f", {_files(counts['failed'])} failed" if counts["failed"] else ""
+        sys.stderr.write(summary + failed + "\n")
+    if counts["failed"]:
+        return 2
+    return 1 if counts["reformatted"] and not writing else 0
+
+
+def _files(count: int) -> str:
+    return f"{count} file" + ("" if count == 1 else "s")
+
+
+def _say(arguments: argparse.Namespace, line: str, shown: bool) -> None:
+    if arguments.quiet and not line.startswith("error"):
+        return
+    if shown:
+        sys.stderr.write("\r\033[K")
+    sys.stderr.write(line + "\n")
+
+
+def add_parsers(commands: Any) -> None:
+    """Add ``fmt`` to the command line's verbs."""
+    fmt = commands.add_parser(
+        "fmt",
+        help="rewrite MJCF files in canonical form (the compiled model unchanged)",
+        description=(
+            "Rewrite each file in the canonical form mjcf-model writes: two-space "
+            "indentation, shortest numbers, comments kept. A file is rewritten only when "
+            "MuJoCo compiles the rewrite to the identical model (for a file MuJoCo rejects "
+            "on its own, when the elements read back the same). '-' reads standard input "
+            "and writes standard output. Exit status 1 when --check or --diff finds a file "
+            "to reformat, 2 when a file fails."
+        ),
+    )
+    fmt.add_argument("files", nargs="+", metavar="FILE", help="MJCF files, or - for stdin")
+    fmt.add_argument(
+        "--check", action="store_true", help="write nothing; exit 1 if a file would change"
+    )
+    fmt.add_argument(
+        "--diff", action="store_true", help="write nothing; print a unified diff of the changes"
+    )
+    fmt.add_argument("-q", "--quiet", action="store_true", help="print errors only")
+    fmt.set_defaults(run=_fmt)
