@@ -68,8 +68,9 @@ def effective_attributes(model: Mujoco, kind: str, name: str) -> list[EffectiveA
     (``actuator``, ``sensor``). The attributes it writes come first, in its order;
     then those its classes supply, nearest class first. Actuators share one default
     per class (``<general>``, ``<motor>``... all set it), and tendons read their
-    class's ``<tendon>``, as in MuJoCo. Attributes nothing writes keep MuJoCo's
-    built-in defaults and are not listed.
+    class's ``<tendon>``, as in MuJoCo; an attribute the element's own tag does not
+    have (a ``kp`` set by ``<position>`` for a ``<motor>``) is not listed. Attributes
+    nothing writes keep MuJoCo's built-in defaults and are not listed.
 
     Raises:
         MjcfLookupError: No element of that kind has that name.
@@ -83,8 +84,14 @@ def effective_attributes(model: Mujoco, kind: str, name: str) -> list[EffectiveA
             found = [EffectiveAttribute(name=a, value=v, source=None) for a, v in written]
             given = classes.given_to(element, ancestors)
             chain = classes.chain(classes.class_of(element, ancestors))
+            spec = SCHEMA.get(key or "")
+            known = spec.attributes if spec is not None else None  # a motor reads no kp
             inherited = sorted(
-                (item for item in given.items() if item[0] not in own),
+                (
+                    item
+                    for item in given.items()
+                    if item[0] not in own and (known is None or item[0] in known)
+                ),
                 key=lambda item: chain.index(item[1][1]) if item[1][1] in chain else len(chain),
             )
             found.extend(
@@ -108,13 +115,33 @@ def _is(element: AnyElement, key: str | None, kind: str, name: str) -> bool:
     return False
 
 
+#: The tags that name elements of more than one schema key (``joint`` in a body, a
+#: fixed tendon or an equality).
+_SHARED_TAGS = frozenset(
+    tag
+    for tag, count in Counter(
+        key.rpartition("/")[2] for key in SCHEMA if not key.startswith("default/")
+    ).items()
+    if count > 1
+)
+
+
+def _kind(key: str | None, tag: str) -> str:
+    """What :attr:`ModelSummary.counts` counts an element as (see there)."""
+    if key is None or (tag not in _SHARED_TAGS and "/" in key):
+        return tag
+    return key.removeprefix("body/")
+
+
 @attrs.frozen(kw_only=True)
 class ModelSummary:
     """What :func:`model_summary` reports."""
 
     #: The ``model`` attribute of ``<mujoco>``.
     name: str | None
-    #: How many elements of each tag the model writes (default settings not counted).
+    #: How many elements of each kind the model writes (default settings not counted): the
+    #: tag, or where one tag names several kinds, the schema key (``joint`` for a body's
+    #: joints, ``tendon/fixed/joint`` for a fixed tendon's).
     counts: Mapping[str, int]
     #: The names declared in each namespace, in document order (default classes not included).
     names: Mapping[str, tuple[str, ...]]
@@ -142,7 +169,7 @@ def model_summary(model: Mujoco) -> ModelSummary:
     for element, key, _ in keyed_walk(model):
         if key is not None and key.startswith("default"):
             continue
-        counts[element.tag] += 1
+        counts[_kind(key, element.tag)] += 1
         spec = SCHEMA.get(key) if key is not None else None
         for attribute, namespace in spec.declares.items() if spec is not None else ():
             value = get_attribute(element, attribute)

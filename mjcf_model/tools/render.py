@@ -37,7 +37,8 @@ def choose_backend() -> None:
     first imported.
     """
     if sys.platform.startswith("linux") and not os.environ.get("DISPLAY"):
-        os.environ.setdefault("MUJOCO_GL", "egl")
+        if not os.environ.get("MUJOCO_GL"):  # unset or empty
+            os.environ["MUJOCO_GL"] = "egl"
 
 
 def render(

@@ -15,13 +15,19 @@ from __future__ import annotations
 import argparse
 from collections.abc import Sequence
 
-from mjcf_model.tools.cli import check, diff, fmt, info, render, transforms
-from mjcf_model.tools.cli.check import example_path
+from mjcf_model.tools.cli import check as check
+from mjcf_model.tools.cli import diff as diff
+from mjcf_model.tools.cli import examples as examples
+from mjcf_model.tools.cli import fmt as fmt
+from mjcf_model.tools.cli import info as info
+from mjcf_model.tools.cli import render as render
+from mjcf_model.tools.cli import transforms as transforms
+from mjcf_model.tools.cli.examples import example_path
 
 __all__ = ["example_path", "main"]
 
 #: The verbs, in the order ``--help`` lists them.
-_VERBS = (check, fmt, diff, transforms, info, render)
+_VERBS = (check, fmt, diff, transforms, info, render, examples)
 
 
 def parser() -> argparse.ArgumentParser:

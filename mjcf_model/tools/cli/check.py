@@ -18,24 +18,13 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Iterable
-from importlib import resources
 from typing import Any, TextIO
 
 from mjcf_model.tools.check import CheckResult, check_file
 from mjcf_model.tools.cli.common import progress, show_progress
+from mjcf_model.tools.cli.examples import example_path
 
-__all__ = ["add_parsers", "example_path"]
-
-
-def example_path() -> str:
-    """The path of the example model shipped with the package.
-
-    Example:
-        >>> example_path().endswith("arm.xml")
-        True
-
-    """
-    return str(resources.files("mjcf_model") / "examples" / "arm.xml")
+__all__ = ["add_parsers"]
 
 
 def _report(result: CheckResult, out: TextIO, verbose: bool) -> None:

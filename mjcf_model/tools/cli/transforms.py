@@ -29,21 +29,26 @@ from mjcf_model.nodes.base import AnyElement
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tools.cli.common import STDIO, Failed, guarded, read_model, write_model
 
-__all__ = ["add_parsers", "split_prefix"]
+__all__ = ["add_parsers", "split_part"]
 
 
-def split_prefix(argument: str) -> tuple[str, str]:
-    """``FILE[:PREFIX]`` as ``(file, prefix)``: a file that exists by the whole name wins.
+def split_part(argument: str) -> tuple[str, str, str | None]:
+    """``FILE[:PREFIX][@NAME]`` as ``(file, prefix, name)``: a file of the whole name wins.
 
     Example:
-        >>> split_prefix("robots/arm.xml:left_"), split_prefix("arm.xml")
-        (('robots/arm.xml', 'left_'), ('arm.xml', ''))
+        >>> split_part("robots/arm.xml:left_@left_mount"), split_part("arm.xml")
+        (('robots/arm.xml', 'left_', 'left_mount'), ('arm.xml', '', None))
 
     """
-    if argument == STDIO or os.path.exists(argument) or ":" not in argument:
-        return argument, ""
-    path, _, prefix = argument.rpartition(":")
-    return path, prefix
+    if argument == STDIO or os.path.exists(argument):
+        return argument, "", None
+    rest, at, name = argument.rpartition("@")
+    if not at or "/" in name or not rest:
+        rest, name = argument, ""
+    path, colon, prefix = rest.rpartition(":")
+    if not colon or "/" in prefix:
+        path, prefix = rest, ""
+    return path, prefix, name or None
 
 
 def _model(node: AnyElement) -> Mujoco:
@@ -68,16 +73,20 @@ def _compose(arguments: argparse.Namespace) -> int:
     from mjcf_model.transforms.composition.attach import attach_all
     from mjcf_model.transforms.naming.renaming import prefixed
 
-    path, prefix = split_prefix(arguments.base)
+    path, prefix, _ = split_part(arguments.base)
     scene = read_model(path)
     if prefix:
         scene = _model(prefixed(scene, prefix))
-    children = []
+    runs: list[tuple[str | None, list[tuple[Mujoco, str]]]] = []  # parts in a row, one place
     for argument in arguments.parts:
-        path, prefix = split_prefix(argument)
-        children.append((read_model(path), prefix))
-    scene = _checked(attach_all(scene, children, at=arguments.at))
-    write_model(scene, arguments.output)
+        path, prefix, at = split_part(argument)
+        at = at if at is not None else arguments.at
+        if not runs or runs[-1][0] != at:
+            runs.append((at, []))
+        runs[-1][1].append((read_model(path), prefix))
+    for at, children in runs:
+        scene = attach_all(scene, children, at=at)
+    write_model(_checked(scene), arguments.output)
     if arguments.export:
         _export(scene, arguments.export)
     return 0
@@ -118,15 +127,19 @@ def add_parsers(commands: Any) -> None:
         help="attach models to a base model and write the scene",
         description=(
             "Read BASE, attach each PART to it (at the world, or at the body, frame or site "
-            "--at names), each with its names prefixed by PREFIX, check that MuJoCo compiles "
-            "the scene, and write it to OUT (- for stdout). Each model keeps its own "
-            "<compiler> settings and files, wherever its folder is."
+            "its @NAME or --at names), each with its names prefixed by PREFIX, check that "
+            "MuJoCo compiles the scene, and write it to OUT (- for stdout). Each model keeps "
+            "its own <compiler> settings and files, wherever its folder is."
         ),
     )
     compose.add_argument("output", metavar="OUT", help="where to write the scene (- for stdout)")
     compose.add_argument("base", metavar="BASE[:PREFIX]", help="the base model")
-    compose.add_argument("parts", nargs="+", metavar="PART[:PREFIX]", help="models to attach")
-    compose.add_argument("--at", metavar="NAME", help="the body, frame or site to attach at")
+    compose.add_argument(
+        "parts", nargs="+", metavar="PART[:PREFIX][@NAME]", help="models to attach (at NAME)"
+    )
+    compose.add_argument(
+        "--at", metavar="NAME", help="the body, frame or site to attach parts without @NAME at"
+    )
     compose.add_argument(
         "--export", metavar="DIR", help="also export the scene with all its files into DIR"
     )

@@ -1,0 +1,129 @@
+"""``changes_between``: the semantic diff, on generated models, the corpus and hand-made cases."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import attrs
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from mjcf_model import Mujoco, find_all, prefixed, with_attributes
+from mjcf_model.strategies import models
+from mjcf_model.tools.diff import Change, changes_between
+from mjcf_model.tree.paths import replaced_at
+from mjcf_model.tree.traversal import walk
+from serializers import dumps, load, loads
+from tests.conftest import compiling_corpus, corpus_id
+
+
+@settings(deadline=None)
+@given(models())
+def test_a_model_equals_its_canonical_rewrite(model: Mujoco) -> None:
+    """Formatting, comments dropped or kept, number spelling: none of it is a change."""
+    assert changes_between(model, loads(dumps(model, canonical=True))) == []
+    assert changes_between(model, model) == []
+
+
+@settings(deadline=None)
+@given(models(), st.data())
+def test_one_changed_attribute_is_the_one_change(model: Mujoco, data: st.DataObject) -> None:
+    """Changing one attribute of one element is reported as exactly that, at that element."""
+    elements = [(path, element) for path, element in walk(model) if path]
+    path, element = data.draw(st.sampled_from(elements))
+    changed = replaced_at(model, path, [with_attributes(element, {"user_note": "42"})])
+    [change] = changes_between(model, changed)
+    assert (change.kind, change.attribute, change.old, change.new) == (
+        "changed",
+        "user_note",
+        None,
+        "42",
+    )
+    [back] = changes_between(changed, model)
+    assert (back.path, back.old, back.new) == (change.path, "42", None)
+
+
+@settings(deadline=None)
+@given(models())
+def test_prefixing_renames_every_named_element(model: Mujoco) -> None:
+    """After prefixing, each named element of the original is removed and its twin added."""
+    named = {
+        (element.tag, element.name)
+        for _, element in walk(model)
+        if isinstance(getattr(element, "name", None), str)
+    }
+    changes = changes_between(model, prefixed(model, "p_"))
+    removed = [change for change in changes if change.kind == "removed"]
+    added = [change for change in changes if change.kind == "added"]
+    assert len(removed) == len(added)
+    assert all("='p_" in change.path for change in added)
+    assert len(removed) <= len(named)
+
+
+@pytest.mark.parametrize("path", compiling_corpus()[::7], ids=corpus_id)
+def test_corpus_file_equals_its_canonical_form(path: Path) -> None:
+    """A real file and its canonical rewrite have no semantic difference."""
+    model = load(path)
+    assert changes_between(model, loads(dumps(model, canonical=True))) == []
+
+
+def test_moves_additions_removals_and_number_spelling() -> None:
+    """A hand-checked case: each kind once, reported where it happens."""
+    first = loads(
+        """<mujoco><worldbody>
+             <body name="arm"><geom size="0.10"/><body name="hand"/><site name="s"/></body>
+             <geom name="floor" type="plane" size="1 1 .1"/>
+           </worldbody></mujoco>"""
+    )
+    second = loads(
+        """<mujoco>
+             <worldbody>
+               <geom size="1 1 0.1" type="plane" name="floor"/>
+               <body name="arm"><geom size=".1" rgba="1 0 0 1"/></body>
+               <body name="hand"><camera name="c"/></body>
+             </worldbody>
+           </mujoco>"""
+    )
+    assert [str(change) for change in changes_between(first, second)] == [
+        "- /mujoco/worldbody/body[@name='arm']/site[@name='s']",
+        "~ /mujoco/worldbody/body[@name='arm']/geom rgba: (not written) -> 1 0 0 1",
+        "> /mujoco/worldbody/body[@name='hand'] (was /mujoco/worldbody/body[@name='arm']"
+        "/body[@name='hand'])",
+        "+ /mujoco/worldbody/body[@name='hand']/camera[@name='c']",
+    ]
+
+
+def test_unnamed_elements_match_by_position_and_text_counts() -> None:
+    """The second unnamed geom is geom[2]; text content is compared too (white space aside)."""
+    first = loads(
+        '<mujoco><worldbody><geom size="1"/><geom size="2"/></worldbody>'
+        "<custom><text name='t' data='a'/></custom></mujoco>"
+    )
+    second = loads(
+        '<mujoco><worldbody><geom size="1"/><geom size="3"/></worldbody>'
+        "<custom><text name='t' data='b'/></custom></mujoco>"
+    )
+    changes = changes_between(first, second)
+    assert [(c.path, c.attribute, c.old, c.new) for c in changes] == [
+        ("/mujoco/worldbody/geom[2]", "size", "2", "3"),
+        ("/mujoco/custom/text[@name='t']", "data", "a", "b"),
+    ]
+    removed = changes_between(first, loads("<mujoco/>"))
+    assert [(c.kind, c.path) for c in removed] == [
+        ("removed", "/mujoco/worldbody"),
+        ("removed", "/mujoco/custom"),
+    ]
+
+
+def test_change_to_dict_is_json_ready() -> None:
+    """``to_dict`` leaves out what is not set, and every value is text."""
+    change = Change(kind="changed", path="/mujoco/worldbody/geom", attribute="size", old="1")
+    assert change.to_dict() == {
+        "kind": "changed",
+        "path": "/mujoco/worldbody/geom",
+        "attribute": "size",
+        "old": "1",
+    }
+    assert attrs.evolve(change, new="2").to_dict()["new"] == "2"
+    assert find_all  # the public query still imports beside the diff
