@@ -246,3 +246,23 @@ def test_readme_main_job(tmp_path: Path) -> None:
     summary = run("info", str(scene))
     assert "  site (4): left_mount, right_mount, left_tip, right_tip\n" in summary.stdout
     assert run("examples", str(demo)).returncode == 2  # not empty: nothing overwritten
+
+
+def test_readme_main_job_command_runs_as_written(tmp_path: Path) -> None:
+    """The README's main-job command (from the installed package's description) runs here."""
+    from importlib import metadata
+
+    readme = metadata.metadata("mjcf-model").get_payload()
+    assert isinstance(readme, str)
+    setup = "python3 -m venv .venv && .venv/bin/pip install -e . && "
+    [line] = [line for line in readme.splitlines() if line.startswith(setup)]
+    command = line.removeprefix(setup).replace(
+        ".venv/bin/mjcf-model", f"{sys.executable} -m mjcf_model"
+    )
+    env = {k: v for k, v in os.environ.items() if k != "MUJOCO_GL"}
+    done = subprocess.run(
+        ["bash", "-c", command], cwd=tmp_path, capture_output=True, text=True, check=False, env=env
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.startswith("model: workcell\n")
+    assert (tmp_path / "demo" / "scene.png").read_bytes().startswith(b"\x89PNG")

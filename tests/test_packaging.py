@@ -18,6 +18,7 @@ import subprocess
 import sys
 import sysconfig
 import tempfile
+import tomllib
 import zipfile
 from email.message import Message
 from pathlib import Path
@@ -87,6 +88,7 @@ def test_wheel_holds_every_package_file_and_nothing_else() -> None:
     packaged = {name for name in _wheel_names() if ".dist-info/" not in name}
     assert {"mjcf_model/nodes/body.py", "mjcf_model/compat/objects/__init__.py"} <= sources
     assert {"mjcf_model/py.typed", "serializers/py.typed", "mjcf_model/examples/arm.xml"} <= sources
+    assert "mjcf_model/examples/workcell/meshes/wedge.obj" in packaged  # the examples' mesh
     assert sorted(sources - packaged) == []
     assert sorted(packaged - sources) == []
 
@@ -186,3 +188,26 @@ def test_each_public_module_imports_first_in_a_fresh_interpreter(statement: str)
         [sys.executable, "-c", statement], capture_output=True, text=True, check=False
     )
     assert result.returncode == 0, result.stderr
+
+
+def test_pre_commit_hooks_run_the_installed_command() -> None:
+    """Each hook in .pre-commit-hooks.yaml runs a verb of the packaged ``mjcf-model`` script."""
+    text = (source_tree() / ".pre-commit-hooks.yaml").read_text()
+    hooks = [block for block in text.split("- id: ")[1:]]
+    assert [block.split()[0] for block in hooks] == ["mjcf-model-fmt", "mjcf-model-fmt-check"]
+    for block in hooks:
+        fields = dict(
+            line.strip().split(": ", 1) for line in block.splitlines()[1:] if ": " in line
+        )
+        assert fields["language"] == "python" and fields["types"] == "[xml]"
+        program, *arguments = fields["entry"].split()
+        assert program == "mjcf-model"
+        done = subprocess.run(
+            [sys.executable, "-m", "mjcf_model", *arguments, "--help"],
+            capture_output=True,
+            text=True,
+            check=False,
+        )
+        assert done.returncode == 0 and "--check" in done.stdout, done.stderr
+    scripts = tomllib.loads((source_tree() / "pyproject.toml").read_text())["project"]["scripts"]
+    assert scripts["mjcf-model"] == "mjcf_model.tools.cli:main"
