@@ -266,3 +266,13 @@ def test_readme_main_job_command_runs_as_written(tmp_path: Path) -> None:
     assert done.returncode == 0, done.stderr
     assert done.stdout.startswith("model: workcell\n")
     assert (tmp_path / "demo" / "scene.png").read_bytes().startswith(b"\x89PNG")
+
+
+def test_check_reads_stdin() -> None:
+    """``check -`` round-trips the text piped in; MuJoCo's rejection is reported, not a crash."""
+    done = run("check", "-", stdin=UNTIDY)
+    assert done.returncode == 0 and done.stdout.startswith("identical     <stdin>\n")
+    rejected = run(
+        "check", "--strict", "-", stdin="<mujoco><worldbody><geom/></worldbody></mujoco>"
+    )
+    assert rejected.returncode == 1 and rejected.stdout.startswith("not compiled  <stdin>")

@@ -11,8 +11,9 @@
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import attrs
 
@@ -20,7 +21,10 @@ from mjcf_model.errors import MjcfError
 from mjcf_model.files.compiling import compiled
 from mjcf_model.tools.compare import model_differences, path_fields
 
-__all__ = ["CheckResult", "check_file", "written_differences"]
+if TYPE_CHECKING:
+    from mjcf_model.nodes.root import Mujoco
+
+__all__ = ["CheckResult", "check_file", "check_text", "written_differences"]
 
 #: ``identical``: both compile to the same model; ``different``: they compile to
 #: different models; ``not-compiled``: MuJoCo rejects the original itself;
@@ -62,18 +66,54 @@ def check_file(path: str | os.PathLike[str], *, inline_includes: bool = False) -
     """
     import mujoco
 
-    from serializers import dumps, load
+    from serializers import load
 
     name = str(path)
     if not Path(path).is_file():
         return CheckResult(path=name, status="error", message="no such file")
+    return _checked(
+        name,
+        lambda: mujoco.MjModel.from_xml_path(name),
+        lambda: load(path, inline_includes=inline_includes),
+    )
+
+
+def check_text(text: str, *, filename: str = "<stdin>") -> CheckResult:
+    """:func:`check_file` for MJCF text; relative files resolve from the working folder.
+
+    Example:
+        >>> check_text("<mujoco><worldbody><geom size='1'/></worldbody></mujoco>").status
+        'identical'
+
+    """
+    import mujoco
+
+    from serializers import loads
+
+    return _checked(
+        filename,
+        lambda: mujoco.MjModel.from_xml_string(text),
+        lambda: loads(text, base_dir=Path.cwd(), filename=filename),
+        beside=str(Path.cwd() / "stdin.xml"),
+    )
+
+
+def _checked(
+    name: str,
+    original: Callable[[], Any],
+    loaded: Callable[[], Mujoco],
+    beside: str | None = None,
+) -> CheckResult:
+    """Compile ``original()``, write ``loaded()`` back, compile that, compare."""
+    from serializers import dumps
+
     try:
-        original = mujoco.MjModel.from_xml_path(name)
+        model = original()
     except ValueError as error:
         return CheckResult(path=name, status="not-compiled", message=str(error).strip())
     try:
-        written = dumps(load(path, inline_includes=inline_includes))
-        differences = written_differences(original, written, name)
+        written = dumps(loaded())
+        differences = written_differences(model, written, beside or name)
     except MjcfError as error:
         return CheckResult(path=name, status="error", message=str(error))
     status: Status = "different" if differences else "identical"

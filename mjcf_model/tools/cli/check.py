@@ -20,8 +20,8 @@ import sys
 from collections.abc import Iterable
 from typing import Any, TextIO
 
-from mjcf_model.tools.check import CheckResult, check_file
-from mjcf_model.tools.cli.common import progress, show_progress
+from mjcf_model.tools.check import CheckResult, check_file, check_text
+from mjcf_model.tools.cli.common import STDIO, progress, show_progress
 from mjcf_model.tools.cli.examples import example_path
 
 __all__ = ["add_parsers"]
@@ -57,7 +57,10 @@ def _check(arguments: argparse.Namespace) -> int:
     show_bar = show_progress(len(files), arguments.quiet)
     results = []
     for path in progress(files, sys.stderr, show_bar):
-        result = check_file(path, inline_includes=arguments.inline_includes)
+        if path == STDIO:
+            result = check_text(sys.stdin.read())
+        else:
+            result = check_file(path, inline_includes=arguments.inline_includes)
         results.append(result)
         if not arguments.quiet:
             if show_bar:
@@ -84,7 +87,7 @@ def add_parsers(commands: Any) -> None:
             "differs or fails."
         ),
     )
-    check.add_argument("files", nargs="*", help="MJCF files to check")
+    check.add_argument("files", nargs="*", help="MJCF files to check (- for stdin)")
     check.add_argument("--example", action="store_true", help="also check the bundled example")
     check.add_argument(
         "--inline-includes", action="store_true", help="inline <include> files before writing"
