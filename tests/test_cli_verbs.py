@@ -15,7 +15,18 @@ import pytest
 from mjcf_model.tools.cli import main
 from mjcf_model.tools.compare import model_differences, path_fields
 
-VERBS = ("check", "fmt", "diff", "compose", "prefix", "scale", "export", "info", "render")
+VERBS = (
+    "check",
+    "fmt",
+    "diff",
+    "compose",
+    "prefix",
+    "scale",
+    "export",
+    "info",
+    "render",
+    "examples",
+)
 
 #: A model with a default class, written untidily (a one-attribute edit is made to it).
 UNTIDY = """<mujoco model="arm">
