@@ -23,6 +23,7 @@ from mjcf_model.nodes.root import Mujoco
 __all__ = [
     "STDIO",
     "Failed",
+    "add_model_argument",
     "guarded",
     "progress",
     "read_model",
@@ -46,6 +47,11 @@ class Failed(Exception):
         super().__init__(message)
         #: The exit status.
         self.status = status
+
+
+def add_model_argument(parser: argparse.ArgumentParser) -> None:
+    """The ``FILE`` argument of a verb that reads one model (``-`` for standard input)."""
+    parser.add_argument("file", metavar="FILE", help="the model (- for stdin)")
 
 
 def show_progress(count: int, quiet: bool = False) -> bool:

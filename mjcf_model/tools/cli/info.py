@@ -21,7 +21,7 @@ import sys
 from collections.abc import Mapping
 from typing import Any
 
-from mjcf_model.tools.cli.common import Failed, guarded, read_model
+from mjcf_model.tools.cli.common import Failed, add_model_argument, guarded, read_model
 from mjcf_model.tools.info import ModelSummary, effective_attributes, model_summary
 
 __all__ = ["add_parsers"]
@@ -90,7 +90,7 @@ def add_parsers(commands: Any) -> None:
             "childclass, each with the class that supplied it."
         ),
     )
-    info.add_argument("file", metavar="FILE", help="the model (- for stdin)")
+    add_model_argument(info)
     info.add_argument("--defaults", action="store_true", help="show the default-class tree")
     info.add_argument("--element", metavar="KIND:NAME", help="one element's effective attributes")
     info.set_defaults(run=guarded(_info))

@@ -11,7 +11,7 @@ import argparse
 import sys
 from typing import Any
 
-from mjcf_model.tools.cli.common import STDIO, Failed, guarded, read_model
+from mjcf_model.tools.cli.common import STDIO, Failed, add_model_argument, guarded, read_model
 
 __all__ = ["add_parsers"]
 
@@ -48,7 +48,7 @@ def add_parsers(commands: Any) -> None:
             "model. Headless machines draw through EGL or OSMesa (set MUJOCO_GL to choose)."
         ),
     )
-    render.add_argument("file", metavar="FILE", help="the model (- for stdin)")
+    add_model_argument(render)
     render.add_argument(
         "-o", "--output", required=True, metavar="OUT.png", help="the picture (- for stdout)"
     )

@@ -27,7 +27,14 @@ from typing import Any
 
 from mjcf_model.nodes.base import AnyElement
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.tools.cli.common import STDIO, Failed, guarded, read_model, write_model
+from mjcf_model.tools.cli.common import (
+    STDIO,
+    Failed,
+    add_model_argument,
+    guarded,
+    read_model,
+    write_model,
+)
 
 __all__ = ["add_parsers", "split_part"]
 
@@ -150,7 +157,7 @@ def add_parsers(commands: Any) -> None:
         help="prefix every name a model declares, and every reference to it",
         description="Write FILE with PREFIX before every name it declares and every reference.",
     )
-    prefix.add_argument("file", metavar="FILE", help="the model (- for stdin)")
+    add_model_argument(prefix)
     prefix.add_argument("prefix", metavar="PREFIX", help="the text put before each name")
     _output_option(prefix)
     prefix.set_defaults(run=guarded(_prefix))
@@ -164,7 +171,7 @@ def add_parsers(commands: Any) -> None:
             "the volume."
         ),
     )
-    scale.add_argument("file", metavar="FILE", help="the model (- for stdin)")
+    add_model_argument(scale)
     scale.add_argument(
         "--factor", type=float, nargs="+", required=True, metavar="F", help="1 or 3 factors"
     )
@@ -180,7 +187,7 @@ def add_parsers(commands: Any) -> None:
             "must not exist or be empty); every path in DIR is relative."
         ),
     )
-    export.add_argument("file", metavar="FILE", help="the model")
+    add_model_argument(export)
     export.add_argument("directory", metavar="DIR", help="the folder to create")
     export.set_defaults(run=guarded(_export_verb))
 
