@@ -28,8 +28,9 @@ the rewrite must not be written.
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from pathlib import Path
-from typing import Literal
+from typing import Any, Literal
 
 import attrs
 
@@ -86,16 +87,18 @@ def format_file(path: str | os.PathLike[str]) -> Formatted:
         False
 
     """
+    import mujoco
+
     source = Path(path)
     try:
         data = source.read_bytes()
     except OSError as error:
         raise MjcfIncludeError(f"cannot read {str(source)!r}: {error.strerror}") from None
-    return format_text(data.decode("utf-8", errors="replace"), filename=str(source))
+    return _formatted(data, str(source), lambda: mujoco.MjModel.from_xml_path(str(source)))
 
 
 def format_text(text: str, *, filename: str = "<string>") -> Formatted:
-    """The canonical form of MJCF ``text``, read as if it were the file ``filename``.
+    r"""The canonical form of MJCF ``text``, read as if it were the file ``filename``.
 
     Relative files resolve from the folder of ``filename`` (the working folder for
     ``"<string>"`` or ``"<stdin>"``).
@@ -103,46 +106,60 @@ def format_text(text: str, *, filename: str = "<string>") -> Formatted:
     Raises:
         MjcfError: ``text`` is not MJCF (the message names the line).
 
+    Example:
+        >>> result = format_text('<mujoco model="m"/>\n')
+        >>> result.changed, result.proof
+        (False, 'unchanged')
+
     """
+    return _formatted(text, filename, lambda: _compiled_text(text, _beside(filename)))
+
+
+def _folder(filename: str) -> Path:
+    """Where relative files resolve from for ``filename`` (the working folder for text)."""
+    return Path(filename).parent if not filename.startswith("<") else Path.cwd()
+
+
+def _beside(filename: str) -> str:
+    """A file name in :func:`_folder` that stands for ``filename``."""
+    name = Path(filename).name if not filename.startswith("<") else "stdin.xml"
+    return str(_folder(filename) / name)
+
+
+def _formatted(data: str | bytes, filename: str, compile_original: Callable[[], Any]) -> Formatted:
+    """The canonical form of ``data`` read as ``filename``, and its proof."""
     from serializers import dumps, loads
 
-    folder = Path(filename).parent if not filename.startswith("<") else Path.cwd()
-    model = loads(text, base_dir=folder, filename=filename)
+    text = data if isinstance(data, str) else data.decode("utf-8", errors="replace")
+    folder = _folder(filename)
+    model = loads(data, base_dir=folder, filename=filename)
     canonical = dumps(model, canonical=True)
+    unchanged = Formatted(path=filename, original=text, text=canonical, proof="unchanged")
     if canonical == text:
-        return Formatted(path=filename, original=text, text=canonical, proof="unchanged")
-    beside = str(folder / (Path(filename).name if not filename.startswith("<") else "stdin.xml"))
+        return unchanged
     try:
-        original = _compiled_original(text, beside)
+        original = compile_original()
     except ValueError:  # MuJoCo rejects the original itself: compare the elements
         changes = changes_between(model, loads(canonical, base_dir=folder, filename=filename))
-        differences = tuple(str(change) for change in changes)
-        return Formatted(
-            path=filename, original=text, text=canonical, proof="elements", differences=differences
-        )
+        return attrs.evolve(unchanged, proof="elements", differences=tuple(map(str, changes)))
     try:
-        fields = written_differences(original, canonical, beside)
+        fields = written_differences(original, canonical, _beside(filename))
     except MjcfCompileError as error:
         fields = (str(error),)
-    return Formatted(
-        path=filename, original=text, text=canonical, proof="compiled", differences=fields
-    )
+    return attrs.evolve(unchanged, proof="compiled", differences=fields)
 
 
-def _compiled_original(text: str, beside: str) -> object:
+def _compiled_text(text: str, beside: str) -> Any:
     """MuJoCo's model of ``text`` standing at ``beside`` (raises ``ValueError`` if rejected).
 
-    The file itself when it holds ``text``; else ``text`` written beside it for the
-    moment, or, where the folder cannot be written, compiled from memory.
+    The text is written beside it for the moment or, where that folder cannot be
+    written, compiled from memory.
     """
     import mujoco
 
     from mjcf_model.tools.compare import compile_text_beside
 
-    path = Path(beside)
     try:
-        if path.is_file() and path.read_bytes().decode("utf-8", errors="replace") == text:
-            return mujoco.MjModel.from_xml_path(beside)
         return compile_text_beside(text, beside)
     except OSError:
         return mujoco.MjModel.from_xml_string(text)
