@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mjcf_model import Mujoco, find_all, prefixed, with_attributes
+from mjcf_model import Mujoco, declared_names, find_all, prefixed, with_attributes
 from mjcf_model.strategies import models
 from mjcf_model.tools.diff import Change, changes_between
 from mjcf_model.tree.paths import replaced_at
@@ -47,18 +47,15 @@ def test_one_changed_attribute_is_the_one_change(model: Mujoco, data: st.DataObj
 @settings(deadline=None)
 @given(models())
 def test_prefixing_renames_every_named_element(model: Mujoco) -> None:
-    """After prefixing, each named element of the original is removed and its twin added."""
-    named = {
-        (element.tag, element.name)
-        for _, element in walk(model)
-        if isinstance(getattr(element, "name", None), str)
-    }
+    """After prefixing, named elements are removed and their prefixed twins added, one for one."""
+    declared = sum(len(names) for names in declared_names(model).values())
     changes = changes_between(model, prefixed(model, "p_"))
     removed = [change for change in changes if change.kind == "removed"]
     added = [change for change in changes if change.kind == "added"]
-    assert len(removed) == len(added)
-    assert all("='p_" in change.path for change in added)
-    assert len(removed) <= len(named)
+    assert len(removed) == len(added) <= declared
+    assert all("='p_" in change.path.rpartition("/")[2] for change in added)
+    assert not any("='p_" in change.path for change in removed)
+    assert (declared == 0) == (not changes)
 
 
 @pytest.mark.parametrize("path", compiling_corpus()[::7], ids=corpus_id)
