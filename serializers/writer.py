@@ -37,7 +37,7 @@ from mjcf_model.tree.traversal import keyed_walk
 from serializers.canonical import attribute_texts, write_canonical
 from serializers.kept_format import write_kept
 
-__all__ = ["attribute_texts", "dump", "dumps", "to_etree", "write_atomically"]
+__all__ = ["attribute_texts", "dump", "dumps", "relocated_for", "to_etree", "write_atomically"]
 
 
 def dumps(node: Node, *, indent: str = "  ", canonical: bool = False) -> str:
@@ -111,11 +111,11 @@ def dump(
     if not isinstance(target, (str, os.PathLike)):
         name = getattr(target, "name", None)  # an open file names its path, as load reads it
         if isinstance(name, str) and not name.startswith("<"):
-            node = _relocated_for(node, Path(name).parent)
+            node = relocated_for(node, Path(name).parent)
         target.write(dumps(node, indent=indent, canonical=canonical))
         return
     path = Path(target)
-    text = dumps(_relocated_for(node, path.parent), indent=indent, canonical=canonical)
+    text = dumps(relocated_for(node, path.parent), indent=indent, canonical=canonical)
     write_atomically(text, path)
 
 
@@ -134,16 +134,15 @@ def write_atomically(data: str | bytes, target: str | os.PathLike[str]) -> None:
         '<mujoco/>'
 
     """
-    path = Path(target)
+    path = Path(os.path.realpath(target))  # through a link: the file it names is written
     handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
         with os.fdopen(handle, "wb") as stream:
             stream.write(data.encode("utf-8") if isinstance(data, str) else data)
             stream.flush()
             os.fsync(stream.fileno())
-        if path.exists():
-            with contextlib.suppress(OSError):
-                os.chmod(temporary, path.stat().st_mode & 0o7777)
+        with contextlib.suppress(OSError):  # an old file's mode, else the umask's
+            os.chmod(temporary, path.stat().st_mode & 0o7777 if path.exists() else _new_mode())
         os.replace(temporary, path)
     except BaseException:
         with contextlib.suppress(OSError):
@@ -151,7 +150,14 @@ def write_atomically(data: str | bytes, target: str | os.PathLike[str]) -> None:
         raise
 
 
-def _relocated_for(node: Node, folder: Path) -> Node:
+def _new_mode() -> int:
+    """The mode ``open`` gives a new file: 0o666 less the process's umask."""
+    mask = os.umask(0)
+    os.umask(mask)
+    return 0o666 & ~mask
+
+
+def relocated_for(node: Node, folder: Path) -> Node:
     """A loaded model with its paths rewritten to resolve from ``folder``; other nodes as given."""
     if isinstance(node, Mujoco) and node.base_dir is not None:
         return _relocated(node, folder)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import attrs
+import mujoco
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -84,6 +85,7 @@ def test_moves_additions_removals_and_number_spelling() -> None:
     )
     assert [str(change) for change in changes_between(first, second)] == [
         "- /mujoco/worldbody/body[@name='arm']/site[@name='s']",
+        "> /mujoco/worldbody/geom[@name='floor'] (order changed)",
         "~ /mujoco/worldbody/body[@name='arm']/geom rgba: (not written) -> 1 0 0 1",
         "> /mujoco/worldbody/body[@name='hand'] (was /mujoco/worldbody/body[@name='arm']"
         "/body[@name='hand'])",
@@ -124,3 +126,27 @@ def test_change_to_dict_is_json_ready() -> None:
     }
     assert attrs.evolve(change, new="2").to_dict()["new"] == "2"
     assert find_all  # the public query still imports beside the diff
+
+
+def test_order_and_references_count_as_mujoco_counts_them() -> None:
+    """Reordered actuators move and references compare as names: both change the model.
+
+    MuJoCo numbers actuators in order, and "1" and "1.0" are two joints.
+    """
+    base = (
+        '<worldbody><body><joint name="1"/><joint name="1.0"/><geom size="1"/></body></worldbody>'
+    )
+    first = loads(
+        f'<mujoco>{base}<actuator><motor name="a" joint="1"/><motor name="b" joint="1"/>'
+        "</actuator></mujoco>"
+    )
+    second = loads(
+        f'<mujoco>{base}<actuator><motor name="b" joint="1"/><motor name="a" joint="1.0"/>'
+        "</actuator></mujoco>"
+    )
+    changes = [str(change) for change in changes_between(first, second)]
+    assert "~ /mujoco/actuator/motor[@name='a'] joint: 1 -> 1.0" in changes
+    moved = [change for change in changes if change.endswith("(order changed)")]
+    assert len(changes) == 2 and len(moved) == 1  # one of the two swapped motors moved
+    compiled = [mujoco.MjModel.from_xml_string(dumps(model)) for model in (first, second)]
+    assert compiled[0].actuator_trnid.tolist() != compiled[1].actuator_trnid.tolist()

@@ -124,3 +124,16 @@ def test_summary_names_and_classes() -> None:
     assert dict(summary.classes) == {"main": None, "c": "main"}
     assert summary.class_settings["main"] == ("general", "motor", "tendon")
     assert summary.compiler["angle"] == "degree"
+
+
+def test_equalities_read_the_equality_default() -> None:
+    """<default><equality solref> reaches every kind of equality, as MuJoCo compiles it."""
+    xml = """<mujoco><default><equality solref="0.05 1"/></default>
+      <worldbody><body name="a"><freejoint/><geom size="1"/></body>
+        <body name="b"><freejoint/><geom size="1"/></body></worldbody>
+      <equality><weld name="w" body1="a" body2="b"/></equality></mujoco>"""
+    given = {item.name: item for item in effective_attributes(loads(xml), "equality", "w")}
+    compiled = mujoco.MjModel.from_xml_string(xml)
+    assert (
+        given["solref"].value == tuple(compiled.eq_solref[0]) and given["solref"].source == "main"
+    )

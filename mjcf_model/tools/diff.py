@@ -26,6 +26,7 @@ is the second unnamed ``geom`` of the body ``arm``.
 
 from __future__ import annotations
 
+import bisect
 from collections.abc import Iterator
 from typing import Any, Literal
 
@@ -34,12 +35,13 @@ import attrs
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, attribute_items
 from mjcf_model.schema.namespaces import SCHEMA, guess_context
 from mjcf_model.tree.traversal import schema_key
-from mjcf_model.values import format_value
+from mjcf_model.values import Value, format_value
 
 __all__ = ["Change", "ChangeKind", "changes_between"]
 
 #: ``added``: only in the second model; ``removed``: only in the first; ``moved``:
-#: under another parent; ``changed``: one attribute (or the text) differs.
+#: under another parent, or in another order among its parent's children; ``changed``:
+#: one attribute (or the text) differs.
 ChangeKind = Literal["added", "removed", "moved", "changed"]
 
 #: The sign :meth:`Change.__str__` starts a line with, by kind.
@@ -83,7 +85,7 @@ class Change:
     def __str__(self) -> str:
         line = f"{_SIGNS[self.kind]} {self.path}"
         if self.kind == "moved":
-            line += f" (was {self.old_path})"
+            line += " (order changed)" if self.old_path == self.path else f" (was {self.old_path})"
         elif self.kind == "changed":
             what = "text" if self.attribute is None else self.attribute
             line += f" {what}: {_shown(self.old)} -> {_shown(self.new)}"
@@ -132,42 +134,89 @@ def changes_between(first: Node, second: Node) -> list[Change]:
         for seen in old.values()
         if seen.identity not in new and (seen.parent is None or seen.parent in new)
     ]
+    reordered = _reordered(old, new)
     for seen in new.values():
         before = old.get(seen.identity)
         if before is None:
             if seen.parent is None or seen.parent in old:
                 found.append(Change(kind="added", path=seen.path))
             continue
-        if before.parent != seen.parent:
+        if before.parent != seen.parent or seen.identity in reordered:
             found.append(Change(kind="moved", path=seen.path, old_path=before.path))
         found.extend(_changed(before.element, seen.element, seen.path))
     return found
 
 
+def _reordered(old: dict[tuple[Any, ...], _Seen], new: dict[tuple[Any, ...], _Seen]) -> set[Any]:
+    """The elements that kept their parent but not their order among its other children.
+
+    Per parent, the children in both models keep the longest run that is in the same
+    order in both; the others are the ones that moved (MuJoCo numbers elements in
+    document order, so order is part of the model).
+    """
+    rank = {identity: index for index, identity in enumerate(old)}
+    siblings: dict[Any, list[tuple[Any, ...]]] = {}
+    for identity, seen in new.items():
+        before = old.get(identity)
+        if before is not None and before.parent == seen.parent:
+            siblings.setdefault(seen.parent, []).append(identity)
+    moved: set[Any] = set()
+    for children in siblings.values():
+        kept = _longest_increasing([rank[identity] for identity in children])
+        moved.update(identity for index, identity in enumerate(children) if index not in kept)
+    return moved
+
+
+def _longest_increasing(values: list[int]) -> set[int]:
+    """The positions of a longest strictly increasing subsequence of ``values``."""
+    tails: list[int] = []  # tails[k]: position ending the best run of length k + 1
+    ends: list[int] = []  # the values at those positions
+    before: list[int] = [-1] * len(values)
+    for position, value in enumerate(values):
+        low = bisect.bisect_left(ends, value)
+        if low:
+            before[position] = tails[low - 1]
+        if low == len(tails):
+            tails.append(position)
+            ends.append(value)
+        else:
+            tails[low] = position
+            ends[low] = value
+    kept: set[int] = set()
+    position = tails[-1] if tails else -1
+    while position >= 0:
+        kept.add(position)
+        position = before[position]
+    return kept
+
+
 def _changed(old: AnyElement, new: AnyElement, path: str) -> Iterator[Change]:
     """The attributes (and text) that differ between two matched elements."""
-    before, after = _texts(old), _texts(new)
+    before, after = dict(attribute_items(old)), dict(attribute_items(new))
     for name in [*before, *(name for name in after if name not in before)]:
         was, now = before.get(name), after.get(name)
-        if _comparable(was) != _comparable(now):
-            yield Change(kind="changed", path=path, attribute=name, old=was, new=now)
+        if _comparable(was, old) != _comparable(now, new):
+            yield Change(kind="changed", path=path, attribute=name, old=_text(was), new=_text(now))
     if (old.text or "").strip() != (new.text or "").strip():
         yield Change(kind="changed", path=path, old=old.text, new=new.text)
 
 
-def _texts(element: AnyElement) -> dict[str, str]:
-    return {name: format_value(value) for name, value in attribute_items(element)}
+def _text(value: Value | None) -> str | None:
+    return None if value is None else format_value(value)
 
 
-def _comparable(text: str | None) -> object:
-    """Text as compared: numbers as floats (``0.10`` is ``.1``), anything else as written."""
-    if text is None:
-        return None
-    words = text.split()
+def _comparable(value: Value | None, element: AnyElement) -> object:
+    """A value as compared: a typed element's as read, a generic one's numbers as floats.
+
+    ``0.10`` and ``0.1`` read to the same float; names stay text (``"1"`` is not ``"1.0"``).
+    """
+    if not isinstance(value, str) or isinstance(element, TypedElement):
+        return value
+    words = value.split()
     try:
         return tuple(float(word) for word in words)
     except ValueError:
-        return text
+        return value
 
 
 def _elements(root: Node) -> Iterator[_Seen]:

@@ -97,7 +97,7 @@ def format_file(path: str | os.PathLike[str]) -> Formatted:
     return _formatted(data, str(source), lambda: mujoco.MjModel.from_xml_path(str(source)))
 
 
-def format_text(text: str, *, filename: str = "<string>") -> Formatted:
+def format_text(text: str | bytes, *, filename: str = "<string>") -> Formatted:
     r"""The canonical form of MJCF ``text``, read as if it were the file ``filename``.
 
     Relative files resolve from the folder of ``filename`` (the working folder for
@@ -112,7 +112,8 @@ def format_text(text: str, *, filename: str = "<string>") -> Formatted:
         (False, 'unchanged')
 
     """
-    return _formatted(text, filename, lambda: _compiled_text(text, _beside(filename)))
+    decoded = text if isinstance(text, str) else text.decode("utf-8", errors="replace")
+    return _formatted(text, filename, lambda: _compiled_text(decoded, _beside(filename)))
 
 
 def _folder(filename: str) -> Path:

@@ -59,7 +59,10 @@ def render(
         MjcfRenderError: No OpenGL backend works (the message says what to install).
 
     """
-    import mujoco
+    try:
+        import mujoco  # a MUJOCO_GL that cannot work fails here
+    except Exception as error:  # RuntimeError, ImportError, AttributeError from PyOpenGL...
+        raise MjcfRenderError(f"{_INSTALL} ({type(error).__name__}: {error})") from None
 
     from mjcf_model.files.compiling import compiled
 

@@ -237,10 +237,11 @@ class DefaultClasses:
     ) -> Mapping[str, tuple[Value, str]]:
         """What ``element``'s classes give it, read where MuJoCo reads it, with the giving class.
 
-        A tendon reads its class's ``<tendon>``; an actuator reads every actuator
-        element of its class (``<general>``, ``<motor>``, ``<position>``... set one
-        shared actuator default, the last written winning); other elements read
-        the element of their own tag (see :meth:`inherited`).
+        A tendon reads its class's ``<tendon>``, an equality its ``<equality>``; an
+        actuator reads every actuator element of its class (``<general>``,
+        ``<motor>``, ``<position>``... set one shared actuator default, the last
+        written winning); other elements read the element of their own tag (see
+        :meth:`inherited`).
 
         Example:
             >>> from serializers import loads
@@ -254,8 +255,8 @@ class DefaultClasses:
 
         """
         section = ancestors[-1].tag if ancestors else ""
-        if section == "tendon":
-            return self.inherited(element, ancestors, "tendon")
+        if section in ("tendon", "equality"):  # one default for every kind in the section
+            return self.inherited(element, ancestors, section)
         if section != "actuator":
             return self.inherited(element, ancestors)
         name = self._giver(element, ancestors)

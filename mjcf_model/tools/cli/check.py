@@ -21,10 +21,19 @@ from collections.abc import Iterable
 from typing import Any, TextIO
 
 from mjcf_model.tools.check import CheckResult, check_file, check_text
-from mjcf_model.tools.cli.common import STDIO, progress, show_progress
+from mjcf_model.tools.cli.common import STDIO, progress, read_stdin, show_progress
 from mjcf_model.tools.cli.examples import example_path
 
 __all__ = ["add_parsers"]
+
+
+def _check_stdin() -> CheckResult:
+    data = read_stdin()
+    try:
+        return check_text(data.decode("utf-8"))
+    except UnicodeDecodeError as error:
+        message = f"not UTF-8 (byte {error.start}); MuJoCo reads every file as UTF-8"
+        return CheckResult(path="<stdin>", status="error", message=message)
 
 
 def _report(result: CheckResult, out: TextIO, verbose: bool) -> None:
@@ -58,7 +67,7 @@ def _check(arguments: argparse.Namespace) -> int:
     results = []
     for path in progress(files, sys.stderr, show_bar):
         if path == STDIO:
-            result = check_text(sys.stdin.read())
+            result = _check_stdin()
         else:
             result = check_file(path, inline_includes=arguments.inline_includes)
         results.append(result)

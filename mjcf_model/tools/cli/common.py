@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Callable, Iterator, Sequence
+from pathlib import Path
 from typing import TextIO, TypeVar
 
 from mjcf_model.errors import MjcfError
@@ -27,6 +28,7 @@ __all__ = [
     "guarded",
     "progress",
     "read_model",
+    "read_stdin",
     "show_progress",
     "write_model",
     "write_text",
@@ -74,8 +76,11 @@ def progress(items: Sequence[_T], stream: TextIO, enabled: bool) -> Iterator[_T]
         stream.write("\n")
 
 
-def read_model(source: str) -> Mujoco:
+def read_model(source: str, *, inline_includes: bool = True) -> Mujoco:
     """The model in the file ``source`` (``-``: standard input, paths read from here).
+
+    Included files are read in by default: the verbs that inspect or transform a
+    model work on what MuJoCo reads.
 
     Raises:
         MjcfError: The file cannot be read or is not MJCF (the message names file and line).
@@ -84,16 +89,27 @@ def read_model(source: str) -> Mujoco:
     import serializers
 
     if source == STDIO:
-        return serializers.loads(sys.stdin.read())
-    return serializers.load(source)
+        return serializers.loads(read_stdin(), inline_includes=inline_includes, filename="<stdin>")
+    return serializers.load(source, inline_includes=inline_includes)
+
+
+def read_stdin() -> bytes:
+    """Standard input as bytes: the reader decodes it as MuJoCo does (UTF-8)."""
+    return sys.stdin.buffer.read()
 
 
 def write_model(model: Mujoco, target: str, *, canonical: bool = False) -> None:
-    """Write ``model`` to the file ``target`` atomically (``-``: standard output)."""
+    """Write ``model`` to the file ``target`` atomically (``-``: standard output).
+
+    Relative file paths are written to resolve from ``target``'s folder (from the
+    working folder for standard output).
+    """
     import serializers
+    from serializers.writer import relocated_for
 
     if target == STDIO:
-        sys.stdout.write(serializers.dumps(model, canonical=canonical))
+        text = serializers.dumps(relocated_for(model, Path.cwd()), canonical=canonical)
+        sys.stdout.write(text)
     else:
         serializers.dump(model, target, canonical=canonical)
 

@@ -47,7 +47,7 @@ def example_path() -> str:
 
 
 def _examples(arguments: argparse.Namespace) -> int:
-    target = Path(arguments.directory)
+    target = Path(arguments.directory).resolve()
     if target.exists() and any(target.iterdir()):
         raise Failed(f"{target} exists and is not empty; name a new folder")
     staging = target.with_name(f".{target.name}.tmp")

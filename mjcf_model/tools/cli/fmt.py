@@ -27,7 +27,7 @@ import sys
 from typing import Any
 
 from mjcf_model.errors import MjcfError
-from mjcf_model.tools.cli.common import STDIO, progress, show_progress, write_text
+from mjcf_model.tools.cli.common import STDIO, progress, read_stdin, show_progress, write_text
 from mjcf_model.tools.formatting import Formatted, format_file, format_text
 
 __all__ = ["add_parsers"]
@@ -35,7 +35,7 @@ __all__ = ["add_parsers"]
 
 def _formatted(path: str) -> Formatted:
     if path == STDIO:
-        return format_text(sys.stdin.read(), filename="<stdin>")
+        return format_text(read_stdin(), filename="<stdin>")
     return format_file(path)
 
 
@@ -78,7 +78,12 @@ def _fmt(arguments: argparse.Namespace) -> int:
         elif arguments.check:
             _say(arguments, f"would reformat {path}", shown)
         elif path != STDIO:
-            write_text(result.text, path)
+            try:
+                write_text(result.text, path)
+            except OSError as error:
+                _say(arguments, f"error: {path}: cannot write: {error.strerror or error}", shown)
+                counts["reformatted"] -= 1
+                counts["failed"] += 1
     if not arguments.quiet:
         done = "would be reformatted" if not writing else "reformatted"
         summary = f"{_files(counts['reformatted'])} {done}, {_files(counts['unchanged'])} unchanged"

@@ -23,6 +23,7 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+from pathlib import Path
 from typing import Any
 
 from mjcf_model.nodes.base import AnyElement
@@ -40,21 +41,29 @@ __all__ = ["add_parsers", "split_part"]
 
 
 def split_part(argument: str) -> tuple[str, str, str | None]:
-    """``FILE[:PREFIX][@NAME]`` as ``(file, prefix, name)``: a file of the whole name wins.
+    """``FILE[:PREFIX][@NAME]`` as ``(file, prefix, name)``.
+
+    The file is the longest start of ``argument`` that names an existing file (so
+    prefixes and names may hold ``/`` and file names ``:`` or ``@``); when none
+    does, the first mark after the file name's ``.xml`` ends it.
 
     Example:
-        >>> split_part("robots/arm.xml:left_@left_mount"), split_part("arm.xml")
-        (('robots/arm.xml', 'left_', 'left_mount'), ('arm.xml', '', None))
+        >>> split_part("robots/arm.xml:left/@left_mount"), split_part("arm.xml")
+        (('robots/arm.xml', 'left/', 'left_mount'), ('arm.xml', '', None))
 
     """
     if argument == STDIO or os.path.exists(argument):
         return argument, "", None
-    rest, at, name = argument.rpartition("@")
-    if not at or "/" in name or not rest:
-        rest, name = argument, ""
-    path, colon, prefix = rest.rpartition(":")
-    if not colon or "/" in prefix:
-        path, prefix = rest, ""
+    cuts = [i for i, char in enumerate(argument) if char in ":@"]
+    found = [i for i in cuts if os.path.isfile(argument[:i])]
+    if not found:  # no such file: cut after the file name's ".xml", else at the first mark
+        after = argument.rfind(".xml") + 4 if ".xml" in argument else 0
+        found = [min((i for i in cuts if i >= after), default=len(argument))]
+    path, rest = argument[: found[-1]], argument[found[-1] :]
+    if rest.startswith(":"):
+        prefix, _, name = rest[1:].partition("@")
+    else:
+        prefix, name = "", rest[1:]
     return path, prefix, name or None
 
 
@@ -80,6 +89,12 @@ def _compose(arguments: argparse.Namespace) -> int:
     from mjcf_model.transforms.composition.attach import attach_all
     from mjcf_model.transforms.naming.renaming import prefixed
 
+    if (
+        arguments.export
+        and Path(arguments.export).exists()
+        and any(Path(arguments.export).iterdir())
+    ):
+        raise Failed(f"{arguments.export} exists and is not empty; nothing was written")
     path, prefix, _ = split_part(arguments.base)
     scene = read_model(path)
     if prefix:
