@@ -24,7 +24,14 @@ from mjcf_model.tools.compare import model_differences, path_fields
 if TYPE_CHECKING:
     from mjcf_model.nodes.root import Mujoco
 
-__all__ = ["CheckResult", "check_file", "check_text", "written_differences"]
+__all__ = [
+    "CheckResult",
+    "check_file",
+    "check_text",
+    "standing_path",
+    "text_folder",
+    "written_differences",
+]
 
 #: ``identical``: both compile to the same model; ``different``: they compile to
 #: different models; ``not-compiled``: MuJoCo rejects the original itself;
@@ -79,7 +86,7 @@ def check_file(path: str | os.PathLike[str], *, inline_includes: bool = False) -
 
 
 def check_text(text: str, *, filename: str = "<stdin>") -> CheckResult:
-    """:func:`check_file` for MJCF text; relative files resolve from the working folder.
+    """:func:`check_file` for MJCF text read as the file ``filename`` (see :func:`text_folder`).
 
     Example:
         >>> check_text("<mujoco><worldbody><geom size='1'/></worldbody></mujoco>").status
@@ -93,9 +100,28 @@ def check_text(text: str, *, filename: str = "<stdin>") -> CheckResult:
     return _checked(
         filename,
         lambda: mujoco.MjModel.from_xml_string(text),
-        lambda: loads(text, base_dir=Path.cwd(), filename=filename),
-        beside=str(Path.cwd() / "stdin.xml"),
+        lambda: loads(text, base_dir=text_folder(filename), filename=filename),
+        beside=standing_path(filename),
     )
+
+
+def text_folder(filename: str) -> Path:
+    """Where relative files resolve from for text read as ``filename``.
+
+    The file's folder; the working folder for ``"<stdin>"`` and other names in ``<>``.
+
+    Example:
+        >>> text_folder("robots/arm.xml"), text_folder("<stdin>") == Path.cwd()
+        (PosixPath('robots'), True)
+
+    """
+    return Path(filename).parent if not filename.startswith("<") else Path.cwd()
+
+
+def standing_path(filename: str) -> str:
+    """A file in :func:`text_folder` that stands for ``filename`` (``stdin.xml`` for text)."""
+    name = Path(filename).name if not filename.startswith("<") else "stdin.xml"
+    return str(text_folder(filename) / name)
 
 
 def _checked(

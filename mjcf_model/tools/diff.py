@@ -27,14 +27,24 @@ is the second unnamed ``geom`` of the body ``arm``.
 from __future__ import annotations
 
 import bisect
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
+from pathlib import Path
 from typing import Any, Literal
 
 import attrs
 
-from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, attribute_items
-from mjcf_model.schema.namespaces import SCHEMA, guess_context
-from mjcf_model.tree.traversal import schema_key
+from mjcf_model.nodes.base import (
+    AnyElement,
+    GenericElement,
+    Node,
+    TypedElement,
+    attribute_items,
+    get_attribute,
+)
+from mjcf_model.nodes.root import Mujoco
+from mjcf_model.schema.namespaces import SCHEMA
+from mjcf_model.transforms.naming.generated import declarations
+from mjcf_model.tree.traversal import keyed_walk
 from mjcf_model.values import Value, format_value
 
 __all__ = ["Change", "ChangeKind", "changes_between"]
@@ -220,45 +230,37 @@ def _comparable(value: Value | None, element: AnyElement) -> object:
 
 
 def _elements(root: Node) -> Iterator[_Seen]:
-    """Every element of ``root`` with its identity, in document order (a stack: any depth)."""
+    """Every element of ``root`` with its identity, in document order."""
     if not isinstance(root, (TypedElement, GenericElement)):
         return
-    top = _Seen(("root", root.tag), None, f"/{root.tag}", root)
-    yield top
-    context = guess_context(root.tag)
-    stack = [_Level(top, _inner(context, schema_key(root, context)))]
-    while stack:
-        level = stack[-1]
-        for child in level.pending:
-            if not isinstance(child, (TypedElement, GenericElement)):
-                continue
-            key = schema_key(child, level.context)
-            seen = level.seen_child(child, key)
-            yield seen
-            if child.children:
-                stack.append(_Level(seen, _inner(level.context, key)))
-                break
-        else:
-            stack.pop()
-
-
-def _inner(context: str | None, key: str | None) -> str | None:
-    """The schema context of the children of an element with ``key`` read in ``context``."""
-    return context if key is None or key == "include" else key
+    base_dir = root.base_dir if isinstance(root, Mujoco) else None
+    # One level per parent: keyed by its ``Ancestors`` object (one per parent it walks into,
+    # kept alive here), entered right after the parent itself is seen.
+    levels: dict[int, tuple[_Level, Sequence[AnyElement]]] = {}
+    previous: _Seen | None = None
+    for element, key, ancestors in keyed_walk(root):
+        if previous is None:
+            previous = _Seen(("root", element.tag), None, f"/{element.tag}", element)
+            yield previous
+            continue
+        level = levels.get(id(ancestors))
+        if level is None:
+            level = levels[id(ancestors)] = (_Level(previous, base_dir), ancestors)
+        previous = level[0].seen_child(element, key)
+        yield previous
 
 
 class _Level:
-    """One parent in :func:`_elements`' stack: its children still to see and their counts."""
+    """One parent in :func:`_elements`: its identity and path, and its children's counts."""
 
-    def __init__(self, parent: _Seen, context: str | None) -> None:
+    def __init__(self, parent: _Seen, base_dir: Path | None) -> None:
         self.parent = parent
-        self.context = context
-        self.pending = iter(parent.element.children)
+        self.base_dir = base_dir
         self._unnamed: dict[str, int] = {}
         self._named: dict[tuple[str, str], int] = {}
 
     def seen_child(self, child: AnyElement, key: str | None) -> _Seen:
-        declared = _declared(child, key)
+        declared = self._declared(child, key)
         if declared is None:
             index = self._unnamed[child.tag] = self._unnamed.get(child.tag, 0) + 1
             identity: tuple[Any, ...] = (self.parent.identity, child.tag, index)
@@ -270,13 +272,13 @@ class _Level:
             step = f"{child.tag}[@{attribute}={name!r}]" + (f"[{again}]" if again > 1 else "")
         return _Seen(identity, self.parent.identity, f"{self.parent.path}/{step}", child)
 
+    def _declared(self, element: AnyElement, key: str | None) -> tuple[str, str, str] | None:
+        """The attribute, namespace and name ``element`` declares (``None``: none).
 
-def _declared(element: AnyElement, key: str | None) -> tuple[str, str, str] | None:
-    """The attribute, namespace and name ``element`` declares (``None``: it declares none)."""
-    spec = SCHEMA.get(key) if key is not None else None
-    declares = spec.declares if spec is not None else {"name": element.tag}
-    for attribute, namespace in declares.items():
-        for name, value in attribute_items(element):
-            if name == attribute and isinstance(value, str) and value:
-                return attribute, namespace, value
-    return None
+        The names MuJoCo gives (a mesh's file stem too); an element the schema does
+        not know is named by its ``name`` in a namespace of its tag.
+        """
+        if key in SCHEMA:
+            return next(declarations(element, key, base_dir=self.base_dir), None)
+        name = get_attribute(element, "name")
+        return ("name", element.tag, name) if isinstance(name, str) and name else None

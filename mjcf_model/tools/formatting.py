@@ -35,7 +35,7 @@ from typing import Any, Literal
 import attrs
 
 from mjcf_model.errors import MjcfCompileError, MjcfIncludeError
-from mjcf_model.tools.check import written_differences
+from mjcf_model.tools.check import standing_path, text_folder, written_differences
 from mjcf_model.tools.diff import changes_between
 
 __all__ = ["Formatted", "Proof", "format_file", "format_text"]
@@ -113,18 +113,7 @@ def format_text(text: str | bytes, *, filename: str = "<string>") -> Formatted:
 
     """
     decoded = text if isinstance(text, str) else text.decode("utf-8", errors="replace")
-    return _formatted(text, filename, lambda: _compiled_text(decoded, _beside(filename)))
-
-
-def _folder(filename: str) -> Path:
-    """Where relative files resolve from for ``filename`` (the working folder for text)."""
-    return Path(filename).parent if not filename.startswith("<") else Path.cwd()
-
-
-def _beside(filename: str) -> str:
-    """A file name in :func:`_folder` that stands for ``filename``."""
-    name = Path(filename).name if not filename.startswith("<") else "stdin.xml"
-    return str(_folder(filename) / name)
+    return _formatted(text, filename, lambda: _compiled_text(decoded, standing_path(filename)))
 
 
 def _formatted(data: str | bytes, filename: str, compile_original: Callable[[], Any]) -> Formatted:
@@ -132,7 +121,7 @@ def _formatted(data: str | bytes, filename: str, compile_original: Callable[[], 
     from serializers import dumps, loads
 
     text = data if isinstance(data, str) else data.decode("utf-8", errors="replace")
-    folder = _folder(filename)
+    folder = text_folder(filename)
     model = loads(data, base_dir=folder, filename=filename)
     canonical = dumps(model, canonical=True)
     unchanged = Formatted(path=filename, original=text, text=canonical, proof="unchanged")
@@ -144,7 +133,7 @@ def _formatted(data: str | bytes, filename: str, compile_original: Callable[[], 
         changes = changes_between(model, loads(canonical, base_dir=folder, filename=filename))
         return attrs.evolve(unchanged, proof="elements", differences=tuple(map(str, changes)))
     try:
-        fields = written_differences(original, canonical, _beside(filename))
+        fields = written_differences(original, canonical, standing_path(filename))
     except MjcfCompileError as error:
         fields = (str(error),)
     return attrs.evolve(unchanged, proof="compiled", differences=fields)

@@ -28,10 +28,11 @@ from collections.abc import Mapping
 import attrs
 
 from mjcf_model.errors import MjcfLookupError
-from mjcf_model.nodes.base import AnyElement, attribute_items, get_attribute
+from mjcf_model.nodes.base import AnyElement, attribute_items
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.transforms.composition.compiler_settings import compiler_settings
+from mjcf_model.transforms.naming.generated import declarations
 from mjcf_model.tree.defaults import DefaultClasses
 from mjcf_model.tree.traversal import keyed_walk
 from mjcf_model.values import Value, format_value
@@ -78,7 +79,7 @@ def effective_attributes(model: Mujoco, kind: str, name: str) -> list[EffectiveA
     """
     classes = DefaultClasses.of(model)
     for element, key, ancestors in keyed_walk(model):
-        if _is(element, key, kind, name):
+        if _is(element, key, kind, name, model):
             written = attribute_items(element)
             own = {attribute for attribute, _ in written}
             found = [EffectiveAttribute(name=a, value=v, source=None) for a, v in written]
@@ -102,17 +103,12 @@ def effective_attributes(model: Mujoco, kind: str, name: str) -> list[EffectiveA
     raise MjcfLookupError(f"no {kind} named {name!r} in the model")
 
 
-def _is(element: AnyElement, key: str | None, kind: str, name: str) -> bool:
+def _is(element: AnyElement, key: str | None, kind: str, name: str, model: Mujoco) -> bool:
     """Whether ``element`` (of schema ``key``) is the ``kind`` element named ``name``."""
-    spec = SCHEMA.get(key) if key is not None else None
-    if spec is None or key is None or key.startswith("default/"):
-        return False
-    for attribute, namespace in spec.declares.items():
-        if kind in (element.tag, namespace):
-            value = dict(attribute_items(element)).get(attribute)
-            if value == name:
-                return True
-    return False
+    return any(
+        declared == name and kind in (element.tag, namespace)
+        for _, namespace, declared in declarations(element, key, base_dir=model.base_dir)
+    )
 
 
 #: The tags that name elements of more than one schema key (``joint`` in a body, a
@@ -170,11 +166,8 @@ def model_summary(model: Mujoco) -> ModelSummary:
         if key is not None and key.startswith("default"):
             continue
         counts[_kind(key, element.tag)] += 1
-        spec = SCHEMA.get(key) if key is not None else None
-        for attribute, namespace in spec.declares.items() if spec is not None else ():
-            value = get_attribute(element, attribute)
-            if isinstance(value, str) and value:
-                names.setdefault(namespace, []).append(value)
+        for _, namespace, name in declarations(element, key, base_dir=model.base_dir):
+            names.setdefault(namespace, []).append(name)
     classes = DefaultClasses.of(model)
     settings: dict[str, list[str]] = {name: [] for name in classes.parents}
     for owner, tag in classes.settings:

@@ -21,7 +21,7 @@ from collections.abc import Iterable
 from typing import Any, TextIO
 
 from mjcf_model.tools.check import CheckResult, check_file, check_text
-from mjcf_model.tools.cli.common import STDIO, progress, read_stdin, show_progress
+from mjcf_model.tools.cli.common import STDIO, progress, read_stdin
 from mjcf_model.tools.cli.examples import example_path
 
 __all__ = ["add_parsers"]
@@ -63,17 +63,14 @@ def _check(arguments: argparse.Namespace) -> int:
     if not files:
         sys.stderr.write("mjcf-model check: no files given (try --example)\n")
         return 2
-    show_bar = show_progress(len(files), arguments.quiet)
     results = []
-    for path in progress(files, sys.stderr, show_bar):
+    for path in progress(files, arguments.quiet):
         if path == STDIO:
             result = _check_stdin()
         else:
             result = check_file(path, inline_includes=arguments.inline_includes)
         results.append(result)
         if not arguments.quiet:
-            if show_bar:
-                sys.stderr.write("\r\033[K")
             _report(result, sys.stdout, verbose=True)
     counts = _summary(results)
     if not arguments.quiet:

@@ -4,10 +4,8 @@ A file argument may be ``-``: the model is read from standard input, or written 
 standard output. Files are written atomically (:func:`serializers.dump`): a
 failed command leaves them as they were.
 
->>> import io
->>> stream = io.StringIO()
->>> list(progress([1, 2], stream, enabled=True)), stream.getvalue().strip()[-5:]
-([1, 2], '] 2/2')
+>>> list(progress([1, 2], quiet=False))  # two files: no bar
+[1, 2]
 """
 
 from __future__ import annotations
@@ -29,7 +27,6 @@ __all__ = [
     "progress",
     "read_model",
     "read_stdin",
-    "show_progress",
     "write_model",
     "write_text",
 ]
@@ -56,24 +53,39 @@ def add_model_argument(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", metavar="FILE", help="the model (- for stdin)")
 
 
-def show_progress(count: int, quiet: bool = False) -> bool:
-    """Whether to draw a progress bar: many files, not quiet, and a terminal to draw on."""
-    return count >= _PROGRESS_FROM and not quiet and sys.stderr.isatty()
+def progress(items: Sequence[_T], quiet: bool, stream: TextIO | None = None) -> Iterator[_T]:
+    r"""Yield ``items``, with a one-line progress bar on ``stream`` (standard error).
 
+    The bar is drawn for many items, unless ``quiet`` or ``stream`` is no terminal;
+    it is cleared before each item, so what a verb prints for the item stands on a
+    line of its own.
 
-def progress(items: Sequence[_T], stream: TextIO, enabled: bool) -> Iterator[_T]:
-    """Yield ``items``, drawing a one-line progress bar on ``stream`` as it goes."""
+    Example:
+        >>> import io
+        >>> class Terminal(io.StringIO):
+        ...     def isatty(self): return True
+        >>> terminal = Terminal()
+        >>> list(progress(range(5), quiet=False, stream=terminal))
+        [0, 1, 2, 3, 4]
+        >>> terminal.getvalue().rsplit("\r", 1)[-1]
+        '[##############################] 5/5\n'
+
+    """
+    out = sys.stderr if stream is None else stream
     total = len(items)
+    drawn = total >= _PROGRESS_FROM and not quiet and out.isatty()
     for done, item in enumerate(items, start=1):
+        if drawn and done > 1:
+            out.write("\r\033[K")
         yield item
-        if enabled:
+        if drawn:
             width = 30
             filled = width * done // total
             bar = "#" * filled + "-" * (width - filled)
-            stream.write(f"\r[{bar}] {done}/{total}")
-            stream.flush()
-    if enabled:
-        stream.write("\n")
+            out.write(f"\r[{bar}] {done}/{total}")
+            out.flush()
+    if drawn:
+        out.write("\n")
 
 
 def read_model(source: str, *, inline_includes: bool = True) -> Mujoco:

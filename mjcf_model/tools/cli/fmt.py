@@ -27,7 +27,7 @@ import sys
 from typing import Any
 
 from mjcf_model.errors import MjcfError
-from mjcf_model.tools.cli.common import STDIO, progress, read_stdin, show_progress, write_text
+from mjcf_model.tools.cli.common import STDIO, progress, read_stdin, write_text
 from mjcf_model.tools.formatting import Formatted, format_file, format_text
 
 __all__ = ["add_parsers"]
@@ -53,18 +53,17 @@ def _unified(result: Formatted) -> str:
 def _fmt(arguments: argparse.Namespace) -> int:
     files: list[str] = arguments.files
     writing = not (arguments.check or arguments.diff)
-    shown = show_progress(len(files), arguments.quiet)
     counts = {"reformatted": 0, "unchanged": 0, "failed": 0}
-    for path in progress(files, sys.stderr, shown):
+    for path in progress(files, arguments.quiet):
         try:
             result = _formatted(path)
         except MjcfError as error:
-            _say(arguments, f"error: {error}", shown)
+            _say(arguments, f"error: {error}")
             counts["failed"] += 1
             continue
         if not result.safe:
             why = "; ".join(result.differences[:5])
-            _say(arguments, f"error: {path}: not rewritten, it changes the model: {why}", shown)
+            _say(arguments, f"error: {path}: not rewritten, it changes the model: {why}")
             counts["failed"] += 1
             continue
         if path == STDIO and writing:
@@ -72,18 +71,18 @@ def _fmt(arguments: argparse.Namespace) -> int:
         if not result.changed:
             counts["unchanged"] += 1
             continue
-        counts["reformatted"] += 1
         if arguments.diff:
             sys.stdout.write(_unified(result))
         elif arguments.check:
-            _say(arguments, f"would reformat {path}", shown)
+            _say(arguments, f"would reformat {path}")
         elif path != STDIO:
             try:
                 write_text(result.text, path)
             except OSError as error:
-                _say(arguments, f"error: {path}: cannot write: {error.strerror or error}", shown)
-                counts["reformatted"] -= 1
+                _say(arguments, f"error: {path}: cannot write: {error.strerror or error}")
                 counts["failed"] += 1
+                continue
+        counts["reformatted"] += 1
     if not arguments.quiet:
         done = "would be reformatted" if not writing else "reformatted"
         summary = f"{_files(counts['reformatted'])} {done}, {_files(counts['unchanged'])} unchanged"
@@ -98,12 +97,9 @@ def _files(count: int) -> str:
     return f"{count} file" + ("" if count == 1 else "s")
 
 
-def _say(arguments: argparse.Namespace, line: str, shown: bool) -> None:
-    if arguments.quiet and not line.startswith("error"):
-        return
-    if shown:
-        sys.stderr.write("\r\033[K")
-    sys.stderr.write(line + "\n")
+def _say(arguments: argparse.Namespace, line: str) -> None:
+    if not arguments.quiet or line.startswith("error"):
+        sys.stderr.write(line + "\n")
 
 
 def add_parsers(commands: Any) -> None:
