@@ -31,6 +31,7 @@ from mjcf_model.nodes.base import (
     GenericElement,
     Node,
     TypedElement,
+    get_attribute,
 )
 from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.keyframe import Keyframe
@@ -38,8 +39,16 @@ from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.transforms.composition.conventions import in_conventions
 from mjcf_model.transforms.composition.defaults import classed, merged_settings, sets_values
-from mjcf_model.transforms.composition.keyframes import keys_of, merged_keyframes
+from mjcf_model.transforms.composition.keyframes import (
+    KeyframePolicy,
+    PartStates,
+    SceneKeys,
+    adds_state,
+    check_policy,
+    keys_of,
+)
 from mjcf_model.transforms.composition.main_defaults import CLASSED_SECTIONS, with_main_as_class
+from mjcf_model.transforms.composition.part_states import IDENTITY, Pose, pose_of_frames
 from mjcf_model.transforms.composition.places import (
     AttachKind,
     Where,
@@ -110,6 +119,7 @@ def attach(
     pos: Iterable[float] | None = None,
     quat: Iterable[float] | None = None,
     euler: Iterable[float] | None = None,
+    keyframes: KeyframePolicy = "separate",
 ) -> Mujoco:
     """The parent model with the child model merged into it.
 
@@ -129,6 +139,10 @@ def attach(
             as a quaternion (w, x, y, z).
         euler: The same as Euler angles instead of ``quat``, read with the
             parent's ``<compiler>`` ``angle`` units and ``eulerseq``.
+        keyframes: ``"separate"`` keeps the child's keys as keys of their own
+            (under their prefixed names); ``"merged"`` makes a child key whose name
+            (before prefixing) a parent key has part of that key, so one ``home``
+            sets every part.
 
     At a frame or a site the child's world is appended to the body holding it
     (or the world), inside unnamed ``<frame>`` elements that copy the pose of
@@ -148,9 +162,16 @@ def attach(
     settings stay with their model: the child's become a class ``<prefix>main``
     (``child_main`` without prefix), the parent's a class ``parent_main``
     (:mod:`mjcf_model.transforms.composition.main_defaults`), named by the elements they reach.
-    Keyframes are merged by position: a child key is completed with the parent's initial ``qpos``
-    (reference positions; a free body's own position), a parent key is
-    completed by MuJoCo with the child's.
+    Keyframes follow the placement. Every key of the result is written whole
+    (:mod:`mjcf_model.transforms.composition.keyframes`): a part's own key holds
+    the part's state as the part alone defines it (MuJoCo completing a short
+    key), moved by the pose the part is attached at, so a free joint's
+    position and orientation and a mocap body's pose move with the part (a
+    free joint's linear velocity turns with it; hinge, slide and ball values,
+    ``ctrl``, ``act`` and ``time`` are kept); every other part's entries are
+    its initial state as placed (``qpos0``, a free body where it was placed,
+    no velocity, control or activation). Those states are read from each part
+    compiled alone, so with keyframes each part must compile on its own.
 
     Raises:
         MjcfValueError: on a name collision, a child ``<compiler>`` setting whose
@@ -158,7 +179,11 @@ def attach(
             :mod:`mjcf_model.transforms.composition.conventions`), a kept
             ``<include>``, a keyframe that cannot be completed, both ``quat`` and
             ``euler``, a vector of the wrong length, a target inside a
-            ``<replicate>``, or a site placed by ``fromto``.
+            ``<replicate>``, a site placed by ``fromto``, or, with keyframes, a
+            part whose free joints or mocap bodies would not be at the top level
+            (MuJoCo's rule: attach such a part at the world, or at a frame or a
+            site of the world body).
+        MjcfCompileError: With keyframes, a part that does not compile alone.
         MjcfLookupError: when the parent has no body, frame or site named ``at``
             (the message lists those it has), or several kinds by that name and
             no ``at_kind``.
@@ -193,7 +218,14 @@ def attach(
 
     """
     return attach_all(
-        parent, [(child, prefix)], at=at, at_kind=at_kind, pos=pos, quat=quat, euler=euler
+        parent,
+        [(child, prefix)],
+        at=at,
+        at_kind=at_kind,
+        pos=pos,
+        quat=quat,
+        euler=euler,
+        keyframes=keyframes,
     )
 
 
@@ -206,6 +238,7 @@ def attach_all(
     pos: Iterable[float] | None = None,
     quat: Iterable[float] | None = None,
     euler: Iterable[float] | None = None,
+    keyframes: KeyframePolicy = "separate",
 ) -> Mujoco:
     """The parent with each ``(child, prefix)`` attached in turn, in one pass.
 
@@ -221,7 +254,8 @@ def attach_all(
         ['c0_cup', 'c1_cup', 'c2_cup']
 
     """
-    return _composed(parent, children, Where(at, at_kind, placement_frame(pos, quat, euler)))
+    where = Where(at, at_kind, placement_frame(pos, quat, euler))
+    return _composed(parent, children, where, check_policy(keyframes))
 
 
 def attach_in_frame(parent: Mujoco, child: Mujoco, *, frame: str, prefix: str = "") -> Mujoco:
@@ -244,10 +278,15 @@ def attach_in_frame(parent: Mujoco, child: Mujoco, *, frame: str, prefix: str = 
     return _composed(parent, [(child, prefix)], Where(frame, "frame", None, inside=True))
 
 
-def _composed(parent: Mujoco, children: Iterable[tuple[Mujoco, str]], where: Where) -> Mujoco:
+def _composed(
+    parent: Mujoco,
+    children: Iterable[tuple[Mujoco, str]],
+    where: Where,
+    policy: KeyframePolicy = "separate",
+) -> Mujoco:
     for element, key, _ in keyed_walk(parent):
         refuse_opaque(element, key, "attach")
-    composer = _Composer(parent, where)
+    composer = _Composer(parent, where, policy)
     for child, prefix in children:
         composer.add(child, prefix)
     return composer.result()
@@ -256,7 +295,7 @@ def _composed(parent: Mujoco, children: Iterable[tuple[Mujoco, str]], where: Whe
 class _Composer:
     """The parent being composed: its sections, names and what is to be appended."""
 
-    def __init__(self, parent: Mujoco, where: Where) -> None:
+    def __init__(self, parent: Mujoco, where: Where, policy: KeyframePolicy) -> None:
         self.declared: dict[str, set[str]] = {
             namespace: set(names) for namespace, names in declared_names(parent).items()
         }
@@ -274,14 +313,21 @@ class _Composer:
         self.pending: dict[str, list[Node]] = {}
         self.names: dict[int, tuple[Mujoco, RepeatedPrefixing, dict[str, frozenset[str]]]] = {}
         self.world: list[Node] = []
-        self.keys: list[Node] | None = None
+        #: The scene's keys, once a part brings or meets keyframes.
+        self.scene_keys: SceneKeys | None = None
+        #: Where the children are placed in world coordinates, once keys need it.
+        self.pose: Pose | None = None
+        self.policy = policy
         self.where = where
         self.point = attach_point(parent, where)
 
     def add(self, child: Mujoco, prefix: str) -> None:
+        original = child
         copies, names = self._prepared(child)
         child = cast(Mujoco, copies.prefixed(prefix) if prefix else copies.model)
         theirs = {ns: {prefix + n for n in found} for ns, found in names.items()}
+        if self.policy == "merged":  # keys of one name become one key: not a clash
+            theirs.pop("key", None)
         sections = _by_tag(child)
         child_assets = [e for section in sections.get("asset", ()) for e in section.elements]
         self.added += 1
@@ -295,8 +341,8 @@ class _Composer:
         _check_collisions(self.declared, theirs)
         for namespace, found in theirs.items():
             self.declared.setdefault(namespace, set()).update(found)
-        if self.parent_keys or "keyframe" in sections:
-            self._merge_keys(child)
+        if (self.scene_keys or self.parent_keys or "keyframe" in sections) and adds_state(child):
+            self._merge_keys(original, child)
         main = self._add_defaults(sections.get("default", []), prefix)
         for tag in _SETTINGS:
             if tag not in self.parent_tags and not self.pending.get(tag):
@@ -378,14 +424,37 @@ class _Composer:
             name = f"{wanted}_{count}"
         return name
 
-    def _merge_keys(self, child: Mujoco) -> None:
-        """Keyframes need the parent as composed so far: build it, then splice."""
-        so_far = self.result()
-        self.point = attach_point(so_far, self.where)
-        holder = None if self.point is None else self.point.holder
-        self.keys = merged_keyframes(so_far, child, holder)
-        self._set_parent(so_far)
-        self.pending, self.world = {}, []
+    def _merge_keys(self, original: Mujoco, child: Mujoco) -> None:
+        """Add the child's entries and keys to the scene's keys (read once from the parent)."""
+        if self.scene_keys is None:
+            so_far = self.result()
+            self.point = attach_point(so_far, self.where)
+            holder = None if self.point is None else self.point.holder
+            self.scene_keys = SceneKeys.of(so_far, holder)
+            self._set_parent(so_far)
+            self.pending, self.world = {}, []
+        part = PartStates.of(original)
+        if self.pose is None:
+            self.pose = self._placed_pose(part)
+        self.scene_keys.add(part, keys_of(original), keys_of(child), self.pose, self.policy)
+        if self.policy == "merged":
+            self.declared.setdefault("key", set()).update(self.scene_keys.names)
+
+    def _placed_pose(self, part: PartStates) -> Pose:
+        """The world pose the children are attached at, when the part has what it moves."""
+        if not part.moves_with_placement:
+            return IDENTITY
+        if self.point is None:
+            return IDENTITY
+        if self.point.holder is not None:
+            raise MjcfValueError(
+                f"cannot attach a part with free joints or mocap bodies at {self.where.at!r}: "
+                f"it is in the body {self.point.holder.tag} "
+                f"{get_attribute(self.point.holder, 'name')!r}, and MuJoCo allows those only at "
+                "the top level; attach the part at the world, or at a frame or a site of the "
+                "world body"
+            )
+        return pose_of_frames(self.parent, self.point.frames)
 
     def result(self) -> Mujoco:
         sections = list(self.sections)
@@ -395,17 +464,16 @@ class _Composer:
                 sections.extend(nodes)
             elif nodes:
                 _merge_into(sections, tag, nodes)
-        world = wrapped(self.point.frames, self.world) if self.point else self.world
+        world = wrapped(self.point.frames, self.world) if self.point and self.world else []
+        world = world or self.world
         holder = None if self.point is None else self.point.holder
         if holder is None:
             if world:
                 _merge_into(sections, "worldbody", world)
         elif world:
             sections = list(_inserted(with_children(self.parent, sections), holder, world).children)
-        if self.keys is not None:
-            sections = [c for c in sections if getattr(c, "tag", None) != "keyframe"]
-            if self.keys:
-                sections.append(Keyframe(children=self.keys))
+        if self.scene_keys is not None:
+            sections = _with_keys(sections, self.scene_keys.nodes())
         return attrs.evolve(self.parent, children=sections)
 
 
@@ -417,6 +485,18 @@ def _merge_into(sections: list[Node], tag: str, nodes: list[Node]) -> None:
             sections[index] = with_children(section, [*section.children, *nodes])
             return
     sections.append(CLASS_BY_KEY[tag](children=nodes))
+
+
+def _with_keys(sections: list[Node], keys: list[Node]) -> list[Node]:
+    """``sections`` with ``keys`` as its one ``<keyframe>`` (where the first one was)."""
+    found = [i for i, c in enumerate(sections) if getattr(c, "tag", None) == "keyframe"]
+    if not found:
+        return [*sections, Keyframe(children=keys)] if keys else sections
+    first = sections[found[0]]
+    assert isinstance(first, (TypedElement, GenericElement))
+    kept = [c for i, c in enumerate(sections) if i == found[0] or i not in found]
+    kept[found[0]] = with_children(first, keys)
+    return kept
 
 
 def _inserted(model: Mujoco, target: AnyElement, nodes: list[Node]) -> Mujoco:

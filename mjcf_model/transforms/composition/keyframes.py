@@ -1,175 +1,277 @@
-"""Merging the keyframes of two models being composed by :func:`mjcf_model.attach`.
+"""The keyframes of a composed scene: every part's keys follow the part's placement.
 
-A keyframe lists values for every joint (``qpos``, ``qvel``) and actuator
-(``ctrl``) of its model, in model order. After attaching, the child's joints sit
-at the attach point and its actuators after the parent's, so each key is
-spliced: a child key gets the parent's initial values around its own, a parent
-key gets the child's initial values at the attach point when later joints
-follow (MuJoCo itself completes a key that stops early).
+A ``<key>`` lists a value for every joint (``qpos``, ``qvel``), actuator
+(``ctrl``, ``act``) and mocap body (``mpos``, ``mquat``) of its model. When
+:func:`mjcf_model.attach` places a part in a scene, each key of the scene is
+written whole, part by part:
+
+* a part's own key holds the part's state as the part itself defines it (read
+  from the part compiled alone, so MuJoCo's completion of a short key holds),
+  moved by the pose the part is attached at: a free joint's position and
+  orientation and a mocap body's pose are world coordinates and move with the
+  placement (every enclosing frame, the site and ``pos``/``quat``/``euler``), a
+  free joint's linear velocity turns with it; hinge, slide and ball values,
+  angular velocities, ``ctrl``, ``act`` and ``time`` are kept;
+* every other part's entries are that part's initial state as placed: its
+  ``qpos0`` (a free body where it was placed, joints at their reference
+  values), no velocity, no control or activation, mocap bodies where they
+  were placed.
+
+With ``keyframes="separate"`` (the default) each part's keys keep their
+(prefixed) names; with ``keyframes="merged"`` a child's key whose name (before
+prefixing) a key of the parent has becomes part of that key, so one ``home``
+can set a whole fleet; unnamed keys are never merged.
 
 >>> from serializers import loads
->>> parent = loads('<mujoco><worldbody><body><joint type="slide" ref="0.2"/>'
-...                '<geom size="1"/></body></worldbody></mujoco>')
->>> child = loads('<mujoco><worldbody><body><joint type="slide"/><geom size="1"/></body>'
+>>> world = loads('<mujoco><worldbody><body><joint type="slide" ref="0.2"/>'
+...               '<geom size="1"/></body></worldbody></mujoco>')
+>>> robot = loads('<mujoco><worldbody><body><joint type="slide"/><geom size="1"/></body>'
 ...               '</worldbody><keyframe><key name="k" qpos="0.5"/></keyframe></mujoco>')
->>> [key.qpos for key in merged_keyframes(parent, child, None)]
+>>> scene = SceneKeys.of(world, holder=None)
+>>> scene.add(PartStates.of(robot), keys_of(robot), keys_of(robot), IDENTITY, "separate")
+>>> [key.qpos for key in scene.nodes()]
 [(0.2, 0.5)]
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Literal, get_args
 
 import attrs
+import numpy as np
 
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import (
-    AnyElement,
-    GenericElement,
-    Node,
-    TypedElement,
-    get_attribute,
-    with_attributes,
-)
+from mjcf_model.nodes.base import AnyElement, Node, get_attribute, with_attributes
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.transforms.composition.part_states import (
+    IDENTITY,
+    KEY_ATTRIBUTES,
+    PartStates,
+    Pose,
+    State,
+    Vector,
+)
 from mjcf_model.tree.defaults import DefaultClasses
 from mjcf_model.tree.joints import joint_type
 from mjcf_model.tree.traversal import keyed_walk
-from mjcf_model.values import numbers_of
+from mjcf_model.values import Value
 
-__all__ = ["keys_of", "merged_keyframes"]
+__all__ = [
+    "IDENTITY",
+    "KeyframePolicy",
+    "PartStates",
+    "SceneKeys",
+    "adds_state",
+    "check_policy",
+    "keys_of",
+]
 
-_QPOS_SIZE = {"free": 7, "ball": 4, "slide": 1, "hinge": 1}
-_QVEL_SIZE = {"free": 6, "ball": 3, "slide": 1, "hinge": 1}
-_ROTATIONS = ("euler", "axisangle", "xyaxes", "zaxis")
+#: How :func:`mjcf_model.attach` treats keys of the same name in parent and child.
+KeyframePolicy = Literal["separate", "merged"]
 
-
-@attrs.frozen
-class _Joint:
-    type: str
-    #: The initial ``qpos`` values, or why they cannot be known.
-    qpos0: tuple[float, ...] | str
-    #: Whether the joint comes before the attach point in model order.
-    before: bool
-
-
-def _joints(model: Mujoco, target: AnyElement | None) -> list[_Joint]:
-    classes = DefaultClasses.of(model)
-    walked = list(keyed_walk(model))
-    order = {id(element): index for index, (element, _, _) in enumerate(walked)}
-    found: list[_Joint] = []
-    for element, key, ancestors in walked:
-        kind = joint_type(element, key, ancestors, classes)
-        if kind is None:
-            continue
-        before = (
-            target is None
-            or any(a is target for a in ancestors)
-            or order[id(element)] < order[id(target)]
-        )
-        found.append(
-            _Joint(type=kind, qpos0=_qpos0(element, kind, ancestors, classes), before=before)
-        )
-    return found
+#: The ``qpos`` and ``qvel`` sizes of each joint type.
+_SIZES = {"free": (7, 6), "ball": (4, 3), "slide": (1, 1), "hinge": (1, 1)}
+#: Schema keys of joints.
+_JOINTS = frozenset({"body/joint", "body/freejoint"})
+#: Schema keys of elements that make joints or bodies the tree does not show.
+_HIDDEN = frozenset({"body/replicate", "body/flexcomp", "body/attach"})
 
 
-def _qpos0(
-    joint: AnyElement, kind: str, ancestors: Sequence[AnyElement], classes: DefaultClasses
-) -> tuple[float, ...] | str:
-    if kind in ("hinge", "slide"):
-        return numbers_of(classes.resolve(joint, ancestors, "ref")) or (0.0,)
-    if kind == "ball":
-        return (1.0, 0.0, 0.0, 0.0)
-    body = ancestors[-1]
-    in_world = len(ancestors) >= 2 and ancestors[-2].tag == "worldbody"
-    if not in_world or any(get_attribute(body, r) is not None for r in _ROTATIONS):
-        return (
-            "cannot complete a keyframe: a free joint's initial position is known here only "
-            "for a body directly in the world placed with pos and quat"
-        )
-    pos = numbers_of(get_attribute(body, "pos")) or (0.0, 0.0, 0.0)
-    quat = numbers_of(get_attribute(body, "quat")) or (1.0, 0.0, 0.0, 0.0)
-    return (*pos, *quat)
+def check_policy(policy: str) -> KeyframePolicy:
+    """``policy`` if it is a keyframe policy, else an error listing them."""
+    if policy not in get_args(KeyframePolicy):
+        raise MjcfValueError(f"keyframes must be 'separate' or 'merged', not {policy!r}")
+    return policy  # type: ignore[return-value]
 
 
 def keys_of(model: Mujoco) -> list[AnyElement]:
     """Every ``<key>`` of the model's ``<keyframe>`` sections, in order."""
     return [
-        key
-        for section in model.children
-        if isinstance(section, (TypedElement, GenericElement)) and section.tag == "keyframe"
-        for key in section.elements
+        key for section in model.elements if section.tag == "keyframe" for key in section.elements
     ]
 
 
-def _actuator_count(model: Mujoco) -> int:
-    return sum(
-        len(section.elements)
-        for section in model.children
-        if isinstance(section, (TypedElement, GenericElement)) and section.tag == "actuator"
-    )
+def adds_state(model: Mujoco) -> bool:
+    """Whether ``model`` has anything a key sets: joints, mocap bodies, actuators or keys."""
+    for element, key, _ in keyed_walk(model):
+        if key in _JOINTS or key in _HIDDEN or key == "keyframe/key":
+            return True
+        if key == "body" and get_attribute(element, "mocap") in (True, "true"):
+            return True
+        if key is not None and key.startswith("actuator/"):
+            return True
+    return False
 
 
-def _flat(joints: list[_Joint], sizes: dict[str, int], initial: bool) -> list[float]:
-    values: list[float] = []
-    for joint in joints:
-        if not initial:
-            values.extend((0.0,) * sizes[joint.type])
-        elif isinstance(joint.qpos0, str):
-            raise MjcfValueError(joint.qpos0)
+@attrs.define
+class _Keyed:
+    """A key of the scene: the node it is written to, the name it merges by, its state."""
+
+    #: The ``<key>`` node (its other attributes and its layout are kept).
+    node: AnyElement
+    #: The name it is merged by (a child key's name before prefixing), or ``None``.
+    name: str | None
+    #: The complete state it sets.
+    state: State
+
+
+@attrs.define
+class SceneKeys:
+    """The keys of a scene being composed, complete, and where the next part's entries go."""
+
+    #: The scene's keys, in order.
+    keys: list[_Keyed]
+    #: The scene's initial state (what MuJoCo fills a key's missing values with).
+    initial: State
+    #: Where the next part's ``qpos``, ``qvel`` and mocap entries are inserted.
+    at: tuple[int, int, int]
+
+    @classmethod
+    def of(cls, parent: Mujoco, holder: AnyElement | None) -> SceneKeys:
+        """The keys of ``parent``, ready for parts attached at ``holder`` (``None``: the world)."""
+        states = PartStates.of(parent)
+        nodes = keys_of(parent)
+        keys = [
+            _Keyed(node=node, name=_name(node), state=state)
+            for node, state in zip(nodes, states.keys, strict=True)
+        ]
+        initial = states.initial
+        if holder is None:
+            at = (initial.qpos.size, initial.qvel.size, initial.mpos.size // 3)
         else:
-            values.extend(joint.qpos0)
-    return values
+            at = _entries_before(parent, holder, initial)
+        return cls(keys=keys, initial=initial, at=at)
 
+    def add(
+        self,
+        part: PartStates,
+        names: Sequence[AnyElement],
+        nodes: Sequence[AnyElement],
+        pose: Pose,
+        policy: KeyframePolicy,
+    ) -> None:
+        """Add a part's entries to every key, and the part's own keys.
 
-def _completed(given: tuple[float, ...] | None, full: list[float]) -> list[float]:
-    values = list(given or ())
-    return values + full[len(values) :]
+        Args:
+            part: The part's states, compiled alone.
+            names: The part's ``<key>`` elements as the part names them (merging reads these).
+            nodes: The same keys as they are written into the scene (prefixed).
+            pose: Where the part is attached, in world coordinates.
+            policy: ``"separate"`` or ``"merged"`` (see the module's docstring).
 
-
-def merged_keyframes(parent: Mujoco, child: Mujoco, target: AnyElement | None) -> list[Node] | None:
-    """The keys of the composed model, or ``None`` when the child has none and nothing moves."""
-    parent_keys, child_keys = keys_of(parent), keys_of(child)
-    parent_joints = _joints(parent, target) if parent_keys or child_keys else []
-    before = [j for j in parent_joints if j.before]
-    after = [j for j in parent_joints if not j.before]
-    if not child_keys and not (parent_keys and after):
-        return None
-    child_joints = _joints(child, None)
-    merged: list[Node] = []
-    for key in parent_keys:
-        changes: dict[str, tuple[float, ...]] = {}
-        for attribute, sizes, initial in (("qpos", _QPOS_SIZE, True), ("qvel", _QVEL_SIZE, False)):
-            given = numbers_of(get_attribute(key, attribute))
-            split = sum(sizes[j.type] for j in before)
-            if given is not None and len(given) > split:
-                inserted = _flat(child_joints, sizes, initial)
-                changes[attribute] = (*given[:split], *inserted, *given[split:])
-        merged.append(_evolved(key, changes))
-    for key in child_keys:
-        if get_attribute(key, "act") is not None and _actuator_count(parent):
-            raise MjcfValueError(
-                "cannot merge a child keyframe's 'act' into a parent with actuators"
-            )
-        if get_attribute(key, "mpos") is not None or get_attribute(key, "mquat") is not None:
-            raise MjcfValueError("cannot merge a child keyframe with mocap values yet")
-        changes = {}
-        for attribute, sizes, initial in (("qpos", _QPOS_SIZE, True), ("qvel", _QVEL_SIZE, False)):
-            given = numbers_of(get_attribute(key, attribute))
-            if given is None:
+        """
+        part = part.placed(pose)
+        own = [_name(key) for key in names]
+        taken: set[int] = set()
+        for keyed in self.keys:
+            match = None
+            if policy == "merged" and keyed.name is not None and keyed.name in own:
+                match = next(i for i, n in enumerate(own) if n == keyed.name and i not in taken)
+                taken.add(match)
+            theirs = part.initial if match is None else part.keys[match]
+            keyed.state = self._spliced(keyed.state, theirs)
+        for index, (node, state) in enumerate(zip(nodes, part.keys, strict=True)):
+            if index in taken:
                 continue
-            own = _completed(given, _flat(child_joints, sizes, initial)) if after else list(given)
-            changes[attribute] = (
-                *_flat(before, sizes, initial),
-                *own,
-                *_flat(after, sizes, initial),
+            name = own[index]
+            if policy == "merged":
+                node = with_attributes(node, {"name": name})
+            self.keys.append(_Keyed(node=node, name=name, state=self._spliced(self.initial, state)))
+        self.initial = self._spliced(self.initial, part.initial)
+        q, v, m = self.at
+        self.at = (
+            q + part.initial.qpos.size,
+            v + part.initial.qvel.size,
+            m + part.initial.mpos.size // 3,
+        )
+
+    def _spliced(self, scene: State, part: State) -> State:
+        """``scene``'s state with ``part``'s entries where the part goes."""
+        q, v, m = self.at
+
+        def insert(ours: Vector, theirs: Vector, at: int) -> Vector:
+            return np.concatenate([ours[:at], theirs, ours[at:]])
+
+        return State(
+            qpos=insert(scene.qpos, part.qpos, q),
+            qvel=insert(scene.qvel, part.qvel, v),
+            act=np.concatenate([scene.act, part.act]),
+            ctrl=np.concatenate([scene.ctrl, part.ctrl]),
+            mpos=insert(scene.mpos, part.mpos, 3 * m),
+            mquat=insert(scene.mquat, part.mquat, 4 * m),
+            time=scene.time or part.time,
+        )
+
+    @property
+    def names(self) -> set[str]:
+        """The names of the scene's keys."""
+        return {name for k in self.keys if (name := _name(k.node)) is not None}
+
+    def nodes(self) -> list[Node]:
+        """The scene's ``<key>`` elements, each setting its whole state.
+
+        ``qpos`` is written whole; velocities, activations and controls only
+        where one is not zero, mocap poses only where they differ from the
+        scene's initial ones, ``time`` only when it is not zero: MuJoCo fills
+        what is left out with exactly those values.
+        """
+        written: list[Node] = []
+        for keyed in self.keys:
+            state = keyed.state
+            changes: dict[str, Value | None] = {}
+            for attribute in KEY_ATTRIBUTES:
+                values = state.array(attribute)
+                if attribute == "qpos":
+                    keep = bool(values.size)
+                elif attribute in ("mpos", "mquat"):
+                    keep = not np.array_equal(values, self.initial.array(attribute))
+                else:
+                    keep = bool(np.any(values))
+                changes[attribute] = tuple(float(v) for v in values) if keep else None
+            changes["time"] = state.time or None
+            written.append(with_attributes(keyed.node, changes))
+        return written
+
+
+def _name(key: AnyElement) -> str | None:
+    name = get_attribute(key, "name")
+    return name if isinstance(name, str) and name else None
+
+
+def _entries_before(parent: Mujoco, holder: AnyElement, initial: State) -> tuple[int, int, int]:
+    """How many ``qpos``, ``qvel`` and mocap entries of ``parent`` come before parts at ``holder``.
+
+    A part attached at a body goes after that body's own subtree, so the
+    joints and mocap bodies before it are those above or inside ``holder`` and
+    those earlier in document order, as MuJoCo numbers them.
+    """
+    classes = DefaultClasses.of(parent)
+    walked = list(keyed_walk(parent))
+    order = {id(element): index for index, (element, _, _) in enumerate(walked)}
+    totals, before = [0, 0, 0], [0, 0, 0]
+    for element, key, ancestors in walked:
+        if key in _HIDDEN:
+            raise MjcfValueError(
+                f"cannot place keyframe entries inside a model whose <{element.tag}> makes "
+                "joints or bodies: attach at the world, or inline them first "
+                "(mjcf_model.inlined_attachments)"
             )
-        ctrl = numbers_of(get_attribute(key, "ctrl"))
-        if ctrl is not None:
-            changes["ctrl"] = (*(0.0,) * _actuator_count(parent), *ctrl)
-        merged.append(_evolved(key, changes))
-    return merged
-
-
-def _evolved(key: AnyElement, changes: dict[str, tuple[float, ...]]) -> AnyElement:
-    return with_attributes(key, dict(changes)) if changes else key
+        kind = joint_type(element, key, ancestors, classes)
+        sizes = (0, 0, 0)
+        if kind is not None:
+            sizes = (*_SIZES[kind], 0)
+        elif key == "body" and get_attribute(element, "mocap") in (True, "true"):
+            sizes = (0, 0, 1)
+        is_before = any(a is holder for a in ancestors) or order[id(element)] < order[id(holder)]
+        for index, size in enumerate(sizes):
+            totals[index] += size
+            before[index] += size if is_before else 0
+    compiled = (initial.qpos.size, initial.qvel.size, initial.mpos.size // 3)
+    if tuple(totals) != compiled:
+        raise MjcfValueError(
+            f"cannot place keyframe entries: the tree shows {totals[0]} qpos, {totals[1]} qvel "
+            f"and {totals[2]} mocap entries where MuJoCo compiles {compiled[0]}, {compiled[1]} "
+            f"and {compiled[2]}; attach at the world instead"
+        )
+    return before[0], before[1], before[2]
