@@ -160,6 +160,24 @@ def test_compose_places_fixed_arms(tmp_path: Path) -> None:
     _assert_placed(scene, arm, "top_", (0, 0.1, 0.02), _quat(euler_degrees=(-90, 0, 15)), table)
 
 
+def test_compose_keyframes_separate(tmp_path: Path) -> None:
+    """``--keyframes separate`` keeps each arm's key under its prefixed name, setting that arm."""
+    files = _files(tmp_path)
+    scene_path = tmp_path / "scene.xml"
+    arm = files["arm"]
+    words = [f"{arm}:left_", "pos=-0.5,0,0", f"{arm}:right_", "pos=0.5,0,0"]
+    done = run("compose", str(scene_path), str(files["base"]), *words, "--keyframes", "separate")
+    assert done.returncode == 0, done.stderr
+    scene = mujoco.MjModel.from_xml_path(str(scene_path))
+    alone = mujoco.MjModel.from_xml_path(str(arm))
+    bent = alone.key("bent").qpos
+    for prefix in ("left_", "right_"):
+        key = scene.key(f"{prefix}bent").qpos
+        for joint in ("shoulder", "elbow"):
+            address = scene.joint(prefix + joint).qposadr[0]
+            assert key[address] == bent[alone.joint(joint).qposadr[0]], (prefix, joint)
+
+
 @pytest.mark.parametrize(
     ("placement", "said"),
     [
@@ -196,8 +214,9 @@ def test_compose_placement_before_any_part(tmp_path: Path) -> None:
 
 
 def test_compose_help_shows_placement() -> None:
-    """``compose --help`` shows the placement words, and the units of euler=."""
+    """``compose --help`` shows the placement words, the units of euler= and --keyframes."""
     done = run("compose", "--help")
     assert done.returncode == 0, done.stderr
     for shown in ("pos=X,Y,Z", "quat=W,X,Y,Z", "euler=A,B,C", "eulerseq", "angle units"):
         assert shown in done.stdout
+    assert "--keyframes {separate,merged}" in done.stdout

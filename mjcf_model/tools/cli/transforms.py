@@ -104,9 +104,13 @@ def _compose(arguments: argparse.Namespace) -> int:
         if not runs or runs[-1][:2] != (at, part.placement()):
             runs.append((at, part.placement(), []))
         runs[-1][2].append((read_model(part.path), part.prefix))
+    # ``separate`` is attach's default: the keyword is passed only when another is asked for.
+    keys: dict[str, Any] = {}
+    if arguments.keyframes != "separate":
+        keys["keyframes"] = arguments.keyframes
     for at, placement, children in runs:
         pos, quat, euler = (placement.get(key) for key in ("pos", "quat", "euler"))
-        scene = attach_all(scene, children, at=at, pos=pos, quat=quat, euler=euler)
+        scene = attach_all(scene, children, at=at, pos=pos, quat=quat, euler=euler, **keys)
     write_model(_checked(scene), arguments.output)
     if arguments.export:
         _export(scene, arguments.export)
@@ -159,6 +163,16 @@ def add_parsers(commands: Any) -> None:
     )
     compose.add_argument(
         "--at", metavar="NAME", help="the body, frame or site to attach parts without @NAME at"
+    )
+    compose.add_argument(
+        "--keyframes",
+        choices=("separate", "merged"),
+        default="separate",
+        help=(
+            "separate (default): each part's keys are kept under their prefixed names; "
+            "merged: keys of the same name in the parts become one key that sets every "
+            "part (e.g. one home for two robots)"
+        ),
     )
     compose.add_argument(
         "--export", metavar="DIR", help="also export the scene with all its files into DIR"
