@@ -10,18 +10,19 @@ Example:
     >>> _ = (folder / "cup.xml").write_text(
     ...     '<mujoco><worldbody><body name="cup"><geom size="0.1"/></body></worldbody></mujoco>')
     >>> scene = str(folder / "scene.xml")
-    >>> main(["compose", scene, str(folder / "cup.xml"), f"{folder / 'cup.xml'}:b_"])
+    >>> cup = str(folder / "cup.xml")
+    >>> main(["compose", scene, cup, f"{cup}:b_", "pos=0,-0.5,0"])  # b_cup half a metre to -y
     0
     >>> from serializers import load
-    >>> [body.name for body in load(scene).worldbody.bodies]
-    ['cup', 'b_cup']
+    >>> world = load(scene).worldbody
+    >>> [body.name for body in world.bodies], [body.name for body in world.frames[-1].bodies]
+    (['cup'], ['b_cup'])
 
 """
 
 from __future__ import annotations
 
 import argparse
-import os
 import sys
 from pathlib import Path
 from typing import Any
@@ -36,35 +37,31 @@ from mjcf_model.tools.cli.common import (
     read_model,
     write_model,
 )
+from mjcf_model.tools.cli.parts import PLACEMENT_FORM, parts_of, split_part
 
 __all__ = ["add_parsers", "split_part"]
 
 
-def split_part(argument: str) -> tuple[str, str, str | None]:
-    """``FILE[:PREFIX][@NAME]`` as ``(file, prefix, name)``.
+_COMPOSE_DESCRIPTION = """\
+Read BASE, attach each PART to it (at the world, or at the body, frame or site its
+@NAME or --at names), each with its names prefixed by PREFIX, check that MuJoCo
+compiles the scene, and write it to OUT (- for stdout). Each model keeps its own
+<compiler> settings and files, wherever its folder is.
 
-    The file is the longest start of ``argument`` that names an existing file (so
-    prefixes and names may hold ``/`` and file names ``:`` or ``@``); when none
-    does, the first mark after the file name's ``.xml`` ends it.
+The words after a PART place it, relative to its attach point (default: at it):
+  pos=X,Y,Z        its world's position
+  quat=W,X,Y,Z     its world's orientation, as a quaternion
+  euler=A,B,C      or as Euler angles, read in BASE's <compiler> angle units
+                   (degrees unless it says angle="radian") and eulerseq, as
+                   mjcf_model.attach reads them
+Numbers are separated by commas (or spaces, quoted); a model file whose name
+starts with pos=, quat= or euler= is written ./pos=... . A placement text that
+is not of this form exits 2 and writes nothing.
 
-    Example:
-        >>> split_part("robots/arm.xml:left/@left_mount"), split_part("arm.xml")
-        (('robots/arm.xml', 'left/', 'left_mount'), ('arm.xml', '', None))
-
-    """
-    if argument == STDIO or os.path.exists(argument):
-        return argument, "", None
-    cuts = [i for i, char in enumerate(argument) if char in ":@"]
-    found = [i for i in cuts if os.path.isfile(argument[:i])]
-    if not found:  # no such file: cut after the file name's ".xml", else at the first mark
-        after = argument.rfind(".xml") + 4 if ".xml" in argument else 0
-        found = [min((i for i in cuts if i >= after), default=len(argument))]
-    path, rest = argument[: found[-1]], argument[found[-1] :]
-    if rest.startswith(":"):
-        prefix, _, name = rest[1:].partition("@")
-    else:
-        prefix, name = "", rest[1:]
-    return path, prefix, name or None
+example:
+  mjcf-model compose scene.xml table.xml arm.xml:left_ pos=-0.5,0,0 \\
+      arm.xml:right_ pos=0.5,0,0 euler=0,0,180
+"""
 
 
 def _model(node: AnyElement) -> Mujoco:
@@ -95,19 +92,25 @@ def _compose(arguments: argparse.Namespace) -> int:
         and any(Path(arguments.export).iterdir())
     ):
         raise Failed(f"{arguments.export} exists and is not empty; nothing was written")
+    parts = parts_of(arguments.parts)  # placement errors before any file is read
     path, prefix, _ = split_part(arguments.base)
     scene = read_model(path)
     if prefix:
         scene = _model(prefixed(scene, prefix))
-    runs: list[tuple[str | None, list[tuple[Mujoco, str]]]] = []  # parts in a row, one place
-    for argument in arguments.parts:
-        path, prefix, at = split_part(argument)
-        at = at if at is not None else arguments.at
-        if not runs or runs[-1][0] != at:
-            runs.append((at, []))
-        runs[-1][1].append((read_model(path), prefix))
-    for at, children in runs:
-        scene = attach_all(scene, children, at=at)
+    # Parts in a row with one attach point and one placement are attached in one pass.
+    runs: list[tuple[str | None, dict[str, tuple[float, ...]], list[tuple[Mujoco, str]]]] = []
+    for part in parts:
+        at = part.at if part.at is not None else arguments.at
+        if not runs or runs[-1][:2] != (at, part.placement()):
+            runs.append((at, part.placement(), []))
+        runs[-1][2].append((read_model(part.path), part.prefix))
+    # ``separate`` is attach's default: the keyword is passed only when another is asked for.
+    keys: dict[str, Any] = {}
+    if arguments.keyframes != "separate":
+        keys["keyframes"] = arguments.keyframes
+    for at, placement, children in runs:
+        pos, quat, euler = (placement.get(key) for key in ("pos", "quat", "euler"))
+        scene = attach_all(scene, children, at=at, pos=pos, quat=quat, euler=euler, **keys)
     write_model(_checked(scene), arguments.output)
     if arguments.export:
         _export(scene, arguments.export)
@@ -147,20 +150,29 @@ def add_parsers(commands: Any) -> None:
     compose = commands.add_parser(
         "compose",
         help="attach models to a base model and write the scene",
-        description=(
-            "Read BASE, attach each PART to it (at the world, or at the body, frame or site "
-            "its @NAME or --at names), each with its names prefixed by PREFIX, check that "
-            "MuJoCo compiles the scene, and write it to OUT (- for stdout). Each model keeps "
-            "its own <compiler> settings and files, wherever its folder is."
-        ),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description=_COMPOSE_DESCRIPTION,
     )
     compose.add_argument("output", metavar="OUT", help="where to write the scene (- for stdout)")
     compose.add_argument("base", metavar="BASE[:PREFIX]", help="the base model")
     compose.add_argument(
-        "parts", nargs="+", metavar="PART[:PREFIX][@NAME]", help="models to attach (at NAME)"
+        "parts",
+        nargs="+",
+        metavar="PART[:PREFIX][@NAME]",
+        help=f"a model to attach (at NAME), each followed by its placement {PLACEMENT_FORM}",
     )
     compose.add_argument(
         "--at", metavar="NAME", help="the body, frame or site to attach parts without @NAME at"
+    )
+    compose.add_argument(
+        "--keyframes",
+        choices=("separate", "merged"),
+        default="separate",
+        help=(
+            "separate (default): each part's keys are kept under their prefixed names; "
+            "merged: keys of the same name in the parts become one key that sets every "
+            "part (e.g. one home for two robots)"
+        ),
     )
     compose.add_argument(
         "--export", metavar="DIR", help="also export the scene with all its files into DIR"

@@ -1,0 +1,222 @@
+"""``mjcf-model compose`` places each part: a process, real files, MuJoCo's compiled poses.
+
+Each expected pose is computed from the part compiled alone (``mj_kinematics`` at
+``qpos0``), moved by the placement with MuJoCo's own quaternion functions.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+import mujoco
+import numpy as np
+import pytest
+
+from tests.test_cli_verbs import run
+
+#: The base: degrees and a z-y-x Euler sequence (euler= is read so), and a turned table.
+BASE = """<mujoco model="base">
+  <compiler angle="degree" eulerseq="zyx"/>
+  <worldbody>
+    <geom name="floor" type="plane" size="5 5 0.1"/>
+    <body name="table" pos="0.3 -0.2 0.5" euler="25 0 0">
+      <geom type="box" size="0.3 0.3 0.02"/>
+    </body>
+  </worldbody>
+</mujoco>
+"""
+#: A free-floating box with a lid on it, turned; no keyframes.
+FREE = """<mujoco model="box">
+  <worldbody>
+    <body name="box" pos="0.1 0.2 0.3" quat="0.9 0.1 0.3 0.2">
+      <freejoint/>
+      <geom type="box" size="0.1 0.1 0.1"/>
+      <body name="lid" pos="0 0.05 0.12" euler="0.2 0 0.4">
+        <geom type="box" size="0.1 0.1 0.01"/>
+      </body>
+    </body>
+  </worldbody>
+</mujoco>
+"""
+#: A fixed-base arm (radians) with a keyframe.
+ARM = """<mujoco model="arm">
+  <worldbody>
+    <body name="base" pos="0 0 0.1" euler="0 0 0.3">
+      <geom type="cylinder" size="0.05 0.05"/>
+      <body name="upper" pos="0 0 0.1" euler="0.4 0 0">
+        <joint name="shoulder" axis="0 1 0"/>
+        <geom type="capsule" fromto="0 0 0 0 0 0.3" size="0.03"/>
+        <body name="fore" pos="0 0 0.3" euler="0 0.5 0">
+          <joint name="elbow" axis="0 1 0"/>
+          <geom type="capsule" fromto="0 0 0 0 0 0.25" size="0.02"/>
+        </body>
+      </body>
+    </body>
+  </worldbody>
+  <keyframe><key name="bent" qpos="0.5 -1"/></keyframe>
+</mujoco>
+"""
+
+
+def _files(tmp_path: Path) -> dict[str, Path]:
+    """The base, the free box and the arm, each written to its own file in ``tmp_path``."""
+    files = {name: tmp_path / f"{name}.xml" for name in ("base", "free", "arm")}
+    for name, text in (("base", BASE), ("free", FREE), ("arm", ARM)):
+        files[name].write_text(text)
+    return files
+
+
+def _poses(model: mujoco.MjModel) -> mujoco.MjData:
+    """``model``'s data after ``mj_kinematics`` at ``qpos0``."""
+    data = mujoco.MjData(model)
+    mujoco.mj_kinematics(model, data)
+    return data
+
+
+def _quat(quat: Sequence[float] | None = None, euler_degrees: Sequence[float] = ()) -> np.ndarray:
+    """A unit quaternion: ``quat`` normalized, or MuJoCo's from z-y-x Euler angles in degrees."""
+    result = np.zeros(4)
+    if quat is not None:
+        result[:] = quat
+        mujoco.mju_normalize4(result)
+    else:
+        mujoco.mju_euler2Quat(result, np.radians(euler_degrees), "zyx")
+    return result
+
+
+def _assert_placed(
+    scene: mujoco.MjModel,
+    alone_path: Path,
+    prefix: str,
+    pos: Sequence[float],
+    quat: np.ndarray,
+    frame: tuple[np.ndarray, np.ndarray] = (np.zeros(3), np.array([1.0, 0, 0, 0])),
+) -> None:
+    """Each body of the part alone is in ``scene`` (prefixed), moved by ``frame`` then the pose."""
+    alone = mujoco.MjModel.from_xml_path(str(alone_path))
+    before, after = _poses(alone), _poses(scene)
+    place_quat, place_pos = np.zeros(4), np.zeros(3)
+    mujoco.mju_mulQuat(place_quat, frame[1], quat)
+    mujoco.mju_rotVecQuat(place_pos, np.asarray(pos, dtype=float), frame[1])
+    place_pos += frame[0]
+    for body in range(1, alone.nbody):
+        name = prefix + alone.body(body).name
+        expected_pos, expected_quat = np.zeros(3), np.zeros(4)
+        mujoco.mju_rotVecQuat(expected_pos, before.xpos[body], place_quat)
+        mujoco.mju_mulQuat(expected_quat, place_quat, before.xquat[body])
+        assert np.allclose(after.body(name).xpos, expected_pos + place_pos), name
+        found = after.body(name).xquat
+        assert np.allclose(found, expected_quat) or np.allclose(found, -expected_quat), name
+
+
+def test_compose_places_free_bodies(tmp_path: Path) -> None:
+    """Two copies of a free box, one moved (negative numbers), one moved and turned by euler=."""
+    files = _files(tmp_path)
+    scene_path = tmp_path / "scene.xml"
+    done = run(
+        "compose",
+        str(scene_path),
+        str(files["base"]),
+        f"{files['free']}:a_",
+        "pos=-1,0.5,0",
+        f"{files['free']}:b_",
+        "pos=1,-0.25,0.2",
+        "euler=30,20,10",
+    )
+    assert done.returncode == 0, done.stderr
+    scene = mujoco.MjModel.from_xml_path(str(scene_path))
+    _assert_placed(scene, files["free"], "a_", (-1, 0.5, 0), _quat((1, 0, 0, 0)))
+    _assert_placed(scene, files["free"], "b_", (1, -0.25, 0.2), _quat(euler_degrees=(30, 20, 10)))
+
+
+def test_compose_places_fixed_arms(tmp_path: Path) -> None:
+    """Three arms: moved, moved and turned by quat=, and at a body turned by euler=.
+
+    The last is placed relative to the base's ``table`` body, as MuJoCo compiles it.
+    """
+    files = _files(tmp_path)
+    scene_path = tmp_path / "scene.xml"
+    arm = files["arm"]
+    done = run(
+        "compose",
+        str(scene_path),
+        str(files["base"]),
+        f"{arm}:left_",
+        "pos=-0.5,0,0",
+        f"{arm}:right_",
+        "pos=0.5,0,0",
+        "quat=1,0,0,1",
+        f"{arm}:top_@table",
+        "pos=0,0.1,0.02",
+        "euler=-90,0,15",
+    )
+    assert done.returncode == 0, done.stderr
+    scene = mujoco.MjModel.from_xml_path(str(scene_path))
+    _assert_placed(scene, arm, "left_", (-0.5, 0, 0), _quat((1, 0, 0, 0)))
+    _assert_placed(scene, arm, "right_", (0.5, 0, 0), _quat((1, 0, 0, 1)))
+    base = _poses(mujoco.MjModel.from_xml_path(str(files["base"]))).body("table")
+    table = (base.xpos.copy(), base.xquat.copy())
+    _assert_placed(scene, arm, "top_", (0, 0.1, 0.02), _quat(euler_degrees=(-90, 0, 15)), table)
+
+
+def test_compose_keyframes_separate(tmp_path: Path) -> None:
+    """``--keyframes separate`` keeps each arm's key under its prefixed name, setting that arm."""
+    files = _files(tmp_path)
+    scene_path = tmp_path / "scene.xml"
+    arm = files["arm"]
+    words = [f"{arm}:left_", "pos=-0.5,0,0", f"{arm}:right_", "pos=0.5,0,0"]
+    done = run("compose", str(scene_path), str(files["base"]), *words, "--keyframes", "separate")
+    assert done.returncode == 0, done.stderr
+    scene = mujoco.MjModel.from_xml_path(str(scene_path))
+    alone = mujoco.MjModel.from_xml_path(str(arm))
+    bent = alone.key("bent").qpos
+    for prefix in ("left_", "right_"):
+        key = scene.key(f"{prefix}bent").qpos
+        for joint in ("shoulder", "elbow"):
+            address = scene.joint(prefix + joint).qposadr[0]
+            assert key[address] == bent[alone.joint(joint).qposadr[0]], (prefix, joint)
+
+
+@pytest.mark.parametrize(
+    ("placement", "said"),
+    [
+        (["pos=1,2"], "expected 3 numbers, found 2"),
+        (["pos=1,x,0"], "expected a number, found 'x'"),
+        (["quat=1,0,0"], "quat=W,X,Y,Z"),
+        (["pos=inf,0,0"], "finite"),
+        (["quat=1,0,0,1", "euler=0,0,90"], "both quat= and euler="),
+        (["pos=0,0,1", "pos=0,0,2"], "pos= is given twice"),
+    ],
+)
+def test_compose_bad_placement_writes_nothing(
+    tmp_path: Path, placement: list[str], said: str
+) -> None:
+    """A placement text of the wrong form exits 2, names the part and the form, writes nothing."""
+    files = _files(tmp_path)
+    scene_path = tmp_path / "scene.xml"
+    part = f"{files['free']}:a_"
+    done = run("compose", str(scene_path), str(files["base"]), part, *placement)
+    assert done.returncode == 2
+    assert done.stderr.startswith(f"mjcf-model compose: part {part!r}")
+    assert said in done.stderr
+    assert not scene_path.exists()
+
+
+def test_compose_placement_before_any_part(tmp_path: Path) -> None:
+    """A placement word before the first part (the base is not placed) exits 2, writes nothing."""
+    files = _files(tmp_path)
+    scene_path = tmp_path / "scene.xml"
+    done = run("compose", str(scene_path), str(files["base"]), "pos=0,0,1", str(files["free"]))
+    assert done.returncode == 2
+    assert "comes before any part" in done.stderr
+    assert not scene_path.exists()
+
+
+def test_compose_help_shows_placement() -> None:
+    """``compose --help`` shows the placement words, the units of euler= and --keyframes."""
+    done = run("compose", "--help")
+    assert done.returncode == 0, done.stderr
+    for shown in ("pos=X,Y,Z", "quat=W,X,Y,Z", "euler=A,B,C", "eulerseq", "angle units"):
+        assert shown in done.stdout
+    assert "--keyframes {separate,merged}" in done.stdout
