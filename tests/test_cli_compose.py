@@ -178,6 +178,27 @@ def test_compose_keyframes_separate(tmp_path: Path) -> None:
             assert key[address] == bent[alone.joint(joint).qposadr[0]], (prefix, joint)
 
 
+def test_compose_keyframes_merged(tmp_path: Path) -> None:
+    """``--keyframes merged`` writes one ``bent`` key setting both arms, the free box as placed."""
+    files = _files(tmp_path)
+    scene_path = tmp_path / "scene.xml"
+    arm = files["arm"]
+    words = [f"{files['free']}:box_", "pos=0,1,0", f"{arm}:left_", "pos=-0.5,0,0"]
+    words += [f"{arm}:right_", "pos=0.5,0,0", "euler=0,0,90"]
+    done = run("compose", str(scene_path), str(files["base"]), *words, "--keyframes", "merged")
+    assert done.returncode == 0, done.stderr
+    scene = mujoco.MjModel.from_xml_path(str(scene_path))
+    alone = mujoco.MjModel.from_xml_path(str(arm))
+    assert scene.nkey == 1 and scene.key(0).name == "bent"
+    bent = alone.key("bent").qpos
+    for prefix in ("left_", "right_"):
+        for joint in ("shoulder", "elbow"):
+            address = scene.joint(prefix + joint).qposadr[0]
+            assert scene.key_qpos[0, address] == bent[alone.joint(joint).qposadr[0]]
+    box = scene.joint(scene.body("box_box").jntadr[0]).qposadr[0]
+    assert np.array_equal(scene.key_qpos[0, box : box + 7], scene.qpos0[box : box + 7])
+
+
 @pytest.mark.parametrize(
     ("placement", "said"),
     [

@@ -104,13 +104,17 @@ def _compose(arguments: argparse.Namespace) -> int:
         if not runs or runs[-1][:2] != (at, part.placement()):
             runs.append((at, part.placement(), []))
         runs[-1][2].append((read_model(part.path), part.prefix))
-    # ``separate`` is attach's default: the keyword is passed only when another is asked for.
-    keys: dict[str, Any] = {}
-    if arguments.keyframes != "separate":
-        keys["keyframes"] = arguments.keyframes
     for at, placement, children in runs:
         pos, quat, euler = (placement.get(key) for key in ("pos", "quat", "euler"))
-        scene = attach_all(scene, children, at=at, pos=pos, quat=quat, euler=euler, **keys)
+        scene = attach_all(
+            scene,
+            children,
+            at=at,
+            pos=pos,
+            quat=quat,
+            euler=euler,
+            keyframes=arguments.keyframes,
+        )
     write_model(_checked(scene), arguments.output)
     if arguments.export:
         _export(scene, arguments.export)
