@@ -31,6 +31,7 @@ from __future__ import annotations
 __all__ = [
     "MjcfAssetError",
     "MjcfCompileError",
+    "MjcfDroppedSettingWarning",
     "MjcfError",
     "MjcfIncludeError",
     "MjcfLookupError",
@@ -141,3 +142,12 @@ class MjcfRenderError(MjcfError, RuntimeError):
 
 class MjcfSecurityError(MjcfError, ValueError):
     """The XML declares a DTD or entities; mjcf-model never expands or fetches them."""
+
+
+class MjcfDroppedSettingWarning(UserWarning):
+    """A composed part's setting is dropped: the parent's ``<option>``, ``<size>``, ... hold.
+
+    MuJoCo keeps one set of model-wide settings, so :func:`mjcf_model.attach`
+    keeps the parent's and warns, naming each of the child's it drops. Filter
+    it as any warning: ``warnings.simplefilter("ignore", MjcfDroppedSettingWarning)``.
+    """

@@ -19,23 +19,20 @@ both, which are kept once.
 
 from __future__ import annotations
 
-from collections.abc import Collection, Iterable, Mapping
+import warnings
+from collections.abc import Iterable
 from typing import cast
 
 import attrs
 
-from mjcf_model.errors import MjcfValueError
+from mjcf_model.errors import MjcfDroppedSettingWarning, MjcfValueError
 from mjcf_model.files.provenance import Folders, relocated
 from mjcf_model.nodes.base import (
     AnyElement,
-    GenericElement,
     Node,
-    TypedElement,
     get_attribute,
 )
 from mjcf_model.nodes.default import Default
-from mjcf_model.nodes.keyframe import Keyframe
-from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.transforms.composition.conventions import in_conventions
 from mjcf_model.transforms.composition.defaults import classed, merged_settings, sets_values
@@ -56,57 +53,21 @@ from mjcf_model.transforms.composition.places import (
     placement_frame,
     wrapped,
 )
+from mjcf_model.transforms.composition.sections import (
+    LISTS,
+    SETTINGS,
+    by_tag,
+    check_collisions,
+    dropped_settings,
+    inserted,
+    merged_into,
+    with_keys,
+)
 from mjcf_model.transforms.naming.renaming import declarations, declared_names, prefixed_declared
 from mjcf_model.transforms.naming.repeated import RepeatedPrefixing
-from mjcf_model.tree.paths import replaced_at
-from mjcf_model.tree.traversal import keyed_walk, refuse_opaque, walk, with_children
+from mjcf_model.tree.traversal import keyed_walk, refuse_opaque, with_children
 
 __all__ = ["AttachKind", "attach", "attach_all", "attach_in_frame"]
-
-#: No names.
-_NONE: frozenset[str] = frozenset()
-#: Sections whose settings the parent keeps; a parent without one adopts the child's.
-#: (Not ``<compiler>``: the child is converted into the parent's, see ``_in_parent_terms``.)
-_SETTINGS = ("option", "size", "statistic", "visual")
-#: Sections whose elements are added to the parent's section of the same tag.
-_LISTS = (
-    "extension",
-    "custom",
-    "asset",
-    "deformable",
-    "contact",
-    "equality",
-    "tendon",
-    "actuator",
-    "sensor",
-)
-
-
-def _by_tag(model: Mujoco) -> dict[str, list[AnyElement]]:
-    """The model's sections by tag, in order."""
-    found: dict[str, list[AnyElement]] = {}
-    for section in model.children:
-        if isinstance(section, (TypedElement, GenericElement)):
-            found.setdefault(section.tag, []).append(section)
-    return found
-
-
-def _check_collisions(declared: dict[str, set[str]], theirs: Mapping[str, Collection[str]]) -> None:
-    """Raise when the child's names ``theirs`` meet the parent's ``declared`` ones."""
-    if all(declared.get(namespace, _NONE).isdisjoint(names) for namespace, names in theirs.items()):
-        return
-    clashes = {
-        namespace: sorted(set(names) & declared.get(namespace, set()))
-        for namespace, names in theirs.items()
-    }
-    clashes = {namespace: names for namespace, names in clashes.items() if names}
-    if clashes:
-        listed = "; ".join(
-            f"{namespace}: {', '.join(names)}" for namespace, names in clashes.items()
-        )
-        raise MjcfValueError(
-            f"the child declares names the parent already has ({listed}); attach it with a prefix"
-        )
 
 
 def attach(
@@ -306,7 +267,7 @@ class _Composer:
         self._set_parent(parent)
         #: Every asset so far, with the number of the model that brought it (0: the parent).
         self.assets: dict[AnyElement, int] = {
-            e: 0 for section in _by_tag(parent).get("asset", ()) for e in section.elements
+            e: 0 for section in by_tag(parent).get("asset", ()) for e in section.elements
         }
         #: How many children were added.
         self.added = 0
@@ -328,7 +289,7 @@ class _Composer:
         theirs = {ns: {prefix + n for n in found} for ns, found in names.items()}
         if self.policy == "merged":  # keys of one name become one key: not a clash
             theirs.pop("key", None)
-        sections = _by_tag(child)
+        sections = by_tag(child)
         child_assets = [e for section in sections.get("asset", ()) for e in section.elements]
         self.added += 1
         shared: list[AnyElement] = []
@@ -338,17 +299,20 @@ class _Composer:
         for asset in shared:
             for _, namespace, name in declarations(asset, f"asset/{asset.tag}"):
                 theirs.get(namespace, set()).discard(name)
-        _check_collisions(self.declared, theirs)
+        check_collisions(self.declared, theirs)
         for namespace, found in theirs.items():
             self.declared.setdefault(namespace, set()).update(found)
         if (self.scene_keys or self.parent_keys or "keyframe" in sections) and adds_state(child):
             self._merge_keys(original, child)
         main = self._add_defaults(sections.get("default", []), prefix)
-        for tag in _SETTINGS:
+        for tag in SETTINGS:
             if tag not in self.parent_tags and not self.pending.get(tag):
                 self.pending[tag] = list(sections.get(tag, ()))
+            elif tag in sections:
+                held = self.pending.get(tag) or by_tag(self.parent).get(tag, [])
+                _warn_dropped(dropped_settings(held, sections[tag]), prefix)
         kept = {id(asset) for asset in shared}
-        for tag in _LISTS:
+        for tag in LISTS:
             nodes = [node for section in sections.get(tag, ()) for node in section.children]
             if kept and tag == "asset":
                 nodes = [n for n in nodes if id(n) not in kept]
@@ -365,7 +329,7 @@ class _Composer:
         self.parent = parent
         self.sections: list[Node] = list(parent.children)
         #: The tags of the parent's sections.
-        self.parent_tags = set(_by_tag(parent))
+        self.parent_tags = set(by_tag(parent))
         #: Whether the parent has keyframes (then every child is merged key by key).
         self.parent_keys = bool(keys_of(parent))
 
@@ -458,48 +422,32 @@ class _Composer:
 
     def result(self) -> Mujoco:
         sections = list(self.sections)
-        for tag in ("default", *_SETTINGS, *_LISTS):
+        for tag in ("default", *SETTINGS, *LISTS):
             nodes = self.pending.get(tag, [])
-            if tag in _SETTINGS:
+            if tag in SETTINGS:
                 sections.extend(nodes)
             elif nodes:
-                _merge_into(sections, tag, nodes)
+                merged_into(sections, tag, nodes)
         world = wrapped(self.point.frames, self.world) if self.point and self.world else []
         world = world or self.world
         holder = None if self.point is None else self.point.holder
         if holder is None:
             if world:
-                _merge_into(sections, "worldbody", world)
+                merged_into(sections, "worldbody", world)
         elif world:
-            sections = list(_inserted(with_children(self.parent, sections), holder, world).children)
+            sections = list(inserted(with_children(self.parent, sections), holder, world).children)
         if self.scene_keys is not None:
-            sections = _with_keys(sections, self.scene_keys.nodes())
+            sections = with_keys(sections, self.scene_keys.nodes())
         return attrs.evolve(self.parent, children=sections)
 
 
-def _merge_into(sections: list[Node], tag: str, nodes: list[Node]) -> None:
-    """Append ``nodes`` to the last ``tag`` section, or add a new section at the end."""
-    for index in range(len(sections) - 1, -1, -1):
-        section = sections[index]
-        if isinstance(section, (TypedElement, GenericElement)) and section.tag == tag:
-            sections[index] = with_children(section, [*section.children, *nodes])
-            return
-    sections.append(CLASS_BY_KEY[tag](children=nodes))
-
-
-def _with_keys(sections: list[Node], keys: list[Node]) -> list[Node]:
-    """``sections`` with ``keys`` as its one ``<keyframe>`` (where the first one was)."""
-    found = [i for i, c in enumerate(sections) if getattr(c, "tag", None) == "keyframe"]
-    if not found:
-        return [*sections, Keyframe(children=keys)] if keys else sections
-    first = sections[found[0]]
-    assert isinstance(first, (TypedElement, GenericElement))
-    kept = [c for i, c in enumerate(sections) if i == found[0] or i not in found]
-    kept[found[0]] = with_children(first, keys)
-    return kept
-
-
-def _inserted(model: Mujoco, target: AnyElement, nodes: list[Node]) -> Mujoco:
-    """``model`` with ``nodes`` appended to the children of ``target`` (found by identity)."""
-    path = next(path for path, element in walk(model) if element is target)
-    return replaced_at(model, path, [with_children(target, [*target.children, *nodes])])
+def _warn_dropped(dropped: list[str], prefix: str) -> None:
+    """Warn, naming each of the child's settings that the parent's replace."""
+    if dropped:
+        child = f"the child attached with prefix {prefix!r}" if prefix else "the child"
+        warnings.warn(
+            MjcfDroppedSettingWarning(
+                f"{child} loses settings the parent's replace: {'; '.join(dropped)}"
+            ),
+            stacklevel=4,
+        )
