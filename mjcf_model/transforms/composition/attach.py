@@ -19,18 +19,15 @@ both, which are kept once.
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Iterable
 from typing import cast
 
 import attrs
 
-from mjcf_model.errors import MjcfDroppedSettingWarning, MjcfValueError
 from mjcf_model.files.provenance import Folders, relocated
 from mjcf_model.nodes.base import (
     AnyElement,
     Node,
-    get_attribute,
 )
 from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.root import Mujoco
@@ -41,11 +38,12 @@ from mjcf_model.transforms.composition.keyframes import (
     PartStates,
     SceneKeys,
     adds_state,
+    attach_pose,
     check_policy,
     keys_of,
 )
 from mjcf_model.transforms.composition.main_defaults import CLASSED_SECTIONS, with_main_as_class
-from mjcf_model.transforms.composition.part_states import IDENTITY, Pose, pose_of_frames
+from mjcf_model.transforms.composition.part_states import Pose
 from mjcf_model.transforms.composition.places import (
     AttachKind,
     Where,
@@ -61,6 +59,7 @@ from mjcf_model.transforms.composition.sections import (
     dropped_settings,
     inserted,
     merged_into,
+    warn_dropped,
     with_keys,
 )
 from mjcf_model.transforms.naming.renaming import declarations, declared_names, prefixed_declared
@@ -310,7 +309,7 @@ class _Composer:
                 self.pending[tag] = list(sections.get(tag, ()))
             elif tag in sections:
                 held = self.pending.get(tag) or by_tag(self.parent).get(tag, [])
-                _warn_dropped(dropped_settings(held, sections[tag]), prefix)
+                warn_dropped(dropped_settings(held, sections[tag]), prefix)
         kept = {id(asset) for asset in shared}
         for tag in LISTS:
             nodes = [node for section in sections.get(tag, ()) for node in section.children]
@@ -399,26 +398,10 @@ class _Composer:
             self.pending, self.world = {}, []
         part = PartStates.of(original)
         if self.pose is None:
-            self.pose = self._placed_pose(part)
+            self.pose = attach_pose(self.parent, self.point, self.where.at, part)
         self.scene_keys.add(part, keys_of(original), keys_of(child), self.pose, self.policy)
         if self.policy == "merged":
             self.declared.setdefault("key", set()).update(self.scene_keys.names)
-
-    def _placed_pose(self, part: PartStates) -> Pose:
-        """The world pose the children are attached at, when the part has what it moves."""
-        if not part.moves_with_placement:
-            return IDENTITY
-        if self.point is None:
-            return IDENTITY
-        if self.point.holder is not None:
-            raise MjcfValueError(
-                f"cannot attach a part with free joints or mocap bodies at {self.where.at!r}: "
-                f"it is in the body {self.point.holder.tag} "
-                f"{get_attribute(self.point.holder, 'name')!r}, and MuJoCo allows those only at "
-                "the top level; attach the part at the world, or at a frame or a site of the "
-                "world body"
-            )
-        return pose_of_frames(self.parent, self.point.frames)
 
     def result(self) -> Mujoco:
         sections = list(self.sections)
@@ -439,15 +422,3 @@ class _Composer:
         if self.scene_keys is not None:
             sections = with_keys(sections, self.scene_keys.nodes())
         return attrs.evolve(self.parent, children=sections)
-
-
-def _warn_dropped(dropped: list[str], prefix: str) -> None:
-    """Warn, naming each of the child's settings that the parent's replace."""
-    if dropped:
-        child = f"the child attached with prefix {prefix!r}" if prefix else "the child"
-        warnings.warn(
-            MjcfDroppedSettingWarning(
-                f"{child} loses settings the parent's replace: {'; '.join(dropped)}"
-            ),
-            stacklevel=4,
-        )

@@ -51,7 +51,9 @@ from mjcf_model.transforms.composition.part_states import (
     Pose,
     State,
     Vector,
+    pose_of_frames,
 )
+from mjcf_model.transforms.composition.places import AttachPoint
 from mjcf_model.tree.defaults import DefaultClasses
 from mjcf_model.tree.joints import joint_type
 from mjcf_model.tree.traversal import keyed_walk
@@ -63,6 +65,7 @@ __all__ = [
     "PartStates",
     "SceneKeys",
     "adds_state",
+    "attach_pose",
     "check_policy",
     "keys_of",
 ]
@@ -232,6 +235,28 @@ class SceneKeys:
             changes["time"] = state.time or None
             written.append(with_attributes(keyed.node, changes))
         return written
+
+
+def attach_pose(
+    parent: Mujoco, point: AttachPoint | None, at: str | None, part: PartStates
+) -> Pose:
+    """The world pose a part is attached at, where the part has something it moves.
+
+    Raises:
+        MjcfValueError: The part has free joints or mocap bodies and the attach
+            point is inside a body (MuJoCo allows those only at the top level).
+
+    """
+    if not part.moves_with_placement or point is None:
+        return IDENTITY
+    if point.holder is not None:
+        raise MjcfValueError(
+            f"cannot attach a part with free joints or mocap bodies at {at!r}: it is inside "
+            f"the <{point.holder.tag}> {get_attribute(point.holder, 'name')!r}, and MuJoCo "
+            "allows those only at the top level; attach the part at the world, or at a frame "
+            "or a site of the world body"
+        )
+    return pose_of_frames(parent, point.frames)
 
 
 def _name(key: AnyElement) -> str | None:

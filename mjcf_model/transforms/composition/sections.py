@@ -16,9 +16,10 @@ the child's that is dropped), and writes the scene's keys as one ``<keyframe>``.
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Collection, Mapping, Sequence
 
-from mjcf_model.errors import MjcfValueError
+from mjcf_model.errors import MjcfDroppedSettingWarning, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, attribute_items
 from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.nodes.registry import CLASS_BY_KEY
@@ -35,6 +36,7 @@ __all__ = [
     "dropped_settings",
     "inserted",
     "merged_into",
+    "warn_dropped",
     "with_keys",
 ]
 
@@ -116,6 +118,18 @@ def dropped_settings(kept: Sequence[Node], theirs: Sequence[Node]) -> list[str]:
         )
         dropped.append(f'<{element} {attribute}="{value}"> ({why})')
     return dropped
+
+
+def warn_dropped(dropped: list[str], prefix: str) -> None:
+    """Warn with :class:`MjcfDroppedSettingWarning`, naming each setting in ``dropped``."""
+    if dropped:
+        child = f"the child attached with prefix {prefix!r}" if prefix else "the child"
+        warnings.warn(
+            MjcfDroppedSettingWarning(
+                f"{child} loses settings the parent's replace: {'; '.join(dropped)}"
+            ),
+            stacklevel=6,  # the caller of attach
+        )
 
 
 def merged_into(sections: list[Node], tag: str, nodes: list[Node]) -> None:
