@@ -15,7 +15,7 @@ indented as its siblings.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from typing import Any
 
 from mjcf_model.nodes.base import AnyElement, Comment, Node, attribute_items
@@ -197,51 +197,66 @@ def _changed_content(
 
     Kept children keep the gap before them (of the gaps left where children were
     removed, the one with the most line breaks: no blank line is lost); an added
-    child gets a line of its own, indented as its siblings.
+    child gets a line of its own, indented as its siblings. Stray text (mixed
+    content) stays in its gaps while all of them are written; when the text
+    changed, or a gap holding some is left out with a removed or replaced child
+    (an ``<include>`` inlined), the element's whole text is written first instead.
     """
-    gaps = list(cut.gaps)
-    text = element.text
-    if not (text is layout.text or text == layout.text):
-        gaps = [gap[len(gap.rstrip()) :] for gap in gaps]  # the old text goes
-        if text is not None:
-            gaps[0] = text.translate(TEXT_ESCAPES) + gaps[0]
+    gaps = cut.gaps
     sources = cut.sources
     count = len(sources)
     slots = {id(source): index for index, source in enumerate(sources)}
     comments = cut.comments
     added = _added_gap(gaps, count, indent, style)
-    pieces: list[Any] = []
+    pieces: list[Any] = []  # a gap, then each child and the gap after it
+    written: set[int] = set()  # the gaps written, by index
     last = -1
     for child in children:
         token = getattr(child, "layout", child)
         index = slots.get(id(token), -1) if token is not None else -1
         if index > last:
             if last < 0 or index == last + 1:
-                gap = gaps[0] if last < 0 else gaps[index]
+                at = 0 if last < 0 else index
             else:
-                gap = max(reversed(gaps[last + 1 : index + 1]), key=lambda g: g.count("\n"))
+                at = max(range(index, last, -1), key=lambda i: gaps[i].count("\n"))
+            written.add(at)
             last = index
             kept = comments.get(index) if isinstance(child, Comment) else None
-            pieces += (gap, kept or child)
+            pieces += (gaps[at], kept or child)
         else:
             pieces += (added, child)
     if count:
+        written.add(count)
         pieces.append(gaps[count])
     elif children:
         pieces.append(gaps[0] if "\n" in gaps[0] else style.newline + indent)
     else:
+        written.add(0)
         pieces.append(gaps[0])
+    text = element.text
+    same_text = text is layout.text or text == layout.text
+    if same_text and all(i in written or not gap.strip() for i, gap in enumerate(gaps)):
+        return pieces
+    for at in range(0, len(pieces), 2):  # the old text goes from every gap
+        pieces[at] = _blank(pieces[at])
+    if text is not None:
+        pieces[0] = text.translate(TEXT_ESCAPES) + (pieces[0] if children else "")
     return pieces
 
 
-def _added_gap(gaps: list[str], count: int, indent: str, style: _Style) -> str:
+def _blank(gap: str) -> str:
+    """The white space that ends ``gap``: what is left of it without its text."""
+    return gap[len(gap.rstrip()) :]
+
+
+def _added_gap(gaps: Sequence[str], count: int, indent: str, style: _Style) -> str:
     """The gap before a child added among ``count`` children: a line like its siblings'."""
     for gap in gaps[:count]:
         line = _line_start(gap)
         if line is not None:
             return line
     if count:  # siblings on one line: one more there, separated as they are
-        return gaps[1] if count > 1 else ""
+        return _blank(gaps[1]) if count > 1 else ""
     return style.newline + indent + style.unit
 
 

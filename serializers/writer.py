@@ -28,7 +28,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import IO
 
-from mjcf_model.errors import MjcfValueError
+from mjcf_model.errors import MjcfAssetError, MjcfValueError
 from mjcf_model.files.compiling import inlined
 from mjcf_model.files.provenance import Folders, file_references, relocated
 from mjcf_model.nodes.base import AnyElement, Comment, Element, Node
@@ -90,8 +90,9 @@ def dump(
 
     Writing to a path is atomic: the text goes to a temporary file beside the
     target, which then replaces it. If anything fails, the old file is untouched
-    and no partial file is left. The text is written as :func:`dumps` gives it
-    (line breaks are not translated), encoded as UTF-8.
+    and no partial file is left. Missing folders on the way to the path are
+    created, as :func:`serializers.export` creates them. The text is written as
+    :func:`dumps` gives it (line breaks are not translated), encoded as UTF-8.
 
     Args:
         node: The node to write.
@@ -99,10 +100,14 @@ def dump(
         indent: The indentation of one nesting level in the canonical form.
         canonical: Write the canonical form even for a loaded node (see :func:`dumps`).
 
+    Raises:
+        MjcfAssetError: The path's folder cannot be created or written into (a file
+            is in the way, no permission); the message names the folder.
+
     Example:
         >>> import tempfile, pathlib
         >>> from mjcf_model import Mujoco
-        >>> path = pathlib.Path(tempfile.mkdtemp()) / "out.xml"
+        >>> path = pathlib.Path(tempfile.mkdtemp()) / "out" / "scene.xml"
         >>> dump(Mujoco(model="m"), path)
         >>> path.read_text()
         '<mujoco model="m"/>\n'
@@ -124,18 +129,31 @@ def write_atomically(data: str | bytes, target: str | os.PathLike[str]) -> None:
 
     The data goes to a temporary file beside the target, which then replaces it
     (keeping its permissions); if anything fails, the old file is untouched and no
-    partial file is left.
+    partial file is left. Missing folders on the way to the target are created.
+
+    Raises:
+        MjcfAssetError: The target's folder cannot be created or written into (a
+            file is in the way, no permission); the message names the folder.
 
     Example:
         >>> import tempfile, pathlib
-        >>> path = pathlib.Path(tempfile.mkdtemp()) / "out.xml"
+        >>> path = pathlib.Path(tempfile.mkdtemp()) / "new" / "out.xml"
         >>> write_atomically("<mujoco/>", path)
         >>> path.read_text()
         '<mujoco/>'
 
     """
     path = Path(os.path.realpath(target))  # through a link: the file it names is written
-    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        handle, temporary = tempfile.mkstemp(
+            prefix=f".{path.name}.", suffix=".tmp", dir=path.parent
+        )
+    except OSError as error:
+        raise MjcfAssetError(
+            f"cannot write {str(target)!r}: {_folder_problem(path.parent, error)}; "
+            "nothing was written"
+        ) from None
     try:
         with os.fdopen(handle, "wb") as stream:
             stream.write(data.encode("utf-8") if isinstance(data, str) else data)
@@ -148,6 +166,19 @@ def write_atomically(data: str | bytes, target: str | os.PathLike[str]) -> None:
         with contextlib.suppress(OSError):
             os.unlink(temporary)
         raise
+
+
+def _folder_problem(folder: Path, error: OSError) -> str:
+    """Why ``folder`` cannot be created or written into: the file in its way, or ``error``."""
+    for existing in (folder, *folder.parents):
+        if os.path.lexists(existing):
+            if not existing.is_dir():
+                return f"{str(existing)!r} is a file, not a folder; move it, or write elsewhere"
+            break
+    return (
+        f"its folder {str(folder)!r} cannot be created or written into "
+        f"({error.strerror or error}); choose a folder you can write to"
+    )
 
 
 def _new_mode() -> int:

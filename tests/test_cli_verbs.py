@@ -206,6 +206,21 @@ def test_prefix_and_scale_to_stdout(tmp_path: Path) -> None:
     assert run("scale", str(arm), "--factor", "1", "2").returncode == 2  # two factors
 
 
+def test_an_output_into_a_missing_folder(tmp_path: Path) -> None:
+    """A verb's output path creates its missing folders; a file in the way exits 2, named."""
+    arm = tmp_path / "arm.xml"
+    arm.write_text(UNTIDY)
+    scaled = tmp_path / "out" / "nested" / "big.xml"
+    done = run("scale", str(arm), "--factor", "2", "-o", str(scaled))
+    assert done.returncode == 0, done.stderr
+    original = mujoco.MjModel.from_xml_path(str(arm))
+    assert np.allclose(mujoco.MjModel.from_xml_path(str(scaled)).geom_size, 2 * original.geom_size)
+    blocked = run("scale", str(arm), "--factor", "2", "-o", str(arm / "big.xml"))
+    assert blocked.returncode == 2
+    assert f"{str(arm)!r} is a file, not a folder" in blocked.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["arm.xml", "out"]
+
+
 def test_export_verb(tmp_path: Path) -> None:
     """Export writes a movable folder holding the model and the files it uses."""
     assets = Path(__import__("robosuite").__file__).parent / "models" / "assets"

@@ -10,6 +10,7 @@ import pytest
 
 from mjcf_model import (
     Geom,
+    MjcfAssetError,
     MjcfError,
     MjcfIncludeError,
     MjcfSecurityError,
@@ -203,6 +204,19 @@ def test_atomic_dump_failure_while_writing(tmp_path: Path, monkeypatch: pytest.M
         dump(Mujoco(model="new"), target)
     assert target.read_text() == "<mujoco model='old'/>\n"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["model.xml"]
+
+
+@pytest.mark.parametrize("inside", ["scene.xml", "deeper/scene.xml"])
+def test_dump_with_a_file_in_the_way_of_its_folder(tmp_path: Path, inside: str) -> None:
+    """A file where a folder must be gives an MjcfAssetError naming it; nothing is written."""
+    blocker = _write(tmp_path / "out", "not a folder")
+    with pytest.raises(MjcfAssetError) as caught:
+        dump(Mujoco(model="new"), blocker / inside)
+    assert isinstance(caught.value, OSError)
+    assert f"{str(blocker)!r} is a file, not a folder" in str(caught.value)
+    assert ".tmp" not in str(caught.value)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
+    assert blocker.read_text() == "not a folder"
 
 
 def test_dump_replaces_on_success(tmp_path: Path) -> None:

@@ -119,6 +119,15 @@ def test_dump_elsewhere_relocates_and_dump_in_place_keeps_the_text(
     assert _same(mujoco.MjModel.from_xml_path(str(beside)), expected) == []
 
 
+def test_dump_creates_missing_folders(robot: Path, tmp_path: Path) -> None:
+    """Dumped into folders that do not exist yet, they are made and the model compiles the same."""
+    expected = mujoco.MjModel.from_xml_path(str(robot))
+    target = tmp_path / "out" / "nested" / "scene.xml"
+    dump(load(robot), target)
+    assert sorted(p.name for p in target.parent.iterdir()) == ["scene.xml"]
+    assert _same(mujoco.MjModel.from_xml_path(str(target)), expected) == []
+
+
 def test_a_model_built_in_code_is_dumped_as_written(tmp_path: Path) -> None:
     """Without a folder of its own, a model's paths are written unchanged."""
     path = tmp_path / "m.xml"

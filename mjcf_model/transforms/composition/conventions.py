@@ -19,14 +19,18 @@ handled so:
                    A joint range MuJoCo leaves as written (an unlimited joint's)
                    is left so too. Degrees become exactly the radians MuJoCo
                    makes of them; radians become the degrees MuJoCo reads back
-                   exactly, where a double does (else within one unit in the last
-                   place).
-``eulerseq``       converted: every ``euler`` is rewritten in the parent's
-                   sequence (the same quaternion, and the same notation, so what
-                   an element overrides of its class stays as it was). Refused
-                   where the parent's sequence cannot say it: it repeats an
-                   axis, or a ``<replicate>`` (which turns copy ``i`` by ``i``
-                   times its angles) has no such angles in it.
+                   exactly, where a double does (else as under ``eulerseq``).
+``eulerseq``       converted: an element's ``euler``, where no class orients
+                   it, becomes exactly the ``quat`` MuJoCo compiles from it.
+                   Otherwise (in a ``<default>``, on a ``<replicate>``, or where
+                   a class gives the element an orientation) it is rewritten in
+                   the parent's sequence: the same notation, so what an element
+                   overrides of its class stays as it was in MuJoCo 3.9 (which
+                   prefers a class's ``euler`` to an element's ``quat``) and 4.0
+                   alike; the quaternion agrees to about 1e-16, 1e-11 near gimbal
+                   lock. Refused where the parent's sequence cannot say it: it
+                   repeats an axis, or a ``<replicate>`` (which turns copy ``i``
+                   by ``i`` times its angles) has no such angles in it.
 ``autolimits``     carried: ``limited``, ``actuatorfrclimited``, ``ctrllimited``,
                    ``forcelimited``, ``actlimited`` written where unset or auto.
 ``alignfree``      carried: ``align`` written on free joints. Refused for a
@@ -80,7 +84,9 @@ from mjcf_model.transforms.composition.compiler_settings import (
 )
 from mjcf_model.transforms.composition.inertia import Changes, inertia_kept
 from mjcf_model.transforms.composition.rotations import (
+    ORIENTATIONS,
     euler_angles,
+    euler_product,
     euler_quat,
     in_unit,
     joint_radians,
@@ -153,7 +159,7 @@ class _Rewriter:
             return element
         changes: Changes = {}
         if {"angle", "eulerseq"} & self.differing and "euler" in spec.attributes:
-            changes.update(self.orientation(element))
+            changes.update(self.orientation(element, ancestors, spec.key))
         if "angle" in self.differing and spec.key == "body/joint":
             changes.update(self.joint_angles(element, ancestors))
         if "autolimits" in self.differing and not spec.key.startswith("default/"):
@@ -164,21 +170,51 @@ class _Rewriter:
             self.refuse_fitted(element, ancestors)
         return with_attributes(element, changes) if changes else element
 
-    def orientation(self, element: AnyElement) -> Changes:
-        """``euler`` in the parent's unit and sequence, ``axisangle`` in its unit."""
+    def orientation(
+        self, element: AnyElement, ancestors: Sequence[AnyElement], key: str
+    ) -> Changes:
+        """``euler`` in the parent's unit and sequence, or as ``quat``; ``axisangle`` in its unit.
+
+        Where the conversion is not exact (another sequence, or degrees no double
+        reads back as the radians) and no class orients the element, its turn is
+        written as ``quat`` instead: exactly the quaternion MuJoCo compiles.
+        """
         changes: Changes = {}
         euler = _numbers(element, "euler")
         if euler is not None:
             radians = [orientation_radians(v) if self.from_degrees else v for v in euler]
-            if self.mine["eulerseq"] != self.theirs["eulerseq"]:
-                radians = self.in_sequence(element, radians)
-            changes["euler"] = tuple(
-                in_unit(r, self.to_degrees, orientation_radians) for r in radians
+            converted = [in_unit(r, self.to_degrees, orientation_radians) for r in radians]
+            exact = self.mine["eulerseq"] == self.theirs["eulerseq"] and (
+                not self.to_degrees
+                or all(orientation_radians(c) == r for c, r in zip(converted, radians, strict=True))
             )
+            if not exact and self.quat_kept(element, ancestors, key):
+                changes["euler"] = None
+                changes["quat"] = euler_product(radians, self.mine["eulerseq"])
+            elif self.mine["eulerseq"] != self.theirs["eulerseq"]:
+                turned = self.in_sequence(element, radians)
+                changes["euler"] = tuple(
+                    in_unit(r, self.to_degrees, orientation_radians) for r in turned
+                )
+            else:
+                changes["euler"] = tuple(converted)
         axisangle = _numbers(element, "axisangle")
         if axisangle is not None and "angle" in self.differing:
             changes["axisangle"] = (*axisangle[:3], self.angle(axisangle[3], orientation_radians))
         return changes
+
+    def quat_kept(self, element: AnyElement, ancestors: Sequence[AnyElement], key: str) -> bool:
+        """Whether MuJoCo compiles ``element`` with its own ``quat``, whatever its MuJoCo release.
+
+        Not in a ``<default>`` (a class's ``quat`` would lose to an outer class's
+        ``euler`` in MuJoCo 3.9), not where a class orients the element (3.9
+        prefers the class's ``euler``, ``axisangle``... to the element's ``quat``),
+        and not on a ``<replicate>`` (it has no ``quat``).
+        """
+        if key.startswith("default/") or "quat" not in SCHEMA[key].attributes:
+            return False
+        given = self.classes.inherited(element, ancestors)
+        return not any(name in given for name in ORIENTATIONS)
 
     def in_sequence(self, element: AnyElement, radians: list[float]) -> list[float]:
         """The same turn in the parent's sequence.
@@ -350,8 +386,8 @@ def in_conventions(child: Mujoco, parent: Mujoco) -> Mujoco:
         >>> child = loads('<mujoco><compiler angle="radian" eulerseq="zyx"/><worldbody>'
         ...               '<body euler="1.5707963267948966 0 0"/></worldbody></mujoco>')
         >>> body = in_conventions(child, loads("<mujoco/>")).worldbody.bodies[0]
-        >>> [round(angle, 9) + 0 for angle in body.euler]
-        [0.0, 0.0, 90.0]
+        >>> body.euler, [round(c, 9) + 0 for c in body.quat]
+        (None, [0.707106781, 0.0, 0.0, 0.707106781])
 
     """
     mine, theirs = compiler_settings(child), compiler_settings(parent)

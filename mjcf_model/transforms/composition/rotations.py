@@ -13,7 +13,9 @@ import math
 from collections.abc import Callable, Sequence
 
 __all__ = [
+    "ORIENTATIONS",
     "euler_angles",
+    "euler_product",
     "euler_quat",
     "in_unit",
     "joint_radians",
@@ -21,6 +23,9 @@ __all__ = [
     "quat_distance",
     "quat_product",
 ]
+
+#: The attributes that orient a body, frame, geom, site, camera or inertial.
+ORIENTATIONS = ("quat", "axisangle", "xyaxes", "zaxis", "euler")
 
 
 def quat_product(a: Sequence[float], b: Sequence[float]) -> tuple[float, float, float, float]:
@@ -39,6 +44,28 @@ def quat_product(a: Sequence[float], b: Sequence[float]) -> tuple[float, float, 
     )
 
 
+def euler_product(angles: Sequence[float], sequence: str) -> tuple[float, ...]:
+    """The product of the turns of Euler angles in radians, before MuJoCo normalizes it.
+
+    MuJoCo multiplies this product out of ``euler`` and normalizes it once; it
+    normalizes a written ``quat`` once too, so this product written as ``quat``
+    compiles to exactly the quaternion the Euler angles compile to (normalizing
+    it here would round it a second time).
+
+    Example:
+        >>> import math
+        >>> [round(c, 6) + 0 for c in euler_product([0, 0, math.pi], "xyz")]
+        [0.0, 0.0, 0.0, 1.0]
+
+    """
+    quat: tuple[float, ...] = (1.0, 0.0, 0.0, 0.0)
+    for angle, axis in zip(angles, sequence, strict=True):
+        turn = [math.cos(angle / 2), 0.0, 0.0, 0.0]
+        turn[1 + "xyz".index(axis.lower())] = math.sin(angle / 2)
+        quat = quat_product(quat, turn) if axis.islower() else quat_product(turn, quat)
+    return quat
+
+
 def euler_quat(angles: Sequence[float], sequence: str) -> tuple[float, ...]:
     """MuJoCo's quaternion for Euler angles in radians: lower case axes turn with the frame.
 
@@ -48,11 +75,7 @@ def euler_quat(angles: Sequence[float], sequence: str) -> tuple[float, ...]:
         [0.0, 0.0, 0.0, 1.0]
 
     """
-    quat: tuple[float, ...] = (1.0, 0.0, 0.0, 0.0)
-    for angle, axis in zip(angles, sequence, strict=True):
-        turn = [math.cos(angle / 2), 0.0, 0.0, 0.0]
-        turn[1 + "xyz".index(axis.lower())] = math.sin(angle / 2)
-        quat = quat_product(quat, turn) if axis.islower() else quat_product(turn, quat)
+    quat = euler_product(angles, sequence)
     norm = math.sqrt(sum(c * c for c in quat))
     return tuple(c / norm for c in quat)
 
