@@ -34,6 +34,7 @@ from mjcf_model.nodes.body import Body, Frame, Worldbody
 from mjcf_model.nodes.compiler import Compiler
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.transforms.composition.compiler_settings import compiler_settings
+from mjcf_model.transforms.composition.rotations import ORIENTATIONS
 from mjcf_model.tree.traversal import with_children
 
 if TYPE_CHECKING:
@@ -54,8 +55,6 @@ Vector = npt.NDArray[np.float64]
 
 #: The ``<key>`` attributes that hold a part's state, in the order they are written.
 KEY_ATTRIBUTES = ("qpos", "qvel", "act", "ctrl", "mpos", "mquat")
-#: The attributes that place or orient a frame.
-_FRAME_POSE = ("pos", "quat", "axisangle", "xyaxes", "zaxis", "euler")
 
 
 @attrs.frozen
@@ -247,7 +246,7 @@ def pose_of_frames(model: Mujoco, frames: Sequence[Frame]) -> Pose:
     settings = compiler_settings(model)
     inside: list[Node] = [Body(name="placed")]
     for frame in reversed(frames):
-        pose = {a: get_attribute(frame, a) for a in _FRAME_POSE}
+        pose = {a: get_attribute(frame, a) for a in ("pos", *ORIENTATIONS)}
         written = with_attributes(Frame(), {a: v for a, v in pose.items() if v is not None})
         inside = [with_children(written, inside)]
     probe = Mujoco(

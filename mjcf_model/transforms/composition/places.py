@@ -27,6 +27,7 @@ from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, Node, get_attribute, with_attributes
 from mjcf_model.nodes.body import Frame
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.transforms.composition.rotations import ORIENTATIONS
 from mjcf_model.tree.ancestry import Ancestors
 from mjcf_model.tree.defaults import DefaultClasses
 from mjcf_model.tree.traversal import keyed_walk, with_children
@@ -37,8 +38,6 @@ __all__ = ["AttachKind", "AttachPoint", "Where", "attach_point", "placement_fram
 #: The kinds of parent element a child can be attached at.
 AttachKind = Literal["body", "frame", "site"]
 
-#: The attributes that orient a site or a frame (at most one is written).
-_ORIENTATIONS = ("quat", "axisangle", "xyaxes", "zaxis", "euler")
 #: Schema keys of the elements a child can be attached at.
 _ATTACH_KEYS = {"body": "body", "body/frame": "frame", "body/site": "site"}
 
@@ -158,7 +157,7 @@ def _frame_at(pos: Value | None, orientation: Mapping[str, Value]) -> Frame:
 
 def _written_orientation(element: AnyElement) -> dict[str, Value]:
     """The orientation attribute ``element`` writes itself (empty when none)."""
-    found = {attribute: get_attribute(element, attribute) for attribute in _ORIENTATIONS}
+    found = {attribute: get_attribute(element, attribute) for attribute in ORIENTATIONS}
     return {attribute: value for attribute, value in found.items() if value is not None}
 
 
