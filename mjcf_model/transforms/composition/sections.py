@@ -81,8 +81,10 @@ def check_collisions(declared: dict[str, set[str]], theirs: Mapping[str, Collect
         listed = "; ".join(
             f"{namespace}: {', '.join(names)}" for namespace, names in clashes.items()
         )
+        merge = " (or keys of one name with keyframes='merged')" if "key" in clashes else ""
         raise MjcfValueError(
-            f"the child declares names the parent already has ({listed}); attach it with a prefix"
+            f"the child declares names the parent already has ({listed}); "
+            f"attach it with a prefix{merge}"
         )
 
 
