@@ -22,7 +22,6 @@ MuJoCo rejects the model: XML Error: unknown default class name 'x'
 
 from __future__ import annotations
 
-import re
 from typing import TYPE_CHECKING
 
 import attrs
@@ -37,11 +36,6 @@ if TYPE_CHECKING:
     from mjcf_model.files.compiling import Bundle
 
 __all__ = ["Complaint", "compile_error"]
-
-#: MuJoCo's last line: the element it was reading, and its line in the text it was given.
-_ELEMENT_LINE = re.compile(
-    r"\n\s*Element (?:name '(?P<name>.*)', id \d+|'(?P<tag>[^']*)'), line (?P<line>\d+)\s*\Z"
-)
 
 
 @attrs.frozen
@@ -74,19 +68,35 @@ class Complaint:
             'j'
             >>> Complaint.parse("Error: no mass").line is None
             True
+            >>> Complaint.parse("Error: bad key\nElement name '', id 0").element
+            "Element name '', id 0"
 
         """
         message = message.strip()
-        found = _ELEMENT_LINE.search(message)
-        if found is None:
+        cut = message.rfind("\nElement ")
+        if cut < 0:
             return cls(what=message, line=None, tag=None, name=None, element="")
-        element = found.group(0).strip().rsplit(", line ", 1)[0]
+        last = message[cut + 1 :].strip()
+        head, _, line = last.rpartition(", line ")
+        if not (head and line.isdigit()):
+            head, line = last, ""
+        name = tag = None
+        if head.startswith("Element name '"):
+            name, _, number = head[len("Element name '") :].rpartition("', id ")
+            if not number.isdigit():
+                cut = -1
+        elif head.startswith("Element '") and head.endswith("'") and len(head) > 10:
+            tag = head[len("Element '") : -1]
+        else:
+            cut = -1
+        if cut < 0:  # no element named as MuJoCo names one: its words are the whole message
+            return cls(what=message, line=None, tag=None, name=None, element="")
         return cls(
-            what=message[: found.start()].strip(),
-            line=int(found.group("line")),
-            tag=found.group("tag"),
-            name=found.group("name"),
-            element=element,
+            what=message[:cut].strip(),
+            line=int(line) if line else None,
+            tag=tag,
+            name=name,
+            element=head,
         )
 
 
@@ -113,8 +123,9 @@ def compile_error(message: str, model: Mujoco, bundle: Bundle, text: str) -> Mjc
     """
     complaint = Complaint.parse(message)
     if complaint.line is None:
+        named = f" ({complaint.element})" if complaint.element else ""
         return MjcfCompileError(
-            f"MuJoCo rejects the model (its message names no element): {complaint.what}",
+            f"MuJoCo rejects the model (MuJoCo names no line): {complaint.what}{named}",
             file=_main_file(model),
         )
     found = _standing_on(text, complaint)
@@ -143,7 +154,8 @@ def _standing_on(text: str, complaint: Complaint) -> list[tuple[Path, AnyElement
     from serializers import loads
 
     data = text.encode("utf-8", "surrogatepass")
-    assert complaint.line is not None
+    if complaint.line is None or complaint.line < 1:  # an included file's line is 0
+        return []
     begin = 0
     for _ in range(complaint.line - 1):
         begin = data.find(b"\n", begin) + 1
