@@ -305,7 +305,7 @@ class Reader:
             )
         try:
             self.raw = raw
-            self.origin = SourceText(raw)
+            self.origin = SourceText(raw, self.filename)
             self.origin.values = self.known
             if not self.origin.raw:
                 self.ascii = self.origin.text

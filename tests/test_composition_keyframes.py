@@ -158,7 +158,7 @@ def test_keyframe_policy_and_free_parts_in_bodies_are_refused_with_the_way_out()
     with pytest.raises(MjcfValueError, match="at the world, or at a frame or a site"):
         attach(parent, floater, at="mount", prefix="f_")
     home = loads('<mujoco><keyframe><key name="home"/></keyframe></mujoco>')
-    with pytest.raises(MjcfValueError, match="key: home.*keyframes='merged'"):
+    with pytest.raises(MjcfValueError, match=r"key: home.*keyframes='merged'"):
         attach(home, home)
 
 

@@ -22,7 +22,8 @@ from typing import TYPE_CHECKING
 
 import attrs
 
-from mjcf_model.errors import MjcfAssetError, MjcfCompileError, MjcfIncludeError
+from mjcf_model.errors import MjcfAssetError, MjcfIncludeError
+from mjcf_model.files.compile_errors import compile_error
 from mjcf_model.files.provenance import FileReference, Folders, with_folders, with_paths
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tree.traversal import keyed_walk
@@ -189,7 +190,9 @@ def compiled(model: Mujoco, *, assets: Mapping[str, bytes] | None = None) -> muj
             with the compiler folder, ``"meshes/box.stl"``).
 
     Raises:
-        MjcfCompileError: MuJoCo rejects the model; the message is MuJoCo's.
+        MjcfCompileError: MuJoCo rejects the model; the message is MuJoCo's, after the
+            file, line and element path of the element it rejects
+            (:mod:`mjcf_model.files.compile_errors`).
         MjcfAssetError: A file cannot be read and is not in ``assets``.
 
     Example:
@@ -208,7 +211,8 @@ def compiled(model: Mujoco, *, assets: Mapping[str, bytes] | None = None) -> muj
     from serializers import dumps
 
     bundle = bundled(model, assets=assets)
+    text = dumps(bundle.model)
     try:
-        return mujoco.MjModel.from_xml_string(dumps(bundle.model), bundle.files)
+        return mujoco.MjModel.from_xml_string(text, bundle.files)
     except ValueError as error:
-        raise MjcfCompileError(f"MuJoCo rejects the model: {str(error).strip()}") from None
+        raise compile_error(str(error), model, bundle, text) from None

@@ -37,9 +37,12 @@ class SourceText:
 
     """
 
-    __slots__ = ("details", "document", "raw", "root_begin", "text", "values")
+    __slots__ = ("details", "document", "filename", "raw", "root_begin", "text", "values")
 
-    def __init__(self, raw: bytes) -> None:
+    def __init__(self, raw: bytes, filename: str | None = None) -> None:
+        #: The file the text was read from, as the reader was given it (``"<string>"`` for
+        #: text), or ``None``: where errors about its elements point.
+        self.filename = filename
         #: The bytes read, when they are not ASCII (offsets are byte offsets), else ``b""``.
         self.raw = b"" if raw.isascii() else raw
         #: The text, when the bytes are ASCII (byte offsets are then text offsets).
@@ -60,6 +63,7 @@ class SourceText:
         return state
 
     def __setstate__(self, state: dict[str, Any]) -> None:
+        self.filename = None  # pickled before files were recorded
         for name, value in state.items():
             setattr(self, name, value)
 
@@ -68,6 +72,20 @@ class SourceText:
         if self.raw:
             return self.raw[begin:after].decode("utf-8", "surrogatepass")
         return self.text[begin:after]
+
+    def line(self, offset: int) -> int:
+        r"""The 1-based line the byte ``offset`` stands on, as MuJoCo counts lines.
+
+        Worked out when asked for (for an error), never while reading.
+
+        Example:
+            >>> SourceText(b"<a>\n  <b/>\n</a>").line(6)
+            2
+
+        """
+        if self.raw:
+            return self.raw.count(b"\n", 0, offset) + 1
+        return self.text.count("\n", 0, offset) + 1
 
     def end_tag_begin(self, begin: int, after: int) -> int:
         """Where the end tag of the element between two offsets begins."""

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any, Literal
 
 import attrs
 
-from mjcf_model.errors import MjcfError
+from mjcf_model.errors import MjcfCompileError, MjcfError
 from mjcf_model.files.compiling import compiled
 from mjcf_model.tools.compare import model_differences, path_fields
 
@@ -136,7 +136,7 @@ def _checked(
     try:
         model = original()
     except ValueError as error:
-        return CheckResult(path=name, status="not-compiled", message=str(error).strip())
+        return CheckResult(path=name, status="not-compiled", message=_rejection(str(error), loaded))
     try:
         written = dumps(loaded())
         differences = written_differences(model, written, beside or name)
@@ -144,6 +144,25 @@ def _checked(
         return CheckResult(path=name, status="error", message=str(error))
     status: Status = "different" if differences else "identical"
     return CheckResult(path=name, status=status, differences=differences)
+
+
+def _rejection(message: str, loaded: Callable[[], Mujoco]) -> str:
+    """MuJoCo's ``message``, after the file, line and element path of what it rejects.
+
+    MuJoCo names a line of the file it read (of an included file: line 0); the
+    model mjcf-model reads is compiled again, so that the error names the file,
+    line and element path (:func:`mjcf_model.compiled`), if MuJoCo says the same of it.
+    """
+    from mjcf_model.files.compile_errors import Complaint
+
+    plain = f"MuJoCo rejects the model: {message.strip()}"
+    try:
+        compiled(loaded())
+    except MjcfCompileError as error:
+        return str(error) if Complaint.parse(message).what in error.detail else plain
+    except MjcfError:  # mjcf-model cannot read it either: MuJoCo's words alone
+        return plain
+    return plain
 
 
 def written_differences(original: Any, written: str, path: str) -> tuple[str, ...]:

@@ -44,7 +44,7 @@ def _report(result: CheckResult, out: TextIO, verbose: bool) -> None:
         fields = ", ".join(result.differences)
         out.write(f"DIFFERENT     {result.path}\n              fields: {fields}\n")
     elif result.status == "not-compiled":
-        out.write(f"not compiled  {result.path}\n              MuJoCo: {result.message}\n")
+        out.write(f"not compiled  {result.path}\n              {result.message}\n")
     else:
         out.write(f"ERROR         {result.path}\n              {result.message}\n")
 

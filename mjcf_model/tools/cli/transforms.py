@@ -78,7 +78,7 @@ def _checked(model: AnyElement) -> Mujoco:
     try:
         compiled(_model(model))
     except MjcfCompileError as error:
-        raise Failed(f"MuJoCo rejects the result, so it is not written: {error.detail}") from None
+        raise Failed(f"{error}; the result is not written") from None
     return _model(model)
 
 

@@ -301,7 +301,8 @@ class _Composer:
         check_collisions(self.declared, theirs)
         for namespace, found in theirs.items():
             self.declared.setdefault(namespace, set()).update(found)
-        if (self.scene_keys is not None or self.parent_keys or "keyframe" in sections) and adds_state(child):
+        keys = self.scene_keys is not None or self.parent_keys or "keyframe" in sections
+        if keys and adds_state(child):
             self._merge_keys(original, child)
         main = self._add_defaults(sections.get("default", []), prefix)
         for tag in SETTINGS:
