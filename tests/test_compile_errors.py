@@ -231,7 +231,7 @@ def run(*arguments: str) -> subprocess.CompletedProcess[str]:
 
 
 def test_cli_verbs_print_the_location(tmp_path: Path) -> None:
-    """check, compose and render print file:line: element path: MuJoCo's words."""
+    """check, compose, render and info print file:line: element path: MuJoCo's words."""
     bad, path = BAD["reversed range"]
     text = ROBOT.format(bad=bad)
     (tmp_path / "robots").mkdir()
@@ -253,3 +253,9 @@ def test_cli_verbs_print_the_location(tmp_path: Path) -> None:
     assert (
         rendered.stderr == f"mjcf-model render: {where}{path}: MuJoCo rejects the model: {words}\n"
     )
+    informed = run("info", str(robot))
+    assert informed.returncode == 0, informed.stderr
+    assert informed.stdout.endswith(
+        f"compiles: no: {where}{path}: MuJoCo rejects the model: {words}\n"
+    )
+    assert run("info", str(scene)).stdout.endswith("compiles: yes\n")

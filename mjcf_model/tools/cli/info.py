@@ -1,5 +1,8 @@
 """``mjcf-model info FILE``: what a model holds, and one element's attributes after defaults.
 
+The summary ends with whether MuJoCo compiles the model, and if not, the file,
+line and element path of what it rejects, and MuJoCo's reason.
+
 Example:
     >>> import pathlib, tempfile
     >>> from mjcf_model.tools.cli import main
@@ -21,6 +24,7 @@ import sys
 from collections.abc import Mapping
 from typing import Any
 
+from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tools.cli.common import Failed, add_model_argument, guarded, read_model
 from mjcf_model.tools.info import ModelSummary, effective_attributes, model_summary
 
@@ -41,7 +45,20 @@ def _info(arguments: argparse.Namespace) -> int:
         return 0
     summary = model_summary(model)
     sys.stdout.write(_summary_text(summary, arguments.defaults))
+    sys.stdout.write(f"compiles: {_compiles(model)}\n")
     return 0
+
+
+def _compiles(model: Mujoco) -> str:
+    """``yes``, or ``no:`` and where and why MuJoCo rejects ``model``."""
+    from mjcf_model.errors import MjcfAssetError, MjcfCompileError
+    from mjcf_model.files.compiling import compiled
+
+    try:
+        compiled(model)
+    except (MjcfCompileError, MjcfAssetError) as error:
+        return f"no: {error}"
+    return "yes"
 
 
 def _summary_text(summary: ModelSummary, defaults: bool) -> str:
