@@ -174,3 +174,17 @@ def test_dropped_child_settings_warn_by_name() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         attach(parent, loads('<mujoco><option timestep="0.004"/></mujoco>'))
+
+
+def test_keys_that_size_nkey_allocates_are_each_parts_keys() -> None:
+    """A part whose keys come only from ``<size nkey>`` brings them, at its placed initial state."""
+    part = loads(
+        '<mujoco><size nkey="1"/><worldbody><body pos="0 0 1"><freejoint/><geom size=".1"/>'
+        "</body></worldbody></mujoco>"
+    )
+    scene = compiled(
+        attach(attach(loads("<mujoco/>"), part, prefix="a_"), part, prefix="b_", pos=[2, 0, 0])
+    )
+    assert scene.nkey == 2
+    for key in range(2):
+        assert np.array_equal(scene.key_qpos[key], scene.qpos0)

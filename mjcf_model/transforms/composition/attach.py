@@ -40,6 +40,7 @@ from mjcf_model.transforms.composition.keyframes import (
     adds_state,
     attach_pose,
     check_policy,
+    has_keys,
     keys_of,
 )
 from mjcf_model.transforms.composition.main_defaults import CLASSED_SECTIONS, with_main_as_class
@@ -301,7 +302,7 @@ class _Composer:
         check_collisions(self.declared, theirs)
         for namespace, found in theirs.items():
             self.declared.setdefault(namespace, set()).update(found)
-        keys = self.scene_keys is not None or self.parent_keys or "keyframe" in sections
+        keys = self.scene_keys is not None or self.parent_keys or has_keys(child)
         if keys and adds_state(child):
             self._merge_keys(original, child)
         main = self._add_defaults(sections.get("default", []), prefix)
@@ -331,7 +332,7 @@ class _Composer:
         #: The tags of the parent's sections.
         self.parent_tags = set(by_tag(parent))
         #: Whether the parent has keyframes (then every child is merged key by key).
-        self.parent_keys = bool(keys_of(parent))
+        self.parent_keys = has_keys(parent)
 
     def _in_parent_terms(self, child: Mujoco) -> Mujoco:
         """The child with its paths and values meaning under the parent's ``<compiler>``.

@@ -43,6 +43,7 @@ import numpy as np
 
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, Node, get_attribute, with_attributes
+from mjcf_model.nodes.keyframe import Key
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.transforms.composition.part_states import (
     IDENTITY,
@@ -57,7 +58,7 @@ from mjcf_model.transforms.composition.places import AttachPoint
 from mjcf_model.tree.defaults import DefaultClasses
 from mjcf_model.tree.joints import joint_type
 from mjcf_model.tree.traversal import keyed_walk
-from mjcf_model.values import Value
+from mjcf_model.values import Value, numbers_of
 
 __all__ = [
     "IDENTITY",
@@ -67,6 +68,7 @@ __all__ = [
     "adds_state",
     "attach_pose",
     "check_policy",
+    "has_keys",
     "keys_of",
 ]
 
@@ -95,10 +97,27 @@ def keys_of(model: Mujoco) -> list[AnyElement]:
     ]
 
 
+def has_keys(model: Mujoco) -> bool:
+    """Whether MuJoCo gives ``model`` keyframes: ``<key>`` elements or ``<size nkey>``.
+
+    Example:
+        >>> from serializers import loads
+        >>> has_keys(loads('<mujoco><size nkey="1"/></mujoco>')), has_keys(loads("<mujoco/>"))
+        (True, False)
+
+    """
+    if keys_of(model):
+        return True
+    sizes = [numbers_of(get_attribute(s, "nkey")) for s in model.elements if s.tag == "size"]
+    return any(size and size[0] > 0 for size in sizes)
+
+
 def adds_state(model: Mujoco) -> bool:
     """Whether ``model`` has anything a key sets: joints, mocap bodies, actuators or keys."""
     for element, key, _ in keyed_walk(model):
         if key in _JOINTS or key in _HIDDEN or key == "keyframe/key":
+            return True
+        if key == "size" and get_attribute(element, "nkey") is not None:
             return True
         if key == "body" and get_attribute(element, "mocap") in (True, "true"):
             return True
@@ -134,7 +153,7 @@ class SceneKeys:
     def of(cls, parent: Mujoco, holder: AnyElement | None) -> SceneKeys:
         """The keys of ``parent``, ready for parts attached at ``holder`` (``None``: the world)."""
         states = PartStates.of(parent)
-        nodes = keys_of(parent)
+        nodes = _padded(keys_of(parent), len(states.keys))
         keys = [
             _Keyed(node=node, name=_name(node), state=state)
             for node, state in zip(nodes, states.keys, strict=True)
@@ -165,6 +184,7 @@ class SceneKeys:
 
         """
         part = part.placed(pose)
+        names, nodes = _padded(names, len(part.keys)), _padded(nodes, len(part.keys))
         own = [_name(key) for key in names]
         taken: set[int] = set()
         for keyed in self.keys:
@@ -257,6 +277,11 @@ def attach_pose(
             "or a site of the world body"
         )
     return pose_of_frames(parent, point.frames)
+
+
+def _padded(keys: Sequence[AnyElement], count: int) -> list[AnyElement]:
+    """``keys``, then an empty ``<key>`` for each key MuJoCo adds (``<size nkey>``)."""
+    return [*keys, *(Key() for _ in range(count - len(keys)))]
 
 
 def _name(key: AnyElement) -> str | None:
