@@ -19,7 +19,7 @@ from mjcf_model.tools.compare import compile_text_beside
 from mjcf_model.transforms.scaling.scaled import MassPolicy, scaled
 from serializers import dumps, from_etree, load, loads
 from tests.conftest import MUJOCO_VERSION
-from tests.oracles import mass_problems, scaled_problems
+from tests.oracles import friction_problems, mass_problems, scaled_problems
 
 FIXTURES = Path(__file__).parent / "fixtures" / "scaling"
 
@@ -60,11 +60,13 @@ def _scaled_copy(path: Path, factor: float, mass: MassPolicy = "keep") -> mujoco
 def _length_problems(original: mujoco.MjModel, changed: mujoco.MjModel, factor: float) -> list[str]:
     """The length arrays of ``changed`` that are not the original's times ``factor``."""
     if MESH_ARRAYS_COMPARABLE:
-        return scaled_problems(original, changed, factor, LENGTH_FIELDS)
+        problems = scaled_problems(original, changed, factor, LENGTH_FIELDS)
+        return problems + friction_problems(original, changed, factor)
     fields = [f for f in LENGTH_FIELDS if f not in ("mesh_vert", "geom_size")]
     problems = scaled_problems(original, changed, factor, fields)
     rows = original.geom_type != mujoco.mjtGeom.mjGEOM_MESH
     before, after = original.geom_size[rows], changed.geom_size[rows]
+    problems += friction_problems(original, changed, factor)
     return problems + ([] if np.allclose(after, factor * before, rtol=1e-9, atol=0) else ["size"])
 
 
