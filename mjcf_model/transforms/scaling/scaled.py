@@ -110,7 +110,7 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     Raises:
         MjcfValueError: for a factor that is not positive, a kept ``<include>``, an
             ``<attach>`` (the attached model is another file: scale it first), or a
-            mesh or geom made by a plugin other than MuJoCo's torus and bowl SDFs.
+            mesh or geom made by a plugin other than MuJoCo's torus, bowl and gear SDFs.
 
     Example:
         >>> from mjcf_model import Inertial
