@@ -48,6 +48,24 @@ def scaled_problems(
     return problems
 
 
+def friction_problems(original: Any, changed: Any, factor: float) -> list[str]:
+    """The frictions of ``changed`` whose sliding values differ or whose others are not scaled.
+
+    A geom's torsional and rolling coefficients, and a pair's spin and rolling ones,
+    must be the original's times ``factor``; the sliding (tangential) ones unchanged.
+    """
+    import numpy as np
+
+    problems = []
+    for field, start in (("geom_friction", 1), ("pair_friction", 2)):
+        before, after = np.asarray(getattr(original, field)), np.asarray(getattr(changed, field))
+        if before.shape != after.shape or not np.array_equal(after[:, :start], before[:, :start]):
+            problems.append(f"{field} sliding")
+        elif not np.allclose(after[:, start:], factor * before[:, start:], rtol=1e-9, atol=0):
+            problems.append(f"{field} torsional and rolling")
+    return problems
+
+
 #: Whether MuJoCo's principal inertias of a mesh body are comparable one by one after
 #: scaling. Before 4.0 they come out permuted or perturbed in the eighth digit for
 #: nearly symmetric meshes (measured on MuJoCo 3.9.0, 13 corpus models, with equal

@@ -21,7 +21,7 @@ from mjcf_model.transforms.scaling.scaled import scaled
 from mjcf_model.tree.traversal import map_tree
 from serializers import dumps, load, loads, to_dict
 from tests.conftest import MUJOCO_VERSION, compiling_corpus, corpus_id
-from tests.oracles import mass_problems, scaled_problems, trees_close
+from tests.oracles import friction_problems, mass_problems, scaled_problems, trees_close
 
 CORPUS = compiling_corpus()
 
@@ -60,6 +60,7 @@ MESH_ARRAYS_COMPARABLE = MUJOCO_VERSION >= (4, 0)
 def _doubled_problems(original: mujoco.MjModel, changed: mujoco.MjModel) -> list[str]:
     meshless = [f for f in LENGTH_FIELDS if f not in ("mesh_vert", "geom_size")]
     problems = scaled_problems(original, changed, 2.0, meshless)
+    problems += friction_problems(original, changed, 2.0)
     on_mesh = original.geom_type == mujoco.mjtGeom.mjGEOM_MESH
     rows = np.ones_like(on_mesh) if MESH_ARRAYS_COMPARABLE else ~on_mesh
     if not np.allclose(changed.geom_size[rows], 2 * original.geom_size[rows], rtol=1e-9, atol=0):

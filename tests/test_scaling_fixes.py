@@ -19,15 +19,16 @@ from mjcf_model.tools.compare import compile_text_beside
 from mjcf_model.transforms.scaling.scaled import MassPolicy, scaled
 from serializers import dumps, from_etree, load, loads
 from tests.conftest import MUJOCO_VERSION
-from tests.oracles import mass_problems, scaled_problems
+from tests.oracles import friction_problems, mass_problems, scaled_problems
 
 FIXTURES = Path(__file__).parent / "fixtures" / "scaling"
 
-#: The fixtures the scale oracle runs on (``attach.xml`` and ``sdf_fixed_shape.xml`` are refused).
+#: The fixtures the scale oracle runs on (``attach.xml`` and ``sdf_fixed_shape.xml`` are
+#: refused; ``sdf_gear.xml`` has its own oracle, below).
 SCALABLE = ("mass.xml", "flexcomp.xml", "sdf.xml", "includes.xml")
 
 #: Every top-level fixture of the folder.
-ALL_FIXTURES = (*SCALABLE, "attach.xml", "sdf_fixed_shape.xml")
+ALL_FIXTURES = (*SCALABLE, "attach.xml", "sdf_fixed_shape.xml", "sdf_gear.xml")
 
 #: The compiled lengths that must come out exactly multiplied by the factor.
 LENGTH_FIELDS = (
@@ -60,11 +61,13 @@ def _scaled_copy(path: Path, factor: float, mass: MassPolicy = "keep") -> mujoco
 def _length_problems(original: mujoco.MjModel, changed: mujoco.MjModel, factor: float) -> list[str]:
     """The length arrays of ``changed`` that are not the original's times ``factor``."""
     if MESH_ARRAYS_COMPARABLE:
-        return scaled_problems(original, changed, factor, LENGTH_FIELDS)
+        problems = scaled_problems(original, changed, factor, LENGTH_FIELDS)
+        return problems + friction_problems(original, changed, factor)
     fields = [f for f in LENGTH_FIELDS if f not in ("mesh_vert", "geom_size")]
     problems = scaled_problems(original, changed, factor, fields)
     rows = original.geom_type != mujoco.mjtGeom.mjGEOM_MESH
     before, after = original.geom_size[rows], changed.geom_size[rows]
+    problems += friction_problems(original, changed, factor)
     return problems + ([] if np.allclose(after, factor * before, rtol=1e-9, atol=0) else ["size"])
 
 
@@ -154,12 +157,66 @@ def test_sdf_settings_are_scaled_instead_of_the_mesh_scale() -> None:
     mujoco.MjModel.from_xml_string(text)  # MuJoCo refuses a scale on an SDF mesh
 
 
-def test_sdf_plugin_with_fixed_dimensions_is_refused() -> None:
-    """MuJoCo's nut SDF compiles but has no length settings: scaling it names the plugin."""
-    path = FIXTURES / "sdf_fixed_shape.xml"
-    assert mujoco.MjModel.from_xml_path(str(path)).nmesh == 1
-    with pytest.raises(MjcfValueError, match=r"'mujoco\.sdf\.nut'.*fixed"):
-        scaled(load(path), 2)
+@pytest.mark.parametrize("plugin", ["nut", "bolt"])
+def test_sdf_plugin_with_fixed_dimensions_is_refused(plugin: str) -> None:
+    """MuJoCo's nut and bolt SDFs compile but have no length settings: scaling names them."""
+    text = (FIXTURES / "sdf_fixed_shape.xml").read_text().replace("sdf.nut", f"sdf.{plugin}")
+    assert mujoco.MjModel.from_xml_string(text).nmesh == 1
+    with pytest.raises(MjcfValueError, match=rf"'mujoco\.sdf\.{plugin}'.*fixed"):
+        scaled(loads(text), 2)
+
+
+#: The gear SDF's settings in the order MuJoCo keeps them, with its defaults
+#: (``innerdiameter`` below zero: derived from the diameter), and whether each is a length.
+_GEAR_SETTINGS = (
+    ("alpha", 0.0, False),
+    ("diameter", 2.8, True),
+    ("teeth", 25.0, False),
+    ("thickness", 0.2, True),
+    ("innerdiameter", -1.0, True),
+)
+
+
+def _gear_settings(model: mujoco.MjModel) -> np.ndarray:
+    """Each gear instance's settings as the plugin reads them, defaults filled in."""
+    values = []
+    for start in model.plugin_attradr:
+        fields = model.plugin_attr[start:].tobytes().decode().split("\0")[: len(_GEAR_SETTINGS)]
+        values.append(
+            [float(f) if f else d for f, (_, d, _) in zip(fields, _GEAR_SETTINGS, strict=True)]
+        )
+    return np.array(values)
+
+
+@pytest.mark.parametrize("factor", [2.0, 0.5])
+def test_gear_sdf_scales_through_its_length_settings(factor: float) -> None:
+    """The gear's diameter, thickness and bore scale, and with them the shape MuJoCo builds.
+
+    Its bounding boxes (the plugin's, and the mesh MuJoCo makes of it) and bounding
+    spheres scale exactly. The mesh itself is rebuilt: MuJoCo meshes the gear with a
+    numerical gradient, so vertex counts and volumes differ slightly (measured on
+    MuJoCo 4.0.0 and 3.9.0: volume within 0.4% of ``factor**3``).
+    """
+    path = FIXTURES / "sdf_gear.xml"
+    original = mujoco.MjModel.from_xml_path(str(path))
+    changed = _scaled_copy(path, factor)
+    lengths = np.array([length for _, _, length in _GEAR_SETTINGS])
+    before, after = _gear_settings(original), _gear_settings(changed)
+    factors = np.where(lengths & (before >= 0), factor, 1.0)  # a negative bore stays derived
+    assert np.allclose(after, factors * before, rtol=1e-12, atol=0)
+    assert scaled_problems(original, changed, factor, ["geom_aabb", "geom_rbound"]) == []
+    assert np.allclose(_mesh_boxes(changed), factor * _mesh_boxes(original), rtol=1e-6, atol=0)
+    assert np.allclose(changed.body_mass, original.body_mass, rtol=5e-3, atol=0)
+    assert friction_problems(original, changed, factor) == []
+
+
+def _mesh_boxes(model: mujoco.MjModel) -> np.ndarray:
+    """Each mesh's lowest and highest vertex coordinates."""
+    boxes = []
+    for start, count in zip(model.mesh_vertadr, model.mesh_vertnum, strict=True):
+        vertices = model.mesh_vert[start : start + count]
+        boxes.append(np.concatenate([vertices.min(axis=0), vertices.max(axis=0)]))
+    return np.array(boxes)
 
 
 @pytest.mark.parametrize("owner", ["mesh", "geom"])

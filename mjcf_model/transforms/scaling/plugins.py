@@ -4,12 +4,15 @@ A mesh or geom made by an SDF plugin (``<mesh><plugin instance="..."/></mesh>``)
 refuses a ``scale`` attribute: its size is in the plugin's settings
 (``<config key=... value=...>``, on an ``<instance>`` under ``<extension>`` or
 inline). Of the SDF plugins MuJoCo ships (3.9 and 4.0: ``mujoco.sdf.torus``,
-``bowl``, ``bolt``, ``nut`` and ``gear``), only the torus and the bowl have
+``bowl``, ``gear``, ``bolt`` and ``nut``), the torus, the bowl and the gear have
 their lengths in settings; they scale by the mean factor, and a setting not
-written is written with the plugin's default, scaled. The bolt, nut and gear
-have their dimensions fixed in the plugin's code (their only settings are a
-thread radius and an angle), so scaling a model that makes a mesh or geom with
-them, or with any other plugin, raises an error naming the plugin.
+written is written with the plugin's default, scaled. The gear's
+``innerdiameter`` has no such default: unwritten or negative, MuJoCo derives the
+bore from ``diameter`` (so it scales with it), and a written one scales keeping
+its sign. Its ``teeth`` and ``alpha`` (an angle) stay. The bolt and nut have
+their dimensions fixed in the plugin's code (their only setting is a thread
+radius), so scaling a model that makes a mesh or geom with them, or with any
+other plugin, raises an error naming the plugin.
 
 >>> SDF_LENGTHS["mujoco.sdf.torus"]
 mappingproxy({'radius1': 0.35, 'radius2': 0.15})
@@ -38,16 +41,20 @@ __all__ = [
 ]
 
 #: The SDF plugins whose shape scales through their settings: each length
-#: setting and its default (from the plugins' sources, as shipped in 3.9 and 4.0).
-SDF_LENGTHS: Mapping[str, Mapping[str, float]] = MappingProxyType(
+#: setting and its default (from the plugins' sources, as shipped in 3.9 and 4.0),
+#: ``None`` for one MuJoCo derives from the others when it is not written.
+SDF_LENGTHS: Mapping[str, Mapping[str, float | None]] = MappingProxyType(
     {
         "mujoco.sdf.torus": MappingProxyType({"radius1": 0.35, "radius2": 0.15}),
         "mujoco.sdf.bowl": MappingProxyType({"height": 0.4, "radius": 1.0, "thickness": 0.02}),
+        "mujoco.sdf.gear": MappingProxyType(
+            {"diameter": 2.8, "thickness": 0.2, "innerdiameter": None}
+        ),
     }
 )
 
 #: MuJoCo's SDF plugins whose dimensions are fixed in code.
-_FIXED_SHAPES = frozenset({"mujoco.sdf.bolt", "mujoco.sdf.nut", "mujoco.sdf.gear"})
+_FIXED_SHAPES = frozenset({"mujoco.sdf.bolt", "mujoco.sdf.nut"})
 
 #: The schema keys of elements that make a shape with a plugin.
 _SHAPE_USES = frozenset({"asset/mesh/plugin", "body/geom/plugin"})
@@ -84,7 +91,7 @@ def _refuse(plugin: str | None, owner: str) -> None:
     )
     raise MjcfValueError(
         f"cannot scale the {owner} made by plugin {plugin!r}: {why}; only "
-        f"{' and '.join(SDF_LENGTHS)} scale. Replace that shape (or scale its settings "
+        f"{', '.join(SDF_LENGTHS)} scale. Replace that shape (or scale its settings "
         "yourself and take it out of the model) before scaling"
     )
 
@@ -147,7 +154,7 @@ def with_sdf_settings(
     missing = [
         PluginConfig(key=name, value=format_value(default * context.mean))
         for name, default in defaults.items()
-        if name not in written
+        if name not in written and default is not None
     ]
     return with_children(element, [*element.children, *missing]) if missing else element
 

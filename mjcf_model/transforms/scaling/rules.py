@@ -18,6 +18,7 @@ from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, get_attribute
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.transforms.scaling.context import ScaleContext, times
+from mjcf_model.transforms.scaling.friction import friction_rule
 from mjcf_model.transforms.scaling.mass import geom_density
 from mjcf_model.transforms.scaling.pieces import (
     NO_LENGTHS,
@@ -29,7 +30,6 @@ from mjcf_model.transforms.scaling.pieces import (
     inertias,
     lengths,
     masses,
-    parts,
     points,
     with_builtin,
 )
@@ -251,7 +251,7 @@ _GEOM = combine(
     points("pos", "fromto"),
     _geom_size,
     lengths("margin", "gap"),
-    parts("friction", (1.0,), 1),
+    friction_rule("geom"),
     masses("mass"),
 )
 _SITE = combine(points("pos", "fromto"), _site_size)
@@ -265,7 +265,7 @@ _LIGHT = combine(
     _builtin_length("bulbradius", "light"),
     _builtin_length("range", "light"),
 )
-_CONTACT = combine(lengths("margin", "gap"), parts("friction", (1.0, 1.0), 2))
+_CONTACT = combine(lengths("margin", "gap"), friction_rule("pair"))
 _ACTUATOR = combine(lengths("cranklength"))
 _MESH_SCALE = with_builtin(
     "scale", "mesh", functools.partial(builtin_default, "mesh", "scale"), _per_axis

@@ -6,12 +6,14 @@ namespace table has a rule, even if it is "no lengths", so an element type MuJoC
 adds fails a test until someone decides how it scales.
 
 Uniform scaling is exact: MuJoCo compiles the result to a model whose body, geom,
-site, joint, camera and light positions, geom and site sizes, mesh vertices and
-slide-joint ranges are the original's times the factor. Where MuJoCo's built-in
-default is a non-zero length (site size, camera ``ipd``, light ``bulbradius`` and
-``range``, tendon ``width``, mesh ``scale``) and nothing in the model sets it, the
-scaled value is written out. Three per-axis factors follow robosuite's
-conventions and are an approximation (see :func:`scaled`).
+site, joint, camera and light positions, geom and site sizes, mesh vertices,
+slide-joint ranges and the torsional and rolling friction of geoms and contact
+pairs are the original's times the factor. Where MuJoCo's built-in default is a
+non-zero length (site size, camera ``ipd``, light ``bulbradius`` and ``range``,
+tendon ``width``, mesh ``scale``, torsional and rolling friction) and nothing in
+the model sets it, the scaled value is written out (friction once, in the main
+default class: :mod:`mjcf_model.transforms.scaling.friction`). Three per-axis
+factors follow robosuite's conventions and are an approximation (see :func:`scaled`).
 
 >>> from mjcf_model import Body, Geom, Joint
 >>> arm = Body(pos=[0, 0, 1], children=[Geom(type="capsule", size=[0.05, 0.2]),
@@ -33,6 +35,7 @@ import numpy.typing as npt
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, with_attributes
 from mjcf_model.transforms.scaling.context import ScaleContext
+from mjcf_model.transforms.scaling.friction import with_friction_defaults
 from mjcf_model.transforms.scaling.pieces import NO_LENGTHS
 from mjcf_model.transforms.scaling.plugins import SDF_SETTINGS_KEYS, with_sdf_settings
 from mjcf_model.transforms.scaling.rules import RULES
@@ -78,8 +81,10 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     of keyframe ``qpos``/``qvel``), geom and site sizes (by type), ``fromto``,
     mesh ``scale``, height field ``size``, slide-joint ranges and references,
     spatial tendon lengths and widths, fixed tendon lengths when all their
-    joints slide, contact margins and gaps, torsional and rolling friction
-    (they are lengths in MuJoCo), position actuators' ``ctrlrange`` on slide
+    joints slide, contact margins and gaps, the friction of geoms and contact
+    pairs but for its sliding values (torsional and rolling coefficients are
+    lengths in MuJoCo; values MuJoCo fills from its built-in defaults are
+    written, scaled), position actuators' ``ctrlrange`` on slide
     joints, crank lengths, and the same attributes in default classes. A
     ``flexcomp``'s points scale once, through ``scale`` for the ``direct``,
     ``mesh`` and ``gmsh`` types and through ``spacing`` for the generated ones;
@@ -87,8 +92,11 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     (:mod:`mjcf_model.transforms.scaling.plugins`).
 
     Args:
-        node: A model (``Mujoco``) or any element of one. Default classes and
-            MuJoCo's built-in defaults are taken into account only for a whole model.
+        node: A model (``Mujoco``) or any element of one. Default classes are
+            taken into account only for a whole model: in a part of one, an
+            element that leaves a length with a non-zero built-in default
+            unwritten (a site's size, a geom's rolling friction) gets MuJoCo's
+            default written on it, scaled, as if no class set it.
         factor: One positive number, or three (x, y, z). Per-axis scaling follows
             robosuite: points scale per axis; a size of three values per axis,
             of two (cylinder, capsule) by the mean of x and y then by z, of one
@@ -102,7 +110,7 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     Raises:
         MjcfValueError: for a factor that is not positive, a kept ``<include>``, an
             ``<attach>`` (the attached model is another file: scale it first), or a
-            mesh or geom made by a plugin other than MuJoCo's torus and bowl SDFs.
+            mesh or geom made by a plugin other than MuJoCo's torus, bowl and gear SDFs.
 
     Example:
         >>> from mjcf_model import Inertial
@@ -130,6 +138,8 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
         changed = with_attributes(element, RULES[key](element, ancestors, context))
         if key in SDF_SETTINGS_KEYS:
             return with_sdf_settings(changed, key, ancestors, context)
+        if key == "mujoco":
+            return with_friction_defaults(changed, context)
         return changed
 
     return map_elements(visit, node, GUESS, kept=_UNSCALED)
