@@ -5,9 +5,10 @@ and ``<compiler>``), :func:`compose_problems` builds
 ``attach(attach(empty, a, prefix="a_"), b, prefix="b_")`` and reports, stage by
 stage, what keeps the scene from being right:
 
-1. ``compiled``: the scene compiles in memory; its counts are the sums; every
-   mesh keeps its vertex count; every named body, joint, geom, site and
-   actuator compiles to the values MuJoCo gives it in its own file;
+1. ``compiled``: the scene compiles in memory and is exactly its parts
+   (tests/composition_oracle.py): its counts are the sums and every per-object
+   array of every part's objects (bodies, joints, geoms... meshes, keys) holds
+   the values MuJoCo gives them in their own file;
 2. ``dump``: the scene dumped into a fresh folder compiles from there to the
    identical model;
 3. ``export``: the exported folder, moved, compiles to the identical model.
@@ -26,52 +27,16 @@ from typing import Any
 
 import attrs
 import mujoco
-import numpy as np
 
 from mjcf_model import Mujoco, attach, compiled
-from mjcf_model.tools.compare import compiled_names, model_differences, path_fields
+from mjcf_model.tools.compare import model_differences, path_fields
 from serializers import dump, export, load
+from tests.composition_oracle import PlacedPart, composition_problems
 
 __all__ = ["STAGES", "Outcome", "compose_problems"]
 
 #: The stages of the check, in order; a stage runs only when the ones before it passed.
 STAGES = ("attach", "compiled", "dump", "export")
-
-#: Per kind of named object: the compiled fields that must keep their values.
-COMPARED: dict[str, tuple[str, ...]] = {
-    "body": ("body_pos", "body_quat", "body_mass", "body_inertia", "body_ipos", "body_iquat"),
-    "jnt": (
-        "jnt_type",
-        "jnt_range",
-        "jnt_limited",
-        "jnt_axis",
-        "jnt_pos",
-        "jnt_stiffness",
-        "qpos0",
-    ),
-    "geom": (
-        "geom_type",
-        "geom_size",
-        "geom_pos",
-        "geom_quat",
-        "geom_friction",
-        "geom_contype",
-        "geom_conaffinity",
-    ),
-    "site": ("site_pos", "site_quat", "site_size"),
-    "actuator": (
-        "actuator_ctrlrange",
-        "actuator_forcerange",
-        "actuator_ctrllimited",
-        "actuator_forcelimited",
-        "actuator_gear",
-        "actuator_gainprm",
-        "actuator_biasprm",
-    ),
-    "mesh": ("mesh_vertnum",),
-}
-#: The counts that must add up.
-COUNTS = ("nbody", "njnt", "ngeom", "nmesh", "nu", "nsite")
 
 
 @attrs.frozen
@@ -82,44 +47,6 @@ class Outcome:
     passed: tuple[str, ...]
     #: What went wrong at the first stage that failed (empty when all passed).
     problems: tuple[str, ...] = ()
-
-
-def _rows(model: Any, field: str, index: int) -> np.ndarray[Any, Any]:
-    values = np.asarray(getattr(model, field))
-    if field == "qpos0":  # per joint: its qpos values
-        start = int(model.jnt_qposadr[index])
-        size = {0: 7, 1: 4}.get(int(model.jnt_type[index]), 1)
-        return values[start : start + size]
-    return values[index]
-
-
-def value_problems(alone: Any, scene: Any, prefix: str) -> list[str]:
-    """The named objects of ``alone`` whose values differ from ``prefix`` + name in ``scene``."""
-    problems = []
-    names_alone, names_scene = compiled_names(alone), compiled_names(scene)
-    for kind, fields in COMPARED.items():
-        where = {name: i for i, name in enumerate(names_scene[kind]) if name}
-        for index, name in enumerate(names_alone[kind]):
-            if not name or (kind == "body" and index == 0):
-                continue
-            other = where.get(prefix + name)
-            if other is None:
-                problems.append(f"{kind} {prefix + name!r} is missing")
-                continue
-            for field in fields:
-                a, b = _rows(alone, field, index), _rows(scene, field, other)
-                if a.shape != b.shape or not np.allclose(a, b, rtol=1e-9, atol=1e-12):
-                    problems.append(f"{kind} {name!r}: {field} {a.tolist()} -> {b.tolist()}")
-    return problems
-
-
-def _count_problems(alone: list[Any], scene: Any) -> list[str]:
-    problems = []
-    for count in COUNTS:
-        expected = sum(getattr(m, count) for m in alone) - (len(alone) - 1) * (count == "nbody")
-        if getattr(scene, count) != expected:
-            problems.append(f"{count} is {getattr(scene, count)}, expected {expected}")
-    return problems
 
 
 def compose_problems(paths: list[Path], workdir: Path, *, parent: Path | None = None) -> Outcome:
@@ -144,9 +71,10 @@ def compose_problems(paths: list[Path], workdir: Path, *, parent: Path | None = 
         together = compiled(scene)
     except Exception as error:
         return Outcome(tuple(passed), (f"{type(error).__name__}: {error}",))
-    problems = _count_problems(alone, together)
-    for model, prefix in zip(alone, prefixes, strict=True):
-        problems += value_problems(model, together, prefix)
+    if parent is None:
+        prefixes, alone = ["", *prefixes], [mujoco.MjModel.from_xml_string("<mujoco/>"), *alone]
+    parts = [PlacedPart(model, prefix) for model, prefix in zip(alone, prefixes, strict=True)]
+    problems = composition_problems(parts, together)
     if problems:
         return Outcome(tuple(passed), tuple(problems))
     passed.append("compiled")
