@@ -1,8 +1,7 @@
 """Shared test setup: hypothesis profiles and the real-world corpus.
 
 The profile comes from ``HYPOTHESIS_PROFILE``: ``ci`` (the default under
-``CI=true``; at least 200 examples per property) or ``dev`` (fewer, for quick
-local runs).
+``CI=true``; 100 examples per property) or ``dev`` (50, for quick local runs).
 """
 
 from __future__ import annotations

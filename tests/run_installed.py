@@ -14,7 +14,8 @@ The README's test command ends with this script. It
 4. runs pytest there: the tests, and the doctests of the installed modules.
 
 It ends with one line ``total: N passed, N failed`` and exits non-zero when
-anything failed. Usage::
+anything failed, or when a test that must run in an environment (:data:`MUST_RUN`)
+was skipped there or not collected: each such module counts as one failure. Usage::
 
     python tests/run_installed.py [ENVIRONMENT ...] [-- PYTEST-ARGUMENTS]
 
@@ -46,6 +47,9 @@ PACKAGES = ("mjcf_model", "serializers")
 #: keep the caller's (``ci`` under ``CI=true``). The oldest runs every property at the
 #: ``dev`` profile's 50 examples, which keeps the whole run under 15 minutes on 2 cores.
 HYPOTHESIS_PROFILES = {"oldest": "dev"}
+#: Test modules whose every test must run (none skipped) in an environment: robosuite's
+#: own environments run only up to MuJoCo 3.9, so only ``oldest`` can run them.
+MUST_RUN: dict[str, tuple[str, ...]] = {"oldest": ("tests.test_compat_robosuite_environments",)}
 
 
 def run(command: list[str], **kwargs: object) -> None:
@@ -126,7 +130,9 @@ def check_installed_imports(python: Path, suite: Path, environment: dict[str, st
     )
 
 
-def run_suite(name: str, wheel: Path, pytest_arguments: list[str]) -> tuple[int, int]:
+def run_suite(
+    name: str, wheel: Path, pytest_arguments: list[str], *, whole_suite: bool = True
+) -> tuple[int, int]:
     """Install, copy, check and run the suite in one environment: (passed, failed)."""
     print(f"\n=== environment {name!r}: {ENVIRONMENTS / f'{name}.txt'}", flush=True)
     python = environment_python(name, wheel)
@@ -163,10 +169,41 @@ def run_suite(name: str, wheel: Path, pytest_arguments: list[str]) -> tuple[int,
         int(totals.get(key, "0")) for key in ("tests", "failures", "errors", "skipped")
     )
     failed = failures + errors
+    unrun = skipped_must_run(
+        ET.parse(report).getroot(), MUST_RUN.get(name, ()), whole_suite=whole_suite
+    )
+    for problem in unrun:
+        print(f"must run in {name!r}: {problem}", flush=True)
+    failed += len({problem.split("::")[0].split(" ")[0] for problem in unrun})
     if status != 0 and failed == 0:
         print(f"pytest exited {status} with no failed test: counted as one failure", flush=True)
         failed = 1
     return tests - failures - errors - skipped, failed
+
+
+def skipped_must_run(
+    report: ET.Element, modules: tuple[str, ...], *, whole_suite: bool = True
+) -> list[str]:
+    """What keeps every test of ``modules`` from having run, read from pytest's junit report.
+
+    A test of such a module that was skipped is named with its reason; when the whole
+    suite ran (no ``-k`` or other selection of the caller's), a module with no test in
+    the report at all (not collected) is named too.
+    """
+    problems, seen = [], set()
+    for case in report.iter("testcase"):
+        module = case.get("classname", "")
+        owner = next((m for m in modules if module == m or module.startswith(m + ".")), None)
+        if owner is None:
+            continue
+        seen.add(owner)
+        skipped = case.find("skipped")
+        if skipped is not None:
+            reason = skipped.get("message", "")
+            problems.append(f"{module}::{case.get('name')} was skipped: {reason}")
+    if whole_suite:
+        problems += [f"{module} ran no test" for module in modules if module not in seen]
+    return problems
 
 
 def main(arguments: list[str]) -> int:
@@ -181,7 +218,10 @@ def main(arguments: list[str]) -> int:
     WORK.mkdir(parents=True, exist_ok=True)
     wheel = build_wheel()
     results = {
-        name: run_suite(name, wheel, pytest_arguments or ["-n", "2"]) for name in names or available
+        name: run_suite(
+            name, wheel, pytest_arguments or ["-n", "2"], whole_suite=not pytest_arguments
+        )
+        for name in names or available
     }
     print()
     for name, (passed, failed) in results.items():
