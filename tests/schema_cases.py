@@ -21,232 +21,9 @@ import attrs
 import mujoco
 
 from mjcf_model.schema.namespaces import SCHEMA
-
-
-@attrs.frozen
-class Case:
-    """A model using the reference ``attribute`` of a ``key`` element."""
-
-    #: The schema key of the element whose reference the case uses.
-    key: str
-    #: The reference attribute.
-    attribute: str
-    #: The model's text.
-    xml: str
-    #: Files the model reads, by the path it writes.
-    assets: Mapping[str, bytes] = attrs.field(factory=dict)
-
-
-_BASE = """<mujoco model="case">
-  <compiler autolimits="true"/>
-  <default>
-    <default class="cls"/>{default}
-  </default>{extension}
-  <asset>
-    <mesh name="tet" vertex="0 0 0  0.1 0 0  0 0.1 0  0 0 0.1"/>
-    <texture name="checker" type="2d" builtin="checker" width="8" height="8"
-             rgb1="1 1 1" rgb2="0 0 0"/>
-    <material name="paint" texture="checker"/>{asset}
-  </asset>
-  <worldbody>
-    <camera name="eye" pos="0 -2 1" xyaxes="1 0 0 0 0 1" resolution="8 8"/>
-    <body name="arm" pos="0 0 1">
-      <joint name="hinge" axis="0 1 0" range="-1 1"/>
-      <geom name="upper" size="0.1"/>
-      <site name="shoulder" pos="0 0 0.1"/>
-      <site name="elbow" pos="0.1 0 0"/>
-      <body name="forearm" pos="0 0 -0.5">
-        <joint name="slider" type="slide" axis="1 0 0" range="-0.5 0.5"/>
-        <geom name="lower" type="capsule" size="0.05 0.1"/>
-        <site name="wrist" pos="0 0 -0.1"/>
-      </body>
-    </body>
-    <body name="socket" pos="1 0 1">
-      <joint name="swivel" type="ball" range="0 1"/>
-      <geom name="knob" size="0.1"/>
-    </body>{world}
-  </worldbody>
-  <tendon>
-    <spatial name="cord" range="0 2"><site site="shoulder"/><site site="wrist"/></spatial>
-    <fixed name="coupling" range="-1 1"><joint joint="hinge" coef="1"/></fixed>{tendon}
-  </tendon>{sections}
-</mujoco>
-"""
-
-
-def model(
-    *,
-    default: str = "",
-    extension: str = "",
-    asset: str = "",
-    world: str = "",
-    tendon: str = "",
-    **sections: str,
-) -> str:
-    """The base model with these lines added to its sections (``sections``: new sections).
-
-    Example:
-        >>> "<motor" in model(actuator='<motor joint="hinge"/>')
-        True
-
-    """
-    extra = "".join(f"\n  <{tag}>\n    {body}\n  </{tag}>" for tag, body in sections.items())
-    return _BASE.format(
-        default=_indented(default, 4),
-        extension=f"\n  <extension>\n    {extension}\n  </extension>" if extension else "",
-        asset=_indented(asset, 4),
-        world=_indented(world, 4),
-        tendon=_indented(tendon, 4),
-        sections=extra,
-    )
-
-
-def _indented(text: str, spaces: int) -> str:
-    return f"\n{' ' * spaces}{text}" if text else ""
-
-
-# -- actuators ------------------------------------------------------------------------------
-
-#: What each actuator needs besides its transmission to compile.
-_ACTUATOR_SETTINGS = {
-    "general": "",
-    "motor": "",
-    "position": 'kp="1"',
-    "velocity": 'kv="1"',
-    "intvelocity": 'kp="1" actrange="-1 1"',
-    "pid": 'kp="1"',
-    "damper": 'kv="1" ctrlrange="0 1"',
-    "cylinder": "",
-    "muscle": 'lengthrange="0.1 1"',
-    "dcmotor": 'motorconst="1" resistance="1"',
-    "orientation": 'kp="1"',
-    "plugin": 'plugin="mujoco.pid"',
-    "adhesion": 'ctrlrange="0 1"',
-}
-#: The transmission each reference attribute makes, as attributes (an orientation
-#: actuator drives a ball joint).
-_TRANSMISSIONS = {
-    "joint": 'joint="hinge"',
-    "jointinparent": 'jointinparent="hinge"',
-    "tendon": 'tendon="cord"',
-    "site": 'site="shoulder"',
-    "refsite": 'site="shoulder" refsite="elbow"',
-    "cranksite": 'cranksite="shoulder" slidersite="wrist" cranklength="0.3"',
-    "slidersite": 'cranksite="shoulder" slidersite="wrist" cranklength="0.3"',
-    "body": 'body="forearm"',
-    "class": 'class="cls" joint="hinge"',
-    "instance": 'instance="gains" joint="hinge"',
-}
-_PID_INSTANCE = (
-    '<plugin plugin="mujoco.pid"><instance name="gains">'
-    '<config key="kp" value="1"/></instance></plugin>'
-)
-
-
-def _actuator(tag: str, attribute: str) -> str:
-    transmission = _TRANSMISSIONS[attribute]
-    if tag == "orientation":
-        transmission = transmission.replace('"hinge"', '"swivel"')
-        if attribute == "site":
-            transmission = _TRANSMISSIONS["refsite"]
-    if tag == "adhesion":
-        transmission = transmission.replace('joint="hinge"', 'body="forearm"')
-    settings = _ACTUATOR_SETTINGS[tag]
-    if tag == "plugin" and attribute == "instance":
-        return model(extension=_PID_INSTANCE, actuator=f"<plugin {transmission}/>")
-    if tag == "plugin":
-        line = f'<plugin {settings} {transmission}><config key="kp" value="1"/></plugin>'
-        return model(extension='<plugin plugin="mujoco.pid"/>', actuator=line)
-    return model(actuator=f"<{tag} {settings} {transmission}/>")
-
-
-# -- sensors --------------------------------------------------------------------------------
-
-#: The attributes of a sensor using each single reference.
-_SENSOR_REFERENCES = {
-    "site": 'site="shoulder"',
-    "joint": 'joint="hinge"',
-    "tendon": 'tendon="cord"',
-    "actuator": 'actuator="act"',
-    "body": 'body="forearm"',
-    "camera": 'camera="eye"',
-}
-#: The sensors that need a site and a camera.
-_CAMERA_SENSORS = frozenset({"camprojection"})
-#: The sensors whose joint is a ball joint.
-_BALL_SENSORS = frozenset({"ballquat", "ballangvel"})
-#: A frame sensor's object and reference object, by reference attribute: each frame
-#: sensor reads a different object type, so the type mapping is used widely.
-_FRAME_OBJECTS = {
-    "framepos": ("site", "shoulder"),
-    "framequat": ("body", "forearm"),
-    "framexaxis": ("xbody", "arm"),
-    "frameyaxis": ("geom", "lower"),
-    "framezaxis": ("camera", "eye"),
-    "framelinvel": ("site", "wrist"),
-    "frameangvel": ("geom", "knob"),
-    "framelinacc": ("body", "socket"),
-    "frameangacc": ("site", "elbow"),
-}
-#: The pairs of a collision sensor (distance, normal, fromto, contact), by attribute.
-_PAIRS = {
-    "geom1": 'geom1="upper" geom2="knob"',
-    "geom2": 'geom1="upper" geom2="knob"',
-    "body1": 'body1="arm" body2="socket"',
-    "body2": 'body1="arm" body2="socket"',
-    "subtree1": 'subtree1="arm" subtree2="socket"',
-    "subtree2": 'subtree1="arm" subtree2="socket"',
-    "site": 'site="shoulder"',
-}
-_ACTUATED = '<motor name="act" joint="hinge"/>'
-_TOUCH_CONFIG = (
-    '<config key="size" value="2 2"/><config key="fov" value="45 45"/>'
-    '<config key="gamma" value="0"/><config key="nchannel" value="1"/>'
-)
-
-
-def _sensor(tag: str, attribute: str) -> str:
-    if tag.startswith("frame"):
-        objtype, objname = _FRAME_OBJECTS[tag]
-        line = f'<{tag} objtype="{objtype}" objname="{objname}"'
-        if attribute == "refname":
-            line += ' reftype="body" refname="socket"'
-        return model(sensor=line + "/>")
-    if tag in ("distance", "normal", "fromto", "contact"):
-        return model(sensor=f"<{tag} {_PAIRS[attribute]}/>")
-    if tag == "plugin":
-        return _plugin_sensor(attribute)
-    special = {
-        "insidesite": '<insidesite site="shoulder" objtype="body" objname="forearm"/>',
-        "tactile": '<tactile geom="upper" mesh="tet"/>',
-        "user": '<user objtype="site" objname="shoulder" dim="1" needstage="pos" datatype="real"/>',
-    }
-    if tag in special:
-        return model(sensor=special[tag])
-    reference = _SENSOR_REFERENCES[attribute]
-    if tag in _CAMERA_SENSORS:
-        reference = 'site="shoulder" camera="eye"'
-    if tag in _BALL_SENSORS:
-        reference = 'joint="swivel"'
-    actuator = {"actuator": _ACTUATED} if attribute == "actuator" else {}
-    return model(**actuator, sensor=f"<{tag} {reference}/>")
-
-
-def _plugin_sensor(attribute: str) -> str:
-    on = 'objtype="site" objname="shoulder"'
-    if attribute == "instance":
-        extension = (
-            f'<plugin plugin="mujoco.sensor.touch_grid"><instance name="touch">{_TOUCH_CONFIG}'
-            "</instance></plugin>"
-        )
-        return model(extension=extension, sensor=f'<plugin instance="touch" {on}/>')
-    if attribute == "refname":
-        on += ' reftype="site" refname="elbow"'
-    line = f'<plugin plugin="mujoco.sensor.touch_grid" {on}>{_TOUCH_CONFIG}</plugin>'
-    return model(extension='<plugin plugin="mujoco.sensor.touch_grid"/>', sensor=line)
-
-
-# -- everything else ------------------------------------------------------------------------
+from tests.conftest import printed_schema
+from tests.schema_devices import actuator_case, sensor_case
+from tests.schema_model import Case, model
 
 _TORUS = (
     '<plugin plugin="mujoco.sdf.torus"><instance name="ring">'
@@ -514,6 +291,15 @@ UNUSABLE: Mapping[str, Unusable] = (
 )
 
 
+#: Elements MuJoCo reads outside the schema it prints (every supported release has them).
+_UNPRINTED = frozenset({"body/frame", "body/replicate"})
+
+
+def known(key: str, attribute: str) -> bool:
+    """Whether the installed MuJoCo reads ``attribute`` on ``key`` elements."""
+    return key in _UNPRINTED or attribute in printed_schema().get(key, ())
+
+
 def reference_rows() -> list[tuple[str, str]]:
     """Every ``(schema key, reference attribute)`` of the namespace table."""
     return [(key, attribute) for key, spec in SCHEMA.items() for attribute in spec.references]
@@ -529,9 +315,9 @@ def reference_cases() -> dict[tuple[str, str], Case]:
         elif (key, attribute) in _PASSIVE_PLUGIN_CASES and HAS_ELASTICITY_PLUGINS:
             xml = _PASSIVE_PLUGIN_CASES[key, attribute]
         elif section == "actuator" and "/" not in tag:
-            xml = _actuator(tag, attribute)
+            xml = actuator_case(tag, attribute)
         elif section == "sensor" and "/" not in tag:
-            xml = _sensor(tag, attribute)
+            xml = sensor_case(tag, attribute)
         elif section == "equality":
             xml = _equality(tag, attribute)
         else:
