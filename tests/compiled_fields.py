@@ -434,7 +434,16 @@ FLOAT_FIELDS: Mapping[str, Multiplier | None] = MappingProxyType(
 )
 
 #: Fields whose unit has a length in it that ``scaled`` leaves alone on purpose.
-UNSCALED_BY_DECISION: Mapping[str, str] = MappingProxyType({})
+UNSCALED_BY_DECISION: Mapping[str, str] = MappingProxyType(
+    {
+        "geom_solimp": "the impedance width is a distance, but solver settings stay",
+        "light_attenuation": "rendering falloff per length; lights keep their look",
+        "mat_texrepeat": "repeats per length with texuniform; materials stay",
+        "sensor_cutoff": "in the sensor's units, a length for position sensors",
+        "jnt_stiffness": "force per length on slide joints; forces are not scaled",
+        "actuator_gear": "a ratio; site transmissions' torque part has a length",
+    }
+)
 
 
 def float_fields(model: Any) -> tuple[str, ...]:
