@@ -18,8 +18,8 @@ from mjcf_model.tools.check import check_file
 from mjcf_model.tools.compare import compile_text_beside
 from mjcf_model.transforms.scaling.scaled import MassPolicy, scaled
 from serializers import dumps, from_etree, load, loads
-from tests.conftest import MUJOCO_VERSION
-from tests.oracles import friction_problems, mass_problems, scaled_problems
+from tests.oracles import friction_problems, scaled_problems
+from tests.scaling_oracle import scaled_model_problems
 
 FIXTURES = Path(__file__).parent / "fixtures" / "scaling"
 
@@ -30,26 +30,14 @@ SCALABLE = ("mass.xml", "flexcomp.xml", "sdf.xml", "includes.xml")
 #: Every top-level fixture of the folder.
 ALL_FIXTURES = (*SCALABLE, "attach.xml", "sdf_fixed_shape.xml", "sdf_gear.xml")
 
-#: The compiled lengths that must come out exactly multiplied by the factor.
-LENGTH_FIELDS = (
-    "body_pos",
-    "body_ipos",
-    "geom_pos",
-    "geom_size",
-    "site_pos",
-    "site_size",
-    "jnt_pos",
-    "mesh_vert",
-    "flex_vert",
-    "flex_radius",
-    "flexedge_length0",
-)
-
-#: Whether mesh vertices, and the sizes of geoms fitted to meshes, can be compared one
-#: by one: before 4.0 MuJoCo moves a scaled solid mesh into its principal frame with
-#: single-precision differences (measured on MuJoCo 3.9.0: up to 5e-5 of the extent on
-#: this folder's mesh fixtures), as ``tests/test_scaling.py`` also found on the corpus.
-MESH_ARRAYS_COMPARABLE = MUJOCO_VERSION >= (4, 0)
+#: What the complete oracle leaves to other checks, per fixture: an SDF mesh scales
+#: through its plugin's settings (checked below) instead of ``scale``; a flex's
+#: torsional and rolling friction is not scaled yet (MuJoCo's built-in values live on
+#: a ``<contact>`` child the flexcomp may not have; see the report of issue item 1).
+IGNORED = {
+    "sdf.xml": ("plugin_attr", "plugin_attradr", "npluginattr", "mesh_scale"),
+    "flexcomp.xml": ("flex_friction",),
+}
 
 
 def _scaled_copy(path: Path, factor: float, mass: MassPolicy = "keep") -> mujoco.MjModel:
@@ -58,17 +46,12 @@ def _scaled_copy(path: Path, factor: float, mass: MassPolicy = "keep") -> mujoco
     return compile_text_beside(dumps(scaled(model, factor, mass=mass)), path)
 
 
-def _length_problems(original: mujoco.MjModel, changed: mujoco.MjModel, factor: float) -> list[str]:
-    """The length arrays of ``changed`` that are not the original's times ``factor``."""
-    if MESH_ARRAYS_COMPARABLE:
-        problems = scaled_problems(original, changed, factor, LENGTH_FIELDS)
-        return problems + friction_problems(original, changed, factor)
-    fields = [f for f in LENGTH_FIELDS if f not in ("mesh_vert", "geom_size")]
-    problems = scaled_problems(original, changed, factor, fields)
-    rows = original.geom_type != mujoco.mjtGeom.mjGEOM_MESH
-    before, after = original.geom_size[rows], changed.geom_size[rows]
-    problems += friction_problems(original, changed, factor)
-    return problems + ([] if np.allclose(after, factor * before, rtol=1e-9, atol=0) else ["size"])
+def _problems(name: str, factor: float) -> list[str]:
+    """What keeps the fixture scaled by ``factor`` from being exactly scaled, masses kept."""
+    path = FIXTURES / name
+    original = mujoco.MjModel.from_xml_path(str(path))
+    changed = _scaled_copy(path, factor)
+    return scaled_model_problems(original, changed, factor, ignore=IGNORED.get(name, ()))
 
 
 @pytest.mark.parametrize("name", ALL_FIXTURES)
@@ -81,22 +64,14 @@ def test_fixture_round_trips_to_the_identical_model(name: str, inline_includes: 
 
 @pytest.mark.parametrize("name", SCALABLE)
 def test_fixture_scaled_by_two_doubles_every_length_and_keeps_masses(name: str) -> None:
-    """Every named length array doubles, every body keeps its mass, inertias grow by four."""
-    path = FIXTURES / name
-    original = mujoco.MjModel.from_xml_path(str(path))
-    changed = _scaled_copy(path, 2.0)
-    problems = _length_problems(original, changed, 2.0)
-    assert problems + mass_problems(original, changed, 1.0, 4.0) == []
+    """Every field changes as classified: lengths double, masses stay, inertias grow by four."""
+    assert _problems(name, 2.0) == []
 
 
 @pytest.mark.parametrize("name", SCALABLE)
 def test_fixture_scaled_by_a_half_halves_every_length(name: str) -> None:
     """The same oracle for a factor below one."""
-    path = FIXTURES / name
-    original = mujoco.MjModel.from_xml_path(str(path))
-    changed = _scaled_copy(path, 0.5)
-    problems = _length_problems(original, changed, 0.5)
-    assert problems + mass_problems(original, changed, 1.0, 0.25) == []
+    assert _problems(name, 0.5) == []
 
 
 def test_keep_policy_keeps_the_centre_of_mass_of_mixed_bodies() -> None:

@@ -15,6 +15,7 @@ from mjcf_model.nodes.base import AnyElement
 from mjcf_model.transforms.scaling.scaled import scaled
 from serializers import dumps, loads
 from tests.oracles import friction_problems
+from tests.scaling_oracle import scaled_model_problems
 
 #: Two geoms touching the world, so a pair between them compiles.
 _PAIRED = '<geom name="a" size="0.1"/><geom name="b" size="0.1" pos="1 0 0"/>'
@@ -68,7 +69,7 @@ def test_friction_lengths_scale_wherever_the_friction_comes_from(case: str, fact
     """Torsional and rolling coefficients compile to ``factor`` times the original's."""
     model = loads(f"<mujoco>{CASES[case]}</mujoco>")
     original, changed = _compiled(model), _compiled(scaled(model, factor))
-    assert friction_problems(original, changed, factor) == []
+    assert scaled_model_problems(original, changed, factor) == []
     assert original.ngeom == changed.ngeom and original.npair == changed.npair
 
 
@@ -95,7 +96,7 @@ def test_friction_of_a_scaled_body_is_completed_on_its_geoms() -> None:
     assert [g.friction for g in new.geoms] == [(1.0, 0.01, 0.0002), (0.7, 0.01, 0.0002)]
     original = _compiled(Mujoco(children=[Worldbody(children=[body])]))
     changed = _compiled(Mujoco(children=[Worldbody(children=[new])]))
-    assert friction_problems(original, changed, 2.0) == []
+    assert scaled_model_problems(original, changed, 2.0) == []
 
 
 def test_per_axis_factors_scale_friction_by_their_mean() -> None:

@@ -240,11 +240,37 @@ def _weld_relpose(
     }
 
 
-def _cylinder_area(
+def _joint_coupling(
     element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
-    area = get_attribute(element, "area")
-    return {} if area is None else {"area": times(area, context.mean**2)}
+    """``joint1 = a0 + a1 joint2 + ... + a4 joint2**4``: ``a_k`` is in ``joint1 / joint2**k``.
+
+    So with slide joints the coefficients scale (MuJoCo's built-in ``0 1 0 0 0``
+    is written where a hinge is coupled to a slide joint).
+    """
+    first = context.joint(get_attribute(element, "joint1"))
+    second = context.joint(get_attribute(element, "joint2"))
+    if first is None:
+        return {}
+    f1 = _slide_factor(first.type, first.axis, context)
+    f2 = 1.0 if second is None else _slide_factor(second.type, second.axis, context)
+    factors = [f1 / f2**k for k in range(5)]
+    if all(f == 1.0 for f in factors):
+        return {}
+    own = numbers_of(get_attribute(element, "polycoef")) or ()
+    values = (*own, *(0.0, 1.0, 0.0, 0.0, 0.0)[len(own) :])
+    return {"polycoef": tuple(v * f for v, f in zip(values, factors, strict=True))}
+
+
+def _area_factor(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> float:
+    return context.mean**2
+
+
+#: A cylinder's ``area``; MuJoCo's built-in one (1) is written, scaled, where nothing sets
+#: it (a ``diameter``, scaled as a length, still overrides it).
+_cylinder_area = with_builtin("area", "cylinder", lambda: (1.0,), _area_factor)
 
 
 _GEOM = combine(
@@ -371,6 +397,7 @@ _EXPLICIT: dict[str, Rule] = {
     "tendon/spatial": _spatial_tendon,
     "tendon/fixed": _fixed_tendon,
     "equality/connect": combine(points("anchor")),
+    "equality/joint": _joint_coupling,
     "equality/weld": combine(points("anchor"), _weld_relpose),
     "actuator/position": combine(_ACTUATOR, _position_ctrlrange),
     "actuator/cylinder": combine(_ACTUATOR, lengths("diameter"), _cylinder_area),

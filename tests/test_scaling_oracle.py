@@ -1,0 +1,97 @@
+"""The complete scaling oracle: every float field classified, and the bugs it catches.
+
+MuJoCo compiles each model before and after scaling; :func:`scaled_model_problems`
+states the expected change of every field (:mod:`tests.compiled_fields`).
+"""
+
+from __future__ import annotations
+
+import mujoco
+import numpy as np
+import pytest
+
+from mjcf_model.transforms.scaling.scaled import scaled
+from serializers import dumps, loads
+from tests.compiled_fields import FLOAT_FIELDS, float_fields
+from tests.scaling_oracle import scaled_model_problems
+
+
+def _compiled_pair(text: str, factor: float) -> tuple[mujoco.MjModel, mujoco.MjModel]:
+    """MuJoCo's compilation of ``text`` and of it scaled by ``factor``."""
+    original = mujoco.MjModel.from_xml_string(text)
+    return original, mujoco.MjModel.from_xml_string(dumps(scaled(loads(text), factor)))
+
+
+def test_every_float_field_of_the_installed_mujoco_is_classified() -> None:
+    """A float array MuJoCo adds must be given a kind before scaling can be trusted with it."""
+    model = mujoco.MjModel.from_xml_string("<mujoco/>")
+    assert [f for f in float_fields(model) if f not in FLOAT_FIELDS] == []
+    assert len(float_fields(model)) > 150
+
+
+def test_an_unclassified_field_is_reported_not_skipped() -> None:
+    """The oracle names a float field it has no kind for instead of passing over it."""
+
+    class Extended:
+        def __init__(self, model: mujoco.MjModel) -> None:
+            self._model = model
+            self.geom_novelty = np.ones(3)
+
+        def __dir__(self) -> list[str]:
+            return [*dir(self._model), "geom_novelty"]
+
+        def __getattr__(self, name: str) -> object:
+            return getattr(self._model, name)
+
+    model = mujoco.MjModel.from_xml_string("<mujoco/>")
+    assert "geom_novelty: not classified" in scaled_model_problems(
+        Extended(model), Extended(model), 2.0
+    )
+
+
+@pytest.mark.parametrize("factor", [2.0, 0.5])
+def test_geom_and_pair_margins_and_gaps_scale(factor: float) -> None:
+    """A geom's and a pair's margin and gap are distances: they compile multiplied."""
+    text = """<mujoco><worldbody><body><freejoint/><geom name="a" size="0.1" margin="0.01"
+    gap="0.005"/></body><geom name="b" type="plane" size="1 1 0.1" margin="0.02"/></worldbody>
+    <contact><pair geom1="a" geom2="b" margin="0.03" gap="0.01"/></contact></mujoco>"""
+    original, changed = _compiled_pair(text, factor)
+    assert scaled_model_problems(original, changed, factor) == []
+    assert np.isclose(changed.geom("a").margin[0], factor * 0.01)
+
+
+@pytest.mark.parametrize("tag", ["connect", "weld"])
+def test_connect_and_weld_anchors_scale(tag: str) -> None:
+    """Both anchors of a connect or weld (and a weld's relative position) compile multiplied."""
+    text = f"""<mujoco><worldbody><body name="a" pos="0 0 1"><freejoint/><geom size="0.1"/>
+    </body><body name="b" pos="1 0 1"><freejoint/><geom size="0.1"/></body></worldbody>
+    <equality><{tag} body1="a" body2="b" anchor="0.3 0.2 0.1"/></equality></mujoco>"""
+    original, changed = _compiled_pair(text, 2.0)
+    assert scaled_model_problems(original, changed, 2.0) == []
+    assert np.allclose(changed.eq_data[0, :3], [0.6, 0.4, 0.2])
+
+
+def test_cylinder_with_the_built_in_area_gets_it_scaled() -> None:
+    """A cylinder actuator's area is a length squared, MuJoCo's default of 1 included."""
+    text = """<mujoco><worldbody><body><joint name="s" type="slide"/><geom size="0.1"/>
+    </body></worldbody><actuator><cylinder joint="s"/><cylinder joint="s" area="2"/>
+    <cylinder joint="s" diameter="0.1"/></actuator></mujoco>"""
+    original, changed = _compiled_pair(text, 2.0)
+    assert scaled_model_problems(original, changed, 2.0) == []
+    assert np.allclose(changed.actuator_gainprm[:, 0], 4 * original.actuator_gainprm[:, 0])
+
+
+@pytest.mark.parametrize(
+    ("types", "polycoef"),
+    [(("hinge", "slide"), None), (("slide", "hinge"), "0.1 2 0 0 0"), (("slide", "slide"), None)],
+)
+def test_joint_coupling_coefficients_follow_the_joint_units(
+    types: tuple[str, str], polycoef: str | None
+) -> None:
+    """``joint1 = a0 + a1 joint2 + ...`` keeps meaning when one of the joints slides."""
+    coefficients = "" if polycoef is None else f' polycoef="{polycoef}"'
+    text = f"""<mujoco><worldbody><body><joint name="j1" type="{types[0]}"/>
+    <joint name="j2" type="{types[1]}" axis="1 0 0"/><geom size="0.1"/></body></worldbody>
+    <equality><joint joint1="j1" joint2="j2"{coefficients}/></equality></mujoco>"""
+    original, changed = _compiled_pair(text, 2.0)
+    assert scaled_model_problems(original, changed, 2.0) == []
