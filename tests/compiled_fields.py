@@ -301,6 +301,7 @@ FLOAT_FIELDS: Mapping[str, Multiplier | None] = MappingProxyType(
         "flex_texcoord": _unchanged,
         "flex_vert": _length,
         "flex_vert0": _unchanged,
+        "flex_vertmetric": DERIVED,  # MuJoCo 3.9: metrics derived from the vertices
         "flex_yield": _unchanged,
         "flexedge_invweight0": DERIVED,
         "flexedge_length0": _length,

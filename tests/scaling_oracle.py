@@ -25,7 +25,7 @@ __all__ = ["MESH_ARRAYS_COMPARABLE", "scaled_model_problems"]
 #: bounding boxes off by up to 10% of the extent on 28 corpus models, inertias
 #: permuted with equal traces); there mesh vertices and frames, the sizes, boxes
 #: and frames of mesh geoms and the bounding volumes are left out, and body inertias
-#: are compared by their traces.
+#: are compared by their traces; so are the normals, which are in that frame.
 MESH_ARRAYS_COMPARABLE = MUJOCO_VERSION >= (4, 0)
 
 #: Integer arrays of the bounding volume hierarchies and octrees: MuJoCo splits
@@ -44,7 +44,18 @@ _STRUCTS_MASS = {"stat.meanmass"}
 _STRUCTS_DERIVED = {"stat.meaninertia", "stat.extent", "stat.meansize"}
 
 _MESH_FIELDS = frozenset(
-    {"mesh_vert", "mesh_pos", "mesh_quat", "body_iquat", "body_inertia", "bvh_aabb", "oct_aabb"}
+    {
+        "mesh_vert",
+        "mesh_normal",
+        "mesh_polynormal",
+        "mesh_facenormal",
+        "mesh_pos",
+        "mesh_quat",
+        "body_iquat",
+        "body_inertia",
+        "bvh_aabb",
+        "oct_aabb",
+    }
 )
 _MESH_GEOM_FIELDS = frozenset({"geom_size", "geom_aabb", "geom_rbound", "geom_quat"})
 
@@ -127,7 +138,13 @@ def _struct_problems(original: Any, changed: Any, factor: float, mass: float) ->
         before = np.asarray(getattr(getattr(original, struct), field), dtype=float)
         after = np.asarray(getattr(getattr(changed, struct), field), dtype=float)
         expected = before * (factor if name in _STRUCTS else mass)
-        if not np.allclose(after, expected, rtol=1e-9, atol=0):
+        # before 4.0 the centre comes from mesh boxes, which can move in the 7th digit
+        rtol = (
+            1e-6
+            if name == "stat.center" and original.nmesh and not MESH_ARRAYS_COMPARABLE
+            else 1e-9
+        )
+        if not np.allclose(after, expected, rtol=rtol, atol=0):
             problems.append(f"{name}: {after!r}, expected {expected!r}")
     return problems
 

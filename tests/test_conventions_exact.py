@@ -8,6 +8,7 @@ camera (through a frame too): no digit is lost, even at gimbal lock.
 from __future__ import annotations
 
 import math
+import sys
 
 import numpy as np
 from hypothesis import given
@@ -71,9 +72,9 @@ def test_a_class_orientation_keeps_the_euler_notation() -> None:
 
 
 angles = st.one_of(
-    st.floats(-2 * math.pi, 2 * math.pi, allow_nan=False),
+    st.floats(-2 * math.pi, 2 * math.pi, allow_nan=False, allow_subnormal=False),
     st.sampled_from(LOCKED).flatmap(lambda a: st.sampled_from([a, math.nextafter(a, 4)])),
-)
+).filter(lambda a: a == 0 or abs(a) >= sys.float_info.min)  # MuJoCo 3.9 refuses subnormals
 
 
 @given(
