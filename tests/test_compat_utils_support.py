@@ -173,17 +173,19 @@ _QUIRKS = [
 
 
 @st.composite
-def messy_trees(draw: st.DrawFn) -> tuple[ET.Element, Path]:
+def messy_trees(draw: st.DrawFn, aim: Iterable[str] | None = None) -> tuple[ET.Element, Path]:
     """A generated model as ElementTree, with some quirky attributes, and a subtree's path.
 
     The quirks are text robosuite treats specially (``group="1.0"``, names that
-    start with a prefix, empty names, partial colours). Half the time the
-    subtree is the whole tree.
+    start with a prefix, empty names, partial colours). With ``aim`` (tags), they
+    land on elements of those tags when the tree has any: where the function
+    under test reads them. Half the time the subtree is the whole tree.
     """
     root = to_etree(draw(models()))
     elements = [e for e in root.iter() if isinstance(e.tag, str)]
+    aimed = [e for e in elements if aim is not None and e.tag in set(aim)]
     for _ in range(draw(st.integers(0, 4))):
-        element = draw(st.sampled_from(elements))
+        element = draw(st.sampled_from(aimed or elements))
         key, value = draw(st.sampled_from(_QUIRKS))
         element.set(key, value)
     all_paths = sorted(paths(root).values())

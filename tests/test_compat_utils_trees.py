@@ -329,7 +329,14 @@ def test_add_prefix_matches_robosuite_on_generated_trees(
     differential("add_prefix", subtree, prefix_logging(prefix, names, tags, attribs))
 
 
-@given(messy_trees(), st.floats(0, 1) | st.integers(0, 1), colours, name_sets, prefixes, st.data())
+@given(
+    messy_trees(aim=("geom", "material", "asset")),
+    st.floats(0, 1) | st.integers(0, 1),
+    colours,
+    name_sets,
+    prefixes,
+    st.data(),
+)
 def test_colour_functions_match_robosuite_on_generated_trees(
     tree: tuple[ET.Element, tuple[int, ...]],
     alpha: float,
@@ -359,7 +366,11 @@ def test_colour_functions_match_robosuite_on_generated_trees(
     differential("add_material", subtree, material)
 
 
-@given(messy_trees(), st.data())
+#: The tags robosuite's scale_* functions read.
+SCALED_TAGS = ("geom", "site", "body", "mesh", "joint")
+
+
+@given(messy_trees(aim=("geom", "body", "joint", "site", "motor")), st.data())
 def test_queries_match_robosuite_on_generated_trees(
     tree: tuple[ET.Element, tuple[int, ...]], data: st.DataObject
 ) -> None:
@@ -392,7 +403,7 @@ def test_queries_match_robosuite_on_generated_trees(
     differential("get_elements", subtree, lambda m, r: m.get_elements(r, element_type))
 
 
-@given(messy_trees(), scales, st.booleans(), st.booleans())
+@given(messy_trees(aim=SCALED_TAGS), scales, st.booleans(), st.booleans())
 def test_scaling_matches_robosuite_on_generated_trees(
     tree: tuple[ET.Element, tuple[int, ...]], scale: Any, sites: bool, slide: bool
 ) -> None:

@@ -3,10 +3,15 @@
 Use them to property-test code that builds, edits or converts MJCF:
 
 * :func:`models` draws complete models that MuJoCo compiles: a kinematic tree
-  with joints, geoms, sites, cameras and lights, frames, default classes,
-  textures and materials, actuators, sensors, tendons, equality constraints,
-  contact pairs and exclusions, a keyframe and custom data; every name is
-  unique in its namespace and every reference resolves. Comments are sprinkled in.
+  with free, ball, hinge and slide joints and a mocap body, geoms (inline meshes
+  among them), sites, nested frames, a ``<replicate>``, cameras and lights that
+  track bodies, nested default classes and ``childclass``, textures and
+  materials, fixed and spatial tendons, actuators of every transmission (joint,
+  jointinparent, tendon, site with or without refsite, body) some with
+  activation, sensors, connect/weld/joint/tendon equalities, contact pairs and
+  exclusions, a keyframe of the full state, and custom data, in degrees or
+  radians, with lengths from millimetres to metres; every name is unique in
+  its namespace and every reference resolves. Comments are sprinkled in.
 * :func:`geoms`, :func:`joints`, :func:`sites`, :func:`bodies`, :func:`materials`
   draw single nodes that are valid where they stand.
 * :func:`elements` draws any typed node class with arbitrary (well-formed, not

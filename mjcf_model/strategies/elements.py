@@ -10,20 +10,26 @@ from hypothesis import strategies as st
 from mjcf_model.nodes import (
     Geom,
     Material,
+    Mesh,
     Site,
 )
 from mjcf_model.nodes import Joint as JointNode
 from mjcf_model.nodes.base import TypedElement, field_table
 from mjcf_model.strategies.primitives import (
     _E,
+    _angle,
     _Draw,
     _length,
+    _mass,
     _number,
+    _position,
     _rgba,
+    _size,
     _unit_quat,
     _vec,
     names,
 )
+from mjcf_model.values import Floats
 
 __all__ = [
     "element_values",
@@ -31,6 +37,7 @@ __all__ = [
     "geoms",
     "joints",
     "materials",
+    "meshes",
     "sites",
 ]
 
@@ -68,23 +75,79 @@ def geoms(draw: _Draw[Any], name: str | None = None, material: str | None = None
 
     """
     geom_type = draw(st.sampled_from(sorted(_SIZE_COUNT)))
-    size = draw(st.tuples(*[_length() for _ in range(_SIZE_COUNT[geom_type])]))
+    size = draw(st.tuples(*[_size() for _ in range(_SIZE_COUNT[geom_type])]))
     return Geom(
         name=name,
         type=geom_type,
         size=size,
-        pos=draw(st.none() | _vec(3)),
+        pos=draw(st.none() | _position()),
         quat=draw(st.none() | _unit_quat()),
         rgba=draw(st.none() | _rgba()),
         material=material,
         group=draw(st.none() | st.integers(0, 5)),
         friction=draw(st.none() | st.tuples(_length(0.1, 2.0), _length(0.001, 0.1))),
+        mass=draw(st.none() | _mass()),
+    )
+
+
+#: The corners of a unit cube, which a drawn mesh stretches and jitters.
+_CORNERS = [(x, y, z) for x in (-1.0, 1.0) for y in (-1.0, 1.0) for z in (-1.0, 1.0)]
+
+
+def _outward(vertices: list[Floats], face: tuple[int, int, int]) -> tuple[int, int, int]:
+    """``face`` ordered so that its normal points away from the vertices' centroid."""
+    a, b, c = (vertices[i] for i in face)
+    centre = [sum(v[k] for v in vertices) / len(vertices) for k in range(3)]
+    u = [b[k] - a[k] for k in range(3)]
+    w = [c[k] - a[k] for k in range(3)]
+    normal = (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])
+    outward = sum(normal[k] * (a[k] - centre[k]) for k in range(3))
+    return face if outward > 0 else (face[0], face[2], face[1])
+
+
+@st.composite
+def meshes(draw: _Draw[Any], name: str) -> Mesh:
+    """A mesh written inline: a stretched, jittered box, or a tetrahedron with its faces.
+
+    No file is needed: the vertices (and for the tetrahedron the outward faces)
+    are the mesh's own attributes.
+
+    Example:
+        >>> len(meshes(name="m").example().vertex) in {12, 24}
+        True
+
+    """
+    half = draw(st.tuples(*[_size(-2.0, 0.0) for _ in range(3)]))
+    if draw(st.booleans()):
+        jitter = draw(st.lists(_number(0.8, 1.0), min_size=24, max_size=24))
+        box = [
+            tuple(c[k] * half[k] * jitter[3 * i + k] for k in range(3))
+            for i, c in enumerate(_CORNERS)
+        ]
+        return Mesh(name=name, vertex=tuple(v for corner in box for v in corner))
+    tetra: list[Floats] = [
+        (0.0, 0.0, 0.0),
+        (half[0], 0.0, 0.0),
+        (0.0, half[1], 0.0),
+        (0.0, 0.0, half[2]),
+    ]
+    faces = [_outward(tetra, f) for f in ((0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3))]
+    return Mesh(
+        name=name,
+        vertex=tuple(v for corner in tetra for v in corner),
+        face=tuple(i for f in faces for i in f),
+        scale=draw(st.none() | st.tuples(*[_number(0.5, 2.0) for _ in range(3)])),
     )
 
 
 @st.composite
-def joints(draw: _Draw[Any], name: str | None = None, scalar: bool = False) -> JointNode:
+def joints(
+    draw: _Draw[Any], name: str | None = None, scalar: bool = False, angle: str = "degree"
+) -> JointNode:
     """A hinge, slide or (unless ``scalar``) ball joint.
+
+    A hinge's range is in ``angle`` units (the model's ``<compiler angle>``), a
+    slide's in metres.
 
     Example:
         >>> joints(scalar=True).example().type in {"hinge", "slide"}
@@ -94,7 +157,10 @@ def joints(draw: _Draw[Any], name: str | None = None, scalar: bool = False) -> J
     kinds = ["hinge", "slide"] if scalar else ["hinge", "slide", "ball"]
     joint_type = draw(st.sampled_from(kinds))
     limits = None
-    if joint_type != "ball" and draw(st.booleans()):
+    if joint_type == "hinge" and draw(st.booleans()):
+        low = draw(_angle(angle))
+        limits = (low, low + abs(draw(_angle(angle))) + (1.0 if angle == "degree" else 0.02))
+    elif joint_type == "slide" and draw(st.booleans()):
         low = draw(_number(-2.0, 0.0))
         limits = (low, low + draw(_length(0.1, 2.0)))
     return JointNode(

@@ -2,87 +2,54 @@
 
 from __future__ import annotations
 
-import itertools
 from typing import Any
 
 import attrs
 from hypothesis import strategies as st
 
 from mjcf_model.nodes import (
-    Actuator,
     Asset,
     Body,
     Camera,
-    Contact,
+    Compiler,
     Custom,
     Default,
-    Equality,
-    EqualityJoint,
-    Exclude,
-    Fixed,
-    FramePos,
     FreeJoint,
     Geom,
-    JointPos,
-    Key,
-    Keyframe,
+    Inertial,
     Light,
-    Motor,
     Mujoco,
     Numeric,
-    Pair,
-    Position,
-    Sensor,
-    Tendon,
-    TendonJoint,
+    Replicate,
+    Site,
     Texture,
-    Touch,
-    Velocity,
     Worldbody,
 )
 from mjcf_model.nodes import Frame as FrameNode
 from mjcf_model.nodes import Joint as JointNode
 from mjcf_model.nodes.base import Node
-from mjcf_model.strategies.elements import geoms, joints, materials, sites
+from mjcf_model.strategies.elements import geoms, joints, materials, meshes, sites
 from mjcf_model.strategies.primitives import (
     _Draw,
+    _euler,
     _length,
+    _mass,
+    _position,
     _rgba,
+    _size,
     _unit_quat,
     _vec,
     comments,
     names,
 )
+from mjcf_model.strategies.registry import _Registry
+from mjcf_model.strategies.sections import sections
+from mjcf_model.tree.traversal import map_tree
 
 __all__ = [
     "bodies",
     "models",
 ]
-
-
-class _Names:
-    """Hands out names unique per namespace (``body0``, ``geom3``...)."""
-
-    def __init__(self) -> None:
-        self.counters: dict[str, itertools.count[int]] = {}
-
-    def __call__(self, namespace: str) -> str:
-        counter = self.counters.setdefault(namespace, itertools.count())
-        return f"{namespace}{next(counter)}"
-
-
-@attrs.define
-class _Registry:
-    """What a model being drawn declares, for the sections that refer to it."""
-
-    names: _Names = attrs.field(factory=_Names)
-    scalar_joints: list[str] = attrs.field(factory=list)
-    joint_sizes: list[int] = attrs.field(factory=list)
-    bodies: list[str] = attrs.field(factory=list)
-    geoms: list[str] = attrs.field(factory=list)
-    sites: list[str] = attrs.field(factory=list)
-    materials: list[str] = attrs.field(factory=list)
-    classes: list[str] = attrs.field(factory=list)
 
 
 def _maybe_comment(draw: _Draw[Any], children: list[Node]) -> list[Node]:
@@ -91,11 +58,152 @@ def _maybe_comment(draw: _Draw[Any], children: list[Node]) -> list[Node]:
     return children
 
 
+def _chance(draw: _Draw[Any], one_in: int) -> bool:
+    """True once in ``one_in`` draws (shrinking towards False)."""
+    drawn: int = draw(st.integers(0, one_in - 1))
+    return drawn == one_in - 1
+
+
+def _orientation(draw: _Draw[Any], reg: _Registry) -> dict[str, Any]:
+    """No orientation, a quaternion, or Euler angles in the model's angle units."""
+    kind = draw(st.sampled_from(["none", "quat", "euler"]))
+    if kind == "quat":
+        return {"quat": draw(_unit_quat())}
+    if kind == "euler":
+        return {"euler": draw(_euler(reg.angle))}
+    return {}
+
+
+def _geom(draw: _Draw[Any], reg: _Registry, namespace: str = "geom") -> Geom:
+    """A primitive or mesh geom, maybe named, maybe of a default class."""
+    named = draw(st.booleans())
+    name = reg.names(namespace) if named else None
+    material = draw(st.none() | st.sampled_from(reg.materials)) if reg.materials else None
+    geom: Geom = draw(geoms(name=name, material=material))
+    if reg.meshes and _chance(draw, 3):
+        geom = attrs.evolve(geom, type="mesh", size=None, mesh=draw(st.sampled_from(reg.meshes)))
+    if reg.classes and draw(st.booleans()):
+        geom = attrs.evolve(geom, dclass=draw(st.sampled_from(reg.classes)))
+    if name and namespace == "geom":
+        reg.geoms.append(name)
+        if geom.type in {"sphere", "cylinder"}:
+            reg.wrapping_geoms.append(name)
+    return geom
+
+
+def _site(draw: _Draw[Any], reg: _Registry, namespace: str = "site") -> Site:
+    name = reg.names(namespace)
+    if namespace == "site":
+        reg.sites.append(name)
+    site: Site = draw(sites(name=name))
+    return site
+
+
+def _joints(draw: _Draw[Any], reg: _Registry, top: bool) -> list[Node]:
+    """A free joint (top-level bodies only), or up to two joints (a ball joint alone)."""
+    if top and draw(st.booleans()):
+        return [FreeJoint(name=reg.names("joint"))]
+    found: list[Node] = []
+    for index in range(draw(st.integers(0, 2))):
+        # MuJoCo allows no rotation after a ball joint: a ball joint stands alone.
+        joint = draw(joints(name=reg.names("joint"), scalar=index > 0, angle=reg.angle))
+        found.append(joint)
+        if joint.type == "ball":
+            break
+        reg.scalar_joints.append(str(joint.name))
+    return found
+
+
+def _inertial(draw: _Draw[Any]) -> Inertial:
+    """Explicit inertia: principal moments that satisfy the triangle inequality."""
+    moment = draw(_size(-4.0, 0.0))
+    return Inertial(
+        pos=draw(_vec(3, -0.1, 0.1)),
+        mass=draw(_mass()),
+        diaginertia=draw(st.tuples(*[_length(moment, 1.5 * moment) for _ in range(3)])),
+    )
+
+
+def _tracking(draw: _Draw[Any], reg: _Registry) -> dict[str, Any]:
+    """Fixed, or aimed at a body drawn so far (its centre or its centre of mass)."""
+    mode = draw(st.sampled_from([None, "targetbody", "targetbodycom"]))
+    if mode is None:
+        return {}
+    return {"mode": mode, "target": draw(st.sampled_from(reg.bodies))}
+
+
+def _frame(draw: _Draw[Any], reg: _Registry, depth: int, nesting: int = 1) -> FrameNode:
+    """A frame placing a geom, a site, a body subtree, or another frame."""
+    kinds = ["geom", "site", "body"] + (["frame"] if nesting else [])
+    children: list[Node] = []
+    for kind in draw(st.lists(st.sampled_from(kinds), min_size=1, max_size=2)):
+        if kind == "geom":
+            children.append(_geom(draw, reg))
+        elif kind == "site":
+            children.append(_site(draw, reg))
+        elif kind == "body":
+            children.append(draw(bodies(depth=max(depth - 1, 0), registry=reg)))
+        else:
+            children.append(_frame(draw, reg, depth, nesting - 1))
+    childclass = draw(st.none() | st.sampled_from(reg.classes)) if reg.classes else None
+    return FrameNode(
+        pos=draw(st.none() | _position()),
+        childclass=childclass,
+        children=children,
+        **_orientation(draw, reg),
+    )
+
+
+def _replicate(draw: _Draw[Any], reg: _Registry) -> Replicate:
+    """Copies of a small jointless subtree; MuJoCo suffixes each copy's names with its index."""
+    reg.replicates = True
+    if draw(st.booleans()):
+        inner: list[Node] = [_geom(draw, reg, "rgeom")]
+        if draw(st.booleans()):
+            inner.append(Body(name=reg.names("rbody"), children=[_geom(draw, reg, "rgeom")]))
+        content: Node = Body(
+            name=reg.names("rbody"),
+            pos=draw(_vec(3, -0.2, 0.2)),
+            children=[*inner, _site(draw, reg, "rsite")],
+        )
+    else:
+        content = _geom(draw, reg, "rgeom")
+    return Replicate(
+        count=draw(st.integers(2, 4)),
+        offset=draw(_vec(3, -0.5, 0.5)),
+        euler=draw(st.none() | _euler(reg.angle)),
+        children=[content],
+    )
+
+
+def _separated_copies(draw: _Draw[Any], world: Worldbody) -> Worldbody:
+    """``world`` whose replicate names its copies with a separator before the index.
+
+    Without one, MuJoCo suffixes the digits straight onto names: a copy of
+    ``joint1`` would be ``joint11``, and MuJoCo also copies each element that
+    refers to a name whose suffixed form exists (a sensor of ``joint1`` when
+    ``joint11`` is declared). Names here end in digits, so from ten names in a
+    namespace on, the copies need a separator.
+    """
+    sep = draw(st.sampled_from(["-", "_"]))
+
+    def separated(node: Node) -> Node:
+        return attrs.evolve(node, sep=sep) if isinstance(node, Replicate) else node
+
+    mapped = map_tree(separated, world)
+    assert isinstance(mapped, Worldbody)
+    return mapped
+
+
 @st.composite
 def bodies(
     draw: _Draw[Any], depth: int = 2, registry: _Registry | None = None, top: bool = False
 ) -> Body:
     """A body subtree: every body has a geom, so moving bodies have mass.
+
+    Bodies hold joints (a free joint at the top), geoms (meshes among them once
+    the model has meshes), sites, frames, replicated copies, and cameras and
+    lights that may track a body. A top-level body may be a mocap body instead.
 
     Example:
         >>> len(bodies().example().geoms) >= 1
@@ -105,53 +213,41 @@ def bodies(
     reg = registry if registry is not None else _Registry()
     name = reg.names("body")
     reg.bodies.append(name)
-    children: list[Node] = []
-    if top and draw(st.booleans()):
-        children.append(FreeJoint(name=reg.names("joint")))
-        reg.joint_sizes.append(7)
-    else:
-        for index in range(draw(st.integers(0, 2))):
-            # MuJoCo allows no rotation after a ball joint: a ball joint stands alone.
-            joint = draw(joints(name=reg.names("joint"), scalar=index > 0))
-            children.append(joint)
-            reg.joint_sizes.append(4 if joint.type == "ball" else 1)
-            if joint.type == "ball":
-                break
-            reg.scalar_joints.append(str(joint.name))
-    for _ in range(draw(st.integers(1, 3))):
-        geom_name = reg.names("geom") if draw(st.booleans()) else None
-        material = draw(st.none() | st.sampled_from(reg.materials)) if reg.materials else None
-        geom = draw(geoms(name=geom_name, material=material))
-        if reg.classes and draw(st.booleans()):
-            geom = attrs.evolve(geom, dclass=draw(st.sampled_from(reg.classes)))
-        children.append(geom)
-        if geom_name:
-            reg.geoms.append(geom_name)
-    if draw(st.booleans()):
-        site_name = reg.names("site")
-        children.append(draw(sites(name=site_name)))
-        reg.sites.append(site_name)
-    if draw(st.integers(0, 3)) == 0:
-        framed = draw(geoms(name=reg.names("geom")))
-        reg.geoms.append(str(framed.name))
-        frame = FrameNode(pos=draw(_vec(3)), children=[framed])
-        children.insert(draw(st.integers(0, len(children))), frame)
-    if draw(st.integers(0, 4)) == 0:
-        children.append(Camera(name=reg.names("camera"), pos=draw(_vec(3)), fovy=45.0))
-    if draw(st.integers(0, 5)) == 0:
-        children.append(Light(name=reg.names("light"), pos=draw(_vec(3)), dir=(0.0, 0.0, -1.0)))
+    if top and _chance(draw, 4):
+        reg.mocap_bodies.append(name)
+        geom = attrs.evolve(_geom(draw, reg), contype=0, conaffinity=0)
+        return Body(name=name, mocap=True, pos=draw(_position()), children=[geom])
+    children = _joints(draw, reg, top)
+    if _chance(draw, 4):
+        children.append(_inertial(draw))
+    children.extend(_geom(draw, reg) for _ in range(draw(st.integers(1, 3))))
+    children.extend(_site(draw, reg) for _ in range(draw(st.integers(0, 2))))
+    if _chance(draw, 3):
+        children.insert(draw(st.integers(0, len(children))), _frame(draw, reg, depth))
+    # one per model: with two, MuJoCo copies the sections' elements into clashing names
+    if not reg.replicates and _chance(draw, 4):
+        children.append(_replicate(draw, reg))
+    if _chance(draw, 4):
+        children.append(
+            Camera(
+                name=reg.names("camera"), pos=draw(_position()), fovy=45.0, **_tracking(draw, reg)
+            )
+        )
+    if _chance(draw, 5):
+        light = Light(name=reg.names("light"), pos=draw(_position()), dir=(0.0, 0.0, -1.0))
+        children.append(attrs.evolve(light, **_tracking(draw, reg)))
     if depth > 0:
         for _ in range(draw(st.integers(0, 2))):
             children.append(draw(bodies(depth=depth - 1, registry=reg)))
     childclass = None
-    if reg.classes and draw(st.integers(0, 3)) == 0:
+    if reg.classes and _chance(draw, 4):
         childclass = draw(st.sampled_from(reg.classes))
     return Body(
         name=name,
         childclass=childclass,
-        pos=draw(_vec(3)),
-        quat=draw(st.none() | _unit_quat()),
+        pos=draw(_position()),
         children=_maybe_comment(draw, children),
+        **_orientation(draw, reg),
     )
 
 
@@ -167,6 +263,8 @@ def _defaults(draw: _Draw[Any], reg: _Registry) -> Default:
             own.append(Geom(rgba=draw(_rgba()), density=draw(_length(100.0, 2000.0))))
         if draw(st.booleans()):
             own.append(JointNode(armature=draw(_length(0.0, 0.5))))
+        if _chance(draw, 3):
+            own.append(Site(size=(draw(_size(-3.0, -1.0)),), rgba=draw(_rgba())))
         settings.append(own)
     built: dict[int, Default] = {}
     for index in reversed(range(len(parents))):  # a class is built after the classes in it
@@ -197,6 +295,10 @@ def _assets(draw: _Draw[Any], reg: _Registry) -> Asset:
         name = reg.names("material")
         children.append(draw(materials(name=name, texture=texture)))
         reg.materials.append(name)
+    for _ in range(draw(st.integers(0, 2))):
+        name = reg.names("mesh")
+        children.append(draw(meshes(name=name)))
+        reg.meshes.append(name)
     return Asset(children=children)
 
 
@@ -212,57 +314,20 @@ def models(draw: _Draw[Any], max_trees: int = 3) -> Mujoco:
         True
 
     """
-    reg = _Registry()
+    reg = _Registry(angle=draw(st.sampled_from(["degree", "radian"])))
+    head: list[Node] = []
+    if reg.angle == "radian" or draw(st.booleans()):
+        head.append(Compiler(angle=reg.angle))
     defaults = _defaults(draw, reg)
     assets = _assets(draw, reg)
     trees: list[Node] = [
         draw(bodies(registry=reg, top=True)) for _ in range(draw(st.integers(1, max_trees)))
     ]
     world = Worldbody(children=_maybe_comment(draw, trees))
-    sections: list[Node] = [defaults, assets, world]
-    actuators: list[Node] = []
-    for joint in reg.scalar_joints:
-        kind = draw(st.sampled_from([None, Motor, Position, Velocity]))
-        if kind is not None:
-            actuators.append(kind(name=reg.names("actuator"), joint=joint, ctrlrange=(-1.0, 1.0)))
-    sensors: list[Node] = [
-        JointPos(name=reg.names("sensor"), joint=j) for j in reg.scalar_joints[:2]
-    ]
-    for site in reg.sites[:2]:
-        sensors.append(FramePos(name=reg.names("sensor"), objtype="site", objname=site))
-        sensors.append(Touch(name=reg.names("sensor"), site=site))
-    if actuators:
-        sections.append(Actuator(children=actuators))
-    if sensors:
-        sections.append(Sensor(children=sensors))
-    if len(reg.scalar_joints) >= 2:
-        first, second = reg.scalar_joints[:2]
-        parts = [TendonJoint(joint=first, coef=1.0), TendonJoint(joint=second, coef=-0.5)]
-        sections.append(Tendon(children=[Fixed(name=reg.names("tendon"), children=parts)]))
-        sections.append(
-            Equality(
-                children=[EqualityJoint(name=reg.names("equality"), joint1=first, joint2=second)]
-            )
-        )
-    contact: list[Node] = []
-    if len(reg.bodies) >= 2:
-        contact.append(
-            Exclude(name=reg.names("exclude"), body1=reg.bodies[0], body2=reg.bodies[-1])
-        )
-    if len(reg.geoms) >= 2:
-        contact.append(Pair(name=reg.names("pair"), geom1=reg.geoms[0], geom2=reg.geoms[-1]))
-    if contact:
-        sections.append(Contact(children=contact))
-    nq = sum(reg.joint_sizes)
-    if nq and draw(st.booleans()):
-        qpos = None if 7 in reg.joint_sizes or 4 in reg.joint_sizes else draw(_vec(nq))
-        key = Key(
-            name=reg.names("key"),
-            time=draw(_length(0.0, 1.0)),
-            qpos=qpos,
-            ctrl=tuple(0.0 for _ in actuators) or None,
-        )
-        sections.append(Keyframe(children=[key]))
+    after = sections(draw, reg, world)
+    if reg.names.most() >= 10:
+        world = _separated_copies(draw, world)
+    parts: list[Node] = [*head, defaults, assets, world, *after]
     if draw(st.booleans()):
-        sections.append(Custom(children=[Numeric(name=reg.names("numeric"), data=draw(_vec(2)))]))
-    return Mujoco(model=draw(st.none() | names()), children=_maybe_comment(draw, sections))
+        parts.append(Custom(children=[Numeric(name=reg.names("numeric"), data=draw(_vec(2)))]))
+    return Mujoco(model=draw(st.none() | names()), children=_maybe_comment(draw, parts))

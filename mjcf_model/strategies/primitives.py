@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import TypeVar
 
@@ -74,6 +75,36 @@ def _length(low: float = 0.01, high: float = 0.5) -> st.SearchStrategy[float]:
 
 def _vec(n: int, low: float = -1.0, high: float = 1.0) -> st.SearchStrategy[Floats]:
     return st.tuples(*[_number(low, high) for _ in range(n)])
+
+
+#: How far from its parent a drawn element is placed, in metres.
+_REACH = 3.0
+
+
+def _position() -> st.SearchStrategy[Floats]:
+    """A position up to a few metres from the parent's origin."""
+    return _vec(3, -_REACH, _REACH)
+
+
+def _size(low_exponent: float = -3.0, high_exponent: float = 0.0) -> st.SearchStrategy[float]:
+    """A size spread evenly over orders of magnitude (a millimetre to a metre by default)."""
+    return st.floats(low_exponent, high_exponent).map(lambda exponent: float(10.0**exponent))
+
+
+def _mass() -> st.SearchStrategy[float]:
+    """A mass from ten grams to a hundred kilograms."""
+    return _size(-2.0, 2.0)
+
+
+def _angle(units: str, limit_degrees: float = 180.0) -> st.SearchStrategy[float]:
+    """An angle within ``limit_degrees`` either way, in ``units`` (``degree`` or ``radian``)."""
+    limit = limit_degrees if units == "degree" else math.radians(limit_degrees)
+    return _number(-limit, limit)
+
+
+def _euler(units: str) -> st.SearchStrategy[Floats]:
+    """Euler angles in ``units``."""
+    return st.tuples(_angle(units), _angle(units, 90.0), _angle(units))
 
 
 def _rgba() -> st.SearchStrategy[Floats]:
