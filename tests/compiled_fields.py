@@ -93,8 +93,8 @@ def tendon_factors(model: Any, s: float) -> np.ndarray:
     factors = np.ones(model.ntendon)
     for tendon, (start, count) in enumerate(zip(model.tendon_adr, model.tendon_num, strict=True)):
         spatial = np.any(model.wrap_type[start : start + count] != mujoco.mjtWrap.mjWRAP_JOINT)
-        sliding = np.all(model.jnt_type[model.wrap_objid[start : start + count]] == _SLIDE)
-        if spatial or sliding:
+        joints = model.wrap_objid[start : start + count]
+        if spatial or np.all(model.jnt_type[joints] == _SLIDE):
             factors[tendon] = s
     return factors
 
@@ -179,7 +179,8 @@ def _equality_data(model: Any, s: float, m: float) -> np.ndarray:
     """Anchors and relative poses of connect and weld; joint and tendon polynomials.
 
     A connect's data are its anchor and the other body's; a weld's its anchor and
-    its relative position, then a quaternion and a torque scale. A joint or tendon coupling
+    its relative position, then a quaternion and a torque scale (between sites,
+    unread and unchanged). A joint or tendon coupling
     ``y1 = a0 + a1 y2 + ... + a4 y2**4`` has ``a_k`` in units of ``y1 / y2**k``.
     """
     eq = mujoco.mjtEq
@@ -189,7 +190,9 @@ def _equality_data(model: Any, s: float, m: float) -> np.ndarray:
         zip(model.eq_type, model.eq_obj1id, model.eq_obj2id, strict=True)
     ):
         if kind in (int(eq.mjEQ_CONNECT), int(eq.mjEQ_WELD)):
-            factors[row, :6] = s
+            # between sites the sites' frames decide: MuJoCo leaves anchor and relpose unread
+            if int(model.eq_objtype[row]) != int(mujoco.mjtObj.mjOBJ_SITE):
+                factors[row, :6] = s
         elif kind in (int(eq.mjEQ_JOINT), int(eq.mjEQ_TENDON)):
             of = joints if kind == int(eq.mjEQ_JOINT) else tendons
             f1, f2 = of[first], (of[second] if second >= 0 else 1.0)

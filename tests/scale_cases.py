@@ -323,6 +323,15 @@ def _constraint_cases() -> list[ScaleCase]:
             model(equality='<weld body1="arm" body2="socket" anchor="0.1 0.2 0.3"/>'),
             eq,
         ),
+        ScaleCase(  # a slide joint coupled to a hinge: every coefficient is a length
+            "equality/joint",
+            "polycoef",
+            model(
+                world=_CARRIAGE,
+                equality='<joint joint1="rail" joint2="hinge" polycoef="0.1 0.2 0.3 0 0"/>',
+            ),
+            lambda compiled: np.asarray(compiled.eq_data)[0][0:5],
+        ),
         ScaleCase(
             "equality/weld",
             "relpose",

@@ -95,3 +95,22 @@ def test_joint_coupling_coefficients_follow_the_joint_units(
     <equality><joint joint1="j1" joint2="j2"{coefficients}/></equality></mujoco>"""
     original, changed = _compiled_pair(text, 2.0)
     assert scaled_model_problems(original, changed, 2.0) == []
+
+
+def test_welds_between_sites_and_spatial_tendons_are_read_as_mujoco_does() -> None:
+    """A weld between sites keeps its unread data; a spatial tendon over sites is a length.
+
+    Both were found by the drawn models: the oracle expected a site weld's default
+    ``relpose`` to scale, and took a spatial tendon's sites for joints.
+    """
+    text = """<mujoco><worldbody>
+      <body name="a"><joint type="slide"/><geom size=".1"/><site name="s0"/></body>
+      <body name="b" pos="0 0 1"><geom size=".1"/><site name="s1"/></body>
+    </worldbody>
+    <tendon><spatial name="t" springlength=".5"><site site="s0"/><site site="s1"/></spatial>
+    </tendon>
+    <equality><weld site1="s0" site2="s1"/></equality></mujoco>"""
+    original, changed = _compiled_pair(text, 2.0)
+    assert np.array_equal(changed.eq_data, original.eq_data)
+    assert changed.tendon_lengthspring[0, 0] == 2 * original.tendon_lengthspring[0, 0]
+    assert scaled_model_problems(original, changed, 2.0) == []

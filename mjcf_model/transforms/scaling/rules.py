@@ -268,9 +268,22 @@ def _area_factor(
     return context.mean**2
 
 
-#: A cylinder's ``area``; MuJoCo's built-in one (1) is written, scaled, where nothing sets
-#: it (a ``diameter``, scaled as a length, still overrides it).
-_cylinder_area = with_builtin("area", "cylinder", lambda: (1.0,), _area_factor)
+#: A cylinder's ``area`` where MuJoCo's built-in one (1) holds: written, scaled.
+_builtin_area = with_builtin("area", "cylinder", lambda: (1.0,), _area_factor)
+
+
+def _cylinder_area(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> Changes:
+    """A cylinder's ``area`` scaled; MuJoCo's built-in one written, scaled, where nothing sets it.
+
+    A ``diameter`` (its own or a class's, scaled as a length) gives the area
+    instead: an ``area`` written on the element would override a class's diameter.
+    """
+    if context.classes.resolve(element, ancestors, "diameter") is None:
+        return _builtin_area(element, ancestors, context)
+    area = get_attribute(element, "area")
+    return {} if area is None else {"area": times(area, _area_factor(element, ancestors, context))}
 
 
 _GEOM = combine(
