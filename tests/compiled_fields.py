@@ -89,13 +89,31 @@ def _qvel(model: Any, s: float, m: float) -> np.ndarray:
 
 
 def tendon_factors(model: Any, s: float) -> np.ndarray:
-    """Per tendon: ``s`` for a spatial tendon and a fixed one whose joints all slide, else 1."""
+    """Per tendon: ``s`` for a spatial tendon and a fixed one over a slide joint, else 1.
+
+    A fixed tendon's length ``sum(coef * q)`` over hinges alone is an angle; with a
+    slide joint in it, it is a length (a hinge's ``coef`` is then a lever arm).
+    """
     factors = np.ones(model.ntendon)
     for tendon, (start, count) in enumerate(zip(model.tendon_adr, model.tendon_num, strict=True)):
-        spatial = np.any(model.wrap_type[start : start + count] != mujoco.mjtWrap.mjWRAP_JOINT)
-        sliding = np.all(model.jnt_type[model.wrap_objid[start : start + count]] == _SLIDE)
-        if spatial or sliding:
+        kinds, ids = model.wrap_type[start : start + count], model.wrap_objid[start : start + count]
+        spatial = np.any(kinds != mujoco.mjtWrap.mjWRAP_JOINT)
+        if spatial or np.any(model.jnt_type[ids] == _SLIDE):
             factors[tendon] = s
+    return factors
+
+
+def _wrap_parameters(model: Any, s: float, m: float) -> np.ndarray:
+    """A fixed tendon's ``coef``: the tendon's length per unit of its joint's coordinate.
+
+    The other wrap parameters (pulley divisors, side sites) are unitless or ids.
+    """
+    factors = np.ones(model.nwrap)
+    joints, tendons = _joint_factors(model, s), tendon_factors(model, s)
+    for tendon, (start, count) in enumerate(zip(model.tendon_adr, model.tendon_num, strict=True)):
+        for wrap in range(start, start + count):
+            if model.wrap_type[wrap] == mujoco.mjtWrap.mjWRAP_JOINT:
+                factors[wrap] = tendons[tendon] / joints[model.wrap_objid[wrap]]
     return factors
 
 
@@ -430,7 +448,7 @@ FLOAT_FIELDS: Mapping[str, Multiplier | None] = MappingProxyType(
         "tendon_stiffnesspoly": _unchanged,
         "tendon_user": _unchanged,
         "tendon_width": _spatial_tendons,
-        "wrap_prm": _unchanged,
+        "wrap_prm": _wrap_parameters,
     }
 )
 

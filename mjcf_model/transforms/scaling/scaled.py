@@ -77,18 +77,19 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     """A copy of ``node`` with every length multiplied by ``factor``.
 
     Lengths are positions (bodies, frames, geoms, sites, joints, cameras, lights,
-    inertials, equality anchors, keyframe mocap positions and the length parts
-    of keyframe ``qpos``/``qvel``), geom and site sizes (by type), ``fromto``,
-    mesh ``scale``, height field ``size``, slide-joint ranges and references,
-    spatial tendon lengths and widths, fixed tendon lengths when all their
-    joints slide, contact margins and gaps, the friction of geoms and contact
-    pairs but for its sliding values (torsional and rolling coefficients are
-    lengths in MuJoCo; values MuJoCo fills from its built-in defaults are
-    written, scaled), position actuators' ``ctrlrange`` on slide
-    joints, crank lengths, and the same attributes in default classes. A
-    ``flexcomp``'s points scale once, through ``scale`` for the ``direct``,
-    ``mesh`` and ``gmsh`` types and through ``spacing`` for the generated ones;
-    a mesh made by an SDF plugin scales through the plugin's length settings
+    inertials, equality anchors, keyframe mocap positions and the length parts of
+    keyframe ``qpos``/``qvel``), geom and site sizes (by type), ``fromto``, mesh
+    ``scale``, height field ``size``, slide-joint ranges and references, spatial tendon
+    lengths and widths, fixed tendon lengths when a slide joint is in them (and then
+    their hinges' ``coef``, a lever arm), the ``polycoef`` of joint and tendon couplings
+    whose coordinates are lengths (:mod:`mjcf_model.transforms.scaling.couplings`),
+    contact margins and gaps, the friction of geoms and contact pairs but for its
+    sliding values (torsional and rolling coefficients are lengths in MuJoCo; values
+    MuJoCo fills from its built-in defaults are written, scaled), position actuators'
+    ``ctrlrange`` on slide joints, crank lengths, and the same attributes in default
+    classes. A ``flexcomp``'s points scale once, through ``scale`` for the ``direct``,
+    ``mesh`` and ``gmsh`` types and through ``spacing`` for the generated ones; a mesh
+    made by an SDF plugin scales through the plugin's length settings
     (:mod:`mjcf_model.transforms.scaling.plugins`).
 
     Args:
