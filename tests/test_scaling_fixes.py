@@ -31,12 +31,9 @@ SCALABLE = ("mass.xml", "flexcomp.xml", "sdf.xml", "includes.xml")
 ALL_FIXTURES = (*SCALABLE, "attach.xml", "sdf_fixed_shape.xml", "sdf_gear.xml")
 
 #: What the complete oracle leaves to other checks, per fixture: an SDF mesh scales
-#: through its plugin's settings (checked below) instead of ``scale``; a flex's
-#: torsional and rolling friction is not scaled yet (MuJoCo's built-in values live on
-#: a ``<contact>`` child the flexcomp may not have; see the report of issue item 1).
+#: through its plugin's settings (checked below) instead of ``scale``.
 IGNORED = {
     "sdf.xml": ("plugin_attr", "plugin_attradr", "npluginattr", "mesh_scale"),
-    "flexcomp.xml": ("flex_friction",),
 }
 
 

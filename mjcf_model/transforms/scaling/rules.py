@@ -232,6 +232,7 @@ _LIGHT = combine(
     _builtin_length("range", "light"),
 )
 _CONTACT = combine(lengths("margin", "gap"), friction_rule("pair"))
+_FLEX_CONTACT = combine(lengths("margin", "gap"), friction_rule("flex"))
 _ACTUATOR = combine(lengths("cranklength"))
 _MESH_SCALE = with_builtin(
     "scale", "mesh", functools.partial(builtin_default, "mesh", "scale"), _per_axis
@@ -325,11 +326,11 @@ _EXPLICIT: dict[str, Rule] = {
     "body/light": _LIGHT,
     "body/flexcomp": _flexcomp,
     "body/flexcomp/elasticity": combine(lengths("thickness")),
-    "body/flexcomp/contact": combine(lengths("margin", "gap")),
+    "body/flexcomp/contact": _FLEX_CONTACT,
     "body/frame": combine(points("pos")),
     "body/replicate": combine(points("offset")),
     "deformable/flex": combine(points("vertex", "nodecoord"), _FLEX_RADIUS),
-    "deformable/flex/contact": combine(lengths("margin", "gap")),
+    "deformable/flex/contact": _FLEX_CONTACT,
     "deformable/flex/elasticity": combine(lengths("thickness")),
     "deformable/skin": combine(points("vertex"), lengths("inflate")),
     "deformable/skin/bone": combine(points("bindpos")),

@@ -7,13 +7,14 @@ adds fails a test until someone decides how it scales.
 
 Uniform scaling is exact: MuJoCo compiles the result to a model whose body, geom,
 site, joint, camera and light positions, geom and site sizes, mesh vertices,
-slide-joint ranges and the torsional and rolling friction of geoms and contact
-pairs are the original's times the factor. Where MuJoCo's built-in default is a
-non-zero length (site size, camera ``ipd``, light ``bulbradius`` and ``range``,
-tendon ``width``, mesh ``scale``, torsional and rolling friction) and nothing in
-the model sets it, the scaled value is written out (friction once, in the main
-default class: :mod:`mjcf_model.transforms.scaling.friction`). Three per-axis
-factors follow robosuite's conventions and are an approximation (see :func:`scaled`).
+slide-joint ranges and the torsional and rolling friction of geoms, flexes and
+contact pairs are the original's times the factor. Where MuJoCo's built-in
+default is a non-zero length (site size, camera ``ipd``, light ``bulbradius`` and
+``range``, tendon ``width``, mesh ``scale``, torsional and rolling friction) and
+nothing in the model sets it, the scaled value is written out (friction once, in
+the main default class, or on a flex's ``<contact>``:
+:mod:`mjcf_model.transforms.scaling.friction`). Three per-axis factors follow
+robosuite's conventions and are an approximation (see :func:`scaled`).
 
 >>> from mjcf_model import Body, Geom, Joint
 >>> arm = Body(pos=[0, 0, 1], children=[Geom(type="capsule", size=[0.05, 0.2]),
@@ -35,7 +36,11 @@ import numpy.typing as npt
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, with_attributes
 from mjcf_model.transforms.scaling.context import ScaleContext
-from mjcf_model.transforms.scaling.friction import with_friction_defaults
+from mjcf_model.transforms.scaling.friction import (
+    FLEX_KEYS,
+    with_flex_contact,
+    with_friction_defaults,
+)
 from mjcf_model.transforms.scaling.pieces import NO_LENGTHS
 from mjcf_model.transforms.scaling.plugins import SDF_SETTINGS_KEYS, with_sdf_settings
 from mjcf_model.transforms.scaling.rules import RULES
@@ -83,8 +88,8 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     lengths and widths, fixed tendon lengths when a slide joint is in them (and then
     their hinges' ``coef``, a lever arm), the ``polycoef`` of joint and tendon couplings
     whose coordinates are lengths (:mod:`mjcf_model.transforms.scaling.couplings`),
-    contact margins and gaps, the friction of geoms and contact pairs but for its
-    sliding values (torsional and rolling coefficients are lengths in MuJoCo; values
+    contact margins and gaps, the friction of geoms, flexes and contact pairs but for
+    its sliding values (torsional and rolling coefficients are lengths in MuJoCo; values
     MuJoCo fills from its built-in defaults are written, scaled), position actuators'
     ``ctrlrange`` on slide joints, crank lengths, and the same attributes in default
     classes. A ``flexcomp``'s points scale once, through ``scale`` for the ``direct``,
@@ -139,6 +144,8 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
         changed = with_attributes(element, RULES[key](element, ancestors, context))
         if key in SDF_SETTINGS_KEYS:
             return with_sdf_settings(changed, key, ancestors, context)
+        if key in FLEX_KEYS:
+            return with_flex_contact(changed, context)
         if key == "mujoco":
             return with_friction_defaults(changed, context)
         return changed
