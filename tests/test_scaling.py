@@ -12,18 +12,18 @@ from hypothesis import strategies as st
 
 from mjcf_model import Body, Geom, Mujoco, Site, compiled
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import get_attribute
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.strategies import models
 from mjcf_model.transforms.scaling.pieces import NO_LENGTHS
 from mjcf_model.transforms.scaling.rules import RULES, UNSCALED_BY_DECISION
 from mjcf_model.transforms.scaling.scaled import scaled
-from mjcf_model.tree.traversal import map_tree, walk
+from mjcf_model.tree.traversal import map_tree
 from serializers import dumps, load, loads, to_dict
 from tests.conftest import compiling_corpus, corpus_id
 from tests.oracles import trees_close
 from tests.scaling_oracle import scaled_model_problems
+from tests.skin_files import skin_file
 
 CORPUS = compiling_corpus()
 
@@ -31,15 +31,6 @@ CORPUS = compiling_corpus()
 LENGTH_ATTRIBUTES = frozenset(
     {"pos", "size", "fromto", "anchor", "margin", "gap", "vertex", "offset", "bindpos", "radius"}
 )
-
-
-#: Skins read from a file: ``scaled`` cannot scale their vertices and bind poses, which
-#: the file holds (dm_control's dogs); every other corpus skin is written in the model.
-SKIN_FILE_FIELDS = ("skin_vert", "skin_bonebindpos")
-
-
-def _skin_file(model: Mujoco) -> bool:
-    return any(e.tag == "skin" and get_attribute(e, "file") for _, e in walk(model))
 
 
 @pytest.mark.parametrize("path", CORPUS, ids=corpus_id)
@@ -52,8 +43,7 @@ def test_corpus_model_scaled_by_two_changes_every_field_as_classified(path: Path
     model = load(path, inline_includes=True)
     changed = compiled(scaled(model, 2))
     original = mujoco.MjModel.from_xml_path(str(path))
-    ignore = SKIN_FILE_FIELDS if _skin_file(model) else ()
-    assert scaled_model_problems(original, changed, 2.0, ignore=ignore) == []
+    assert scaled_model_problems(original, changed, 2.0) == []
 
 
 @given(models())
@@ -227,3 +217,30 @@ def test_slide_joint_targets_scale_where_joints_slide() -> None:
     assert np.allclose(changed.actuator_ctrlrange[1], original.actuator_ctrlrange[1])
     assert np.allclose(changed.tendon_range[0], 2 * original.tendon_range[0])
     assert np.allclose(changed.tendon_range[1], original.tendon_range[1])
+
+
+#: A model whose skin MuJoCo reads from ``sheet.skn``, bound to its three bodies.
+_SKINNED = """<mujoco><asset><skin name="sheet" file="sheet.skn" inflate="0.01"/></asset>
+<worldbody><body name="a"><geom size="0.05"/></body><body name="b" pos="0.1 0 0">
+<geom size="0.05"/></body><body name="c" pos="0 0.1 0"><geom size="0.05"/></body></worldbody>
+</mujoco>"""
+
+
+@pytest.mark.parametrize("factor", [2.0, 0.5])
+def test_skin_read_from_a_file_scales_its_vertices_and_bind_poses(
+    tmp_path: Path, factor: float
+) -> None:
+    """A loaded model's ``.skn`` skin is written inline and compiles with its lengths scaled."""
+    skin_file(tmp_path / "sheet.skn", ("a", "b", "c"))
+    path = tmp_path / "model.xml"
+    path.write_text(_SKINNED)
+    original = mujoco.MjModel.from_xml_path(str(path))
+    assert np.any(original.skin_vert != 0) and np.any(original.skin_bonebindpos != 0)
+    changed = compiled(scaled(load(path), factor))
+    assert scaled_model_problems(original, changed, factor) == []
+
+
+def test_skin_read_from_a_file_without_the_folder_is_refused() -> None:
+    """Without its folder the skin's file cannot be read: scaling says to write it inline."""
+    with pytest.raises(MjcfValueError, match=r"skin 'sheet' is read from 'sheet\.skn'.*inline"):
+        scaled(loads(_SKINNED), 2)

@@ -34,7 +34,7 @@ import numpy as np
 import numpy.typing as npt
 
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import AnyElement, with_attributes
+from mjcf_model.nodes.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.transforms.scaling.context import ScaleContext
 from mjcf_model.transforms.scaling.friction import (
     FLEX_KEYS,
@@ -45,7 +45,13 @@ from mjcf_model.transforms.scaling.pieces import NO_LENGTHS
 from mjcf_model.transforms.scaling.plugins import SDF_SETTINGS_KEYS, with_sdf_settings
 from mjcf_model.transforms.scaling.rules import RULES
 from mjcf_model.tree.defaults import DefaultClasses
-from mjcf_model.tree.traversal import GUESS, map_elements, refuse_opaque
+from mjcf_model.tree.traversal import (
+    GUESS,
+    SKIN_KEYS,
+    map_elements,
+    refuse_file_skin,
+    refuse_opaque,
+)
 
 __all__ = ["MassPolicy", "scaled", "three_factors"]
 
@@ -115,8 +121,11 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
 
     Raises:
         MjcfValueError: for a factor that is not positive, a kept ``<include>``, an
-            ``<attach>`` (the attached model is another file: scale it first), or a
-            mesh or geom made by a plugin other than MuJoCo's torus, bowl and gear SDFs.
+            ``<attach>`` (the attached model is another file: scale it first), a
+            mesh or geom made by a plugin other than MuJoCo's torus, bowl and gear
+            SDFs, or a skin read from a ``.skn`` file in a model that does not know
+            its folder (a loaded model has its skin files written inline first;
+            otherwise call ``serializers.skins.inline_skin_files(model, folder)``).
 
     Example:
         >>> from mjcf_model import Inertial
@@ -129,6 +138,9 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
         raise MjcfValueError(f"mass policy is 'keep' or 'volume', found {mass!r}")
     if factors == (1.0, 1.0, 1.0):
         return node
+    from serializers.skins import with_file_skins_inline
+
+    node = with_file_skins_inline(node)  # a skin file's vertices and bind poses are lengths
     classes = DefaultClasses.of(node)
     context = ScaleContext(factors=factors, mass=mass, classes=classes, model=node)
 
@@ -141,6 +153,8 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
                 "cannot scale an <attach>: the attached model is a separate file; "
                 "scale that model and attach the result"
             )
+        if key in SKIN_KEYS and get_attribute(element, "file"):
+            refuse_file_skin(element, "scale", "holds its vertices and bind poses")
         changed = with_attributes(element, RULES[key](element, ancestors, context))
         if key in SDF_SETTINGS_KEYS:
             return with_sdf_settings(changed, key, ancestors, context)
