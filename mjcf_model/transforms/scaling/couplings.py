@@ -123,8 +123,9 @@ def tendon_coefficient(
     tendon = _tendon_factor(ancestors[-1], context) if ancestors else None
     joint = _joint_factor(get_attribute(element, "joint"), context)
     coef = get_attribute(element, "coef")
-    if tendon is None or joint is None or coef is None or tendon == joint:
+    if tendon is None or joint is None or numbers_of(coef) is None or tendon == joint:
         return {}
+    assert coef is not None
     return {"coef": times(coef, tendon / joint)}
 
 
