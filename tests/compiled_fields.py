@@ -197,7 +197,9 @@ def _equality_data(model: Any, s: float, m: float) -> np.ndarray:
     """Anchors and relative poses of connect and weld; joint and tendon polynomials.
 
     A connect's data are its anchor and the other body's; a weld's its anchor and
-    its relative position, then a quaternion and a torque scale. A joint or tendon coupling
+    its relative position, then a quaternion and a torque scale. Between sites,
+    MuJoCo refuses an anchor or a relative pose and reads neither: their slots keep
+    its built-in data (``0 1 0 ...``), which stay. A joint or tendon coupling
     ``y1 = a0 + a1 y2 + ... + a4 y2**4`` has ``a_k`` in units of ``y1 / y2**k``.
     """
     eq = mujoco.mjtEq
@@ -207,7 +209,8 @@ def _equality_data(model: Any, s: float, m: float) -> np.ndarray:
         zip(model.eq_type, model.eq_obj1id, model.eq_obj2id, strict=True)
     ):
         if kind in (int(eq.mjEQ_CONNECT), int(eq.mjEQ_WELD)):
-            factors[row, :6] = s
+            if model.eq_objtype[row] != mujoco.mjtObj.mjOBJ_SITE:
+                factors[row, :6] = s
         elif kind in (int(eq.mjEQ_JOINT), int(eq.mjEQ_TENDON)):
             of = joints if kind == int(eq.mjEQ_JOINT) else tendons
             f1, f2 = of[first], (of[second] if second >= 0 else 1.0)
