@@ -23,7 +23,6 @@ from serializers import dumps, load, loads, to_dict
 from tests.conftest import compiling_corpus, corpus_id
 from tests.oracles import trees_close
 from tests.scaling_oracle import scaled_model_problems
-from tests.skin_files import skin_file
 
 CORPUS = compiling_corpus()
 
@@ -217,30 +216,3 @@ def test_slide_joint_targets_scale_where_joints_slide() -> None:
     assert np.allclose(changed.actuator_ctrlrange[1], original.actuator_ctrlrange[1])
     assert np.allclose(changed.tendon_range[0], 2 * original.tendon_range[0])
     assert np.allclose(changed.tendon_range[1], original.tendon_range[1])
-
-
-#: A model whose skin MuJoCo reads from ``sheet.skn``, bound to its three bodies.
-_SKINNED = """<mujoco><asset><skin name="sheet" file="sheet.skn" inflate="0.01"/></asset>
-<worldbody><body name="a"><geom size="0.05"/></body><body name="b" pos="0.1 0 0">
-<geom size="0.05"/></body><body name="c" pos="0 0.1 0"><geom size="0.05"/></body></worldbody>
-</mujoco>"""
-
-
-@pytest.mark.parametrize("factor", [2.0, 0.5])
-def test_skin_read_from_a_file_scales_its_vertices_and_bind_poses(
-    tmp_path: Path, factor: float
-) -> None:
-    """A loaded model's ``.skn`` skin is written inline and compiles with its lengths scaled."""
-    skin_file(tmp_path / "sheet.skn", ("a", "b", "c"))
-    path = tmp_path / "model.xml"
-    path.write_text(_SKINNED)
-    original = mujoco.MjModel.from_xml_path(str(path))
-    assert np.any(original.skin_vert != 0) and np.any(original.skin_bonebindpos != 0)
-    changed = compiled(scaled(load(path), factor))
-    assert scaled_model_problems(original, changed, factor) == []
-
-
-def test_skin_read_from_a_file_without_the_folder_is_refused() -> None:
-    """Without its folder the skin's file cannot be read: scaling says to write it inline."""
-    with pytest.raises(MjcfValueError, match=r"skin 'sheet' is read from 'sheet\.skn'.*inline"):
-        scaled(loads(_SKINNED), 2)
