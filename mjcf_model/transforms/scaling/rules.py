@@ -210,7 +210,22 @@ def _area_factor(
 
 #: A cylinder's ``area``; MuJoCo's built-in one (1) is written, scaled, where nothing sets
 #: it (a ``diameter``, scaled as a length, still overrides it).
-_cylinder_area = with_builtin("area", "cylinder", lambda: (1.0,), _area_factor)
+_builtin_area = with_builtin("area", "cylinder", lambda: (1.0,), _area_factor)
+
+
+def _cylinder_area(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> Changes:
+    """The area, unless a diameter sets it: a class's diameter is an area the class gives.
+
+    MuJoCo turns a ``diameter`` into the area of the element (or class) writing it,
+    so an area written on an element would override its class's diameter.
+    """
+    unwritten = get_attribute(element, "area") is None
+    diameter = context.classes.resolve(element, ancestors, "diameter", "cylinder")
+    if unwritten and diameter is not None:
+        return {}
+    return _builtin_area(element, ancestors, context)
 
 
 _GEOM = combine(
