@@ -16,12 +16,14 @@ from mjcf_model.transforms.scaling.scaled import scaled
 from serializers import dumps, loads
 from tests.scaling_oracle import scaled_model_problems
 
-#: Slide joints on two axes and a hinge; a spatial tendon; fixed tendons over hinges
-#: only, slides only and both; tendon couplings between every kind, and one alone.
+#: Slide joints on two axes and a hinge; a spatial tendon whose spring length MuJoCo
+#: measures (``-1 -1``); fixed tendons over hinges only, slides only and both; tendon
+#: couplings between every kind, and one alone.
 _MODEL = """<mujoco><worldbody><body><joint name="x" type="slide" axis="1 0 0" ref="0.1"/>
 <joint name="h" type="hinge" axis="0 1 0" ref="0.3"/><geom size="0.1"/><site name="a"/>
 <body pos="0 0 1"><joint name="z" type="slide"/><geom size="0.1"/><site name="b" pos="0.2 0 0"/>
-</body></body></worldbody><tendon><spatial name="rope"><site site="a"/><site site="b"/></spatial>
+</body></body></worldbody><tendon>
+<spatial name="rope" springlength="-1 -1" stiffness="1"><site site="a"/><site site="b"/></spatial>
 <fixed name="hinges"><joint joint="h" coef="1.5"/></fixed>
 <fixed name="slides" range="-1 1" limited="true"><joint joint="x" coef="2"/>
 <joint joint="z" coef="-1"/></fixed>

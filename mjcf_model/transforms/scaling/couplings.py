@@ -85,8 +85,9 @@ def _materialized(attribute: str) -> Rule:
         element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
     ) -> Changes:
         value = context.classes.resolve(element, ancestors, attribute, "tendon")
-        if numbers_of(value) is None:
-            return {}
+        numbers = numbers_of(value)
+        if numbers is None or (attribute == "springlength" and set(numbers) == {-1.0}):
+            return {}  # ``-1 -1``: MuJoCo's "the length at qpos_spring", measured scaled
         assert value is not None
         return {attribute: times(value, context.mean)}
 
