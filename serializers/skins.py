@@ -39,7 +39,7 @@ from mjcf_model.nodes.asset import Bone, Skin
 from mjcf_model.nodes.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.tree.traversal import map_elements
+from mjcf_model.tree.traversal import SKIN_KEYS, map_elements
 
 __all__ = ["inline_skin_files", "read_skin", "skin_bone_names", "with_file_skins_inline"]
 
@@ -189,10 +189,6 @@ def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str] | None = 
         return build_node(type(inline), {"children": (*inline.children, *data.children)}, inline)
 
     return map_elements(visit, model)
-
-
-#: The schema keys of skins, which may name their bodies inside a ``.skn`` file.
-SKIN_KEYS = ("asset/skin", "deformable/skin")
 
 
 def with_file_skins_inline(node: AnyElement) -> AnyElement:

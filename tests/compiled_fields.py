@@ -89,13 +89,31 @@ def _qvel(model: Any, s: float, m: float) -> np.ndarray:
 
 
 def tendon_factors(model: Any, s: float) -> np.ndarray:
-    """Per tendon: ``s`` for a spatial tendon and a fixed one whose joints all slide, else 1."""
+    """Per tendon: ``s`` for a spatial tendon and a fixed one over a slide joint, else 1.
+
+    A fixed tendon's length ``sum(coef * q)`` over hinges alone is an angle; with a
+    slide joint in it, it is a length (a hinge's ``coef`` is then a lever arm).
+    """
     factors = np.ones(model.ntendon)
     for tendon, (start, count) in enumerate(zip(model.tendon_adr, model.tendon_num, strict=True)):
-        spatial = np.any(model.wrap_type[start : start + count] != mujoco.mjtWrap.mjWRAP_JOINT)
-        joints = model.wrap_objid[start : start + count]
-        if spatial or np.all(model.jnt_type[joints] == _SLIDE):
+        kinds, ids = model.wrap_type[start : start + count], model.wrap_objid[start : start + count]
+        spatial = np.any(kinds != mujoco.mjtWrap.mjWRAP_JOINT)
+        if spatial or np.any(model.jnt_type[ids] == _SLIDE):
             factors[tendon] = s
+    return factors
+
+
+def _wrap_parameters(model: Any, s: float, m: float) -> np.ndarray:
+    """A fixed tendon's ``coef``: the tendon's length per unit of its joint's coordinate.
+
+    The other wrap parameters (pulley divisors, side sites) are unitless or ids.
+    """
+    factors = np.ones(model.nwrap)
+    joints, tendons = _joint_factors(model, s), tendon_factors(model, s)
+    for tendon, (start, count) in enumerate(zip(model.tendon_adr, model.tendon_num, strict=True)):
+        for wrap in range(start, start + count):
+            if model.wrap_type[wrap] == mujoco.mjtWrap.mjWRAP_JOINT:
+                factors[wrap] = tendons[tendon] / joints[model.wrap_objid[wrap]]
     return factors
 
 
@@ -112,6 +130,24 @@ def _spatial_tendons(model: Any, s: float, m: float) -> np.ndarray:
     return np.where(np.array(spatial, dtype=bool), s, 1.0)[:, None]
 
 
+def _mixed_site_gears(model: Any) -> np.ndarray:
+    """Per actuator: a site transmission with a refsite whose gear has both parts."""
+    gear = np.asarray(model.actuator_gear)
+    return (
+        (model.actuator_trntype == int(mujoco.mjtTrn.mjTRN_SITE))
+        & (model.actuator_trnid[:, 1] >= 0)
+        & np.any(gear[:, :3] != 0, axis=1)
+        & np.any(gear[:, 3:] != 0, axis=1)
+    )
+
+
+def _actuator_gear(model: Any, s: float, m: float) -> np.ndarray:
+    """Ratios, but for the rotational part of a mixed site gear: a lever arm (times s)."""
+    factors = np.ones(np.shape(model.actuator_gear))
+    factors[_mixed_site_gears(model), 3:] = s
+    return factors
+
+
 def _transmission_factors(model: Any, s: float) -> np.ndarray:
     """Per actuator: the factor of its length (slide joint, tendon, site or crank)."""
     trn = mujoco.mjtTrn
@@ -124,7 +160,9 @@ def _transmission_factors(model: Any, s: float) -> np.ndarray:
             factors[actuator] = joints[target]
         elif kind == int(trn.mjTRN_TENDON):
             factors[actuator] = tendons[target]
-        else:  # site, slider-crank, body: lengths in space
+        elif kind == int(trn.mjTRN_SITE) and not np.any(model.actuator_gear[actuator, :3]):
+            factors[actuator] = 1.0  # a purely rotational gear measures an angle
+        else:  # site, slider-crank, body: lengths in space (a mixed site gear: a length)
             factors[actuator] = s
     return factors
 
@@ -179,8 +217,9 @@ def _equality_data(model: Any, s: float, m: float) -> np.ndarray:
     """Anchors and relative poses of connect and weld; joint and tendon polynomials.
 
     A connect's data are its anchor and the other body's; a weld's its anchor and
-    its relative position, then a quaternion and a torque scale (between sites,
-    unread and unchanged). A joint or tendon coupling
+    its relative position, then a quaternion and a torque scale. Between sites,
+    MuJoCo refuses an anchor or a relative pose and reads neither: their slots keep
+    its built-in data (``0 1 0 ...``), which stay. A joint or tendon coupling
     ``y1 = a0 + a1 y2 + ... + a4 y2**4`` has ``a_k`` in units of ``y1 / y2**k``.
     """
     eq = mujoco.mjtEq
@@ -190,8 +229,7 @@ def _equality_data(model: Any, s: float, m: float) -> np.ndarray:
         zip(model.eq_type, model.eq_obj1id, model.eq_obj2id, strict=True)
     ):
         if kind in (int(eq.mjEQ_CONNECT), int(eq.mjEQ_WELD)):
-            # between sites the sites' frames decide: MuJoCo leaves anchor and relpose unread
-            if int(model.eq_objtype[row]) != int(mujoco.mjtObj.mjOBJ_SITE):
+            if model.eq_objtype[row] != mujoco.mjtObj.mjOBJ_SITE:
                 factors[row, :6] = s
         elif kind in (int(eq.mjEQ_JOINT), int(eq.mjEQ_TENDON)):
             of = joints if kind == int(eq.mjEQ_JOINT) else tendons
@@ -238,7 +276,7 @@ FLOAT_FIELDS: Mapping[str, Multiplier | None] = MappingProxyType(
         "actuator_dynprm": _unchanged,
         "actuator_forcerange": _unchanged,
         "actuator_gainprm": _cylinder_gains,
-        "actuator_gear": _unchanged,
+        "actuator_gear": _actuator_gear,
         "actuator_length0": _actuator_lengths,
         "actuator_lengthrange": _actuator_lengths,
         "actuator_user": _unchanged,
@@ -433,7 +471,7 @@ FLOAT_FIELDS: Mapping[str, Multiplier | None] = MappingProxyType(
         "tendon_stiffnesspoly": _unchanged,
         "tendon_user": _unchanged,
         "tendon_width": _spatial_tendons,
-        "wrap_prm": _unchanged,
+        "wrap_prm": _wrap_parameters,
     }
 )
 
@@ -445,7 +483,6 @@ UNSCALED_BY_DECISION: Mapping[str, str] = MappingProxyType(
         "mat_texrepeat": "repeats per length with texuniform; materials stay",
         "sensor_cutoff": "in the sensor's units, a length for position sensors",
         "jnt_stiffness": "force per length on slide joints; forces are not scaled",
-        "actuator_gear": "a ratio; site transmissions' torque part has a length",
     }
 )
 

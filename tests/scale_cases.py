@@ -217,6 +217,7 @@ def _sdf_cases() -> list[ScaleCase]:
 
 def _body_cases() -> list[ScaleCase]:
     probe = of("body_pos", "body", "probe")
+    friction = lambda compiled: np.asarray(compiled.flex_friction)[:, 1:]  # noqa: E731
     return [
         ScaleCase("body", "pos", model(world='<body name="probe" pos="0.1 0.2 0.3"/>'), probe),
         ScaleCase(
@@ -251,6 +252,7 @@ def _body_cases() -> list[ScaleCase]:
         ScaleCase("body/flexcomp", "radius", model(world=_SHEET), whole("flex_radius")),
         ScaleCase("body/flexcomp/contact", "margin", model(world=_SHEET), whole("flex_margin")),
         ScaleCase("body/flexcomp/contact", "gap", model(world=_SHEET), whole("flex_gap")),
+        ScaleCase("body/flexcomp/contact", "friction", model(world=_SHEET), friction),
         ScaleCase(
             "body/flexcomp",
             "inertiabox",
@@ -287,6 +289,7 @@ def _body_cases() -> list[ScaleCase]:
             "deformable/flex/contact", "margin", model(deformable=_STRAND), whole("flex_margin")
         ),
         ScaleCase("deformable/flex/contact", "gap", model(deformable=_STRAND), whole("flex_gap")),
+        ScaleCase("deformable/flex/contact", "friction", model(deformable=_STRAND), friction),
         *_sdf_cases(),
     ]
 
@@ -308,8 +311,31 @@ def _constraint_cases() -> list[ScaleCase]:
     ]
     eq = lambda compiled: np.asarray(compiled.eq_data)[0][0:3]  # noqa: E731
     pose = lambda compiled: np.asarray(compiled.eq_data)[0][3:6]  # noqa: E731
+    coefficient = lambda compiled: np.asarray(compiled.eq_data)[0][0:1]  # noqa: E731
+    mixed = '<fixed name="mixed"><joint joint="slider" coef="1"/><joint joint="hinge" coef="0.5"/>'
     return [
         *cases,
+        # a fixed tendon over a slide joint is a length: its hinge's coef is a lever arm
+        ScaleCase(
+            "tendon/fixed/joint",
+            "coef",
+            model(tendon=f"{mixed}</fixed>"),
+            lambda compiled: compiled.wrap_prm[
+                compiled.tendon_adr[compiled.tendon("mixed").id] + 1
+            ],
+        ),
+        ScaleCase(
+            "equality/joint",
+            "polycoef",
+            model(equality='<joint joint1="slider" polycoef="0.1"/>'),
+            coefficient,
+        ),
+        ScaleCase(
+            "equality/tendon",
+            "polycoef",
+            model(equality='<tendon tendon1="cord" polycoef="0.1"/>'),
+            coefficient,
+        ),
         ScaleCase("tendon/spatial", "width", spatial, of("tendon_width", "tendon", "strap")),
         ScaleCase(
             "equality/connect",

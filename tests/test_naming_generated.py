@@ -8,7 +8,6 @@ the test asserts what MuJoCo does.
 
 from __future__ import annotations
 
-import struct
 from pathlib import Path
 from typing import Any
 
@@ -25,6 +24,7 @@ from serializers import dumps, from_dict, from_etree, load, loads, to_dict, to_e
 from serializers.skins import inline_skin_files
 from tests.conftest import FIXTURES, MUJOCO_VERSION
 from tests.oracles import RENAMING_FIELDS, prefix_problems
+from tests.skin_files import skin_file
 
 NAMING = FIXTURES / "naming"
 #: Every fixture of this module, the attached parts in ``parts/`` included (hidden files are
@@ -328,18 +328,6 @@ def test_attach_without_model_copies_from_the_same_model() -> None:
 
 
 # -- skins read from files ----------------------------------------------------------------
-
-
-def skin_file(path: Path, bodies: tuple[str, ...]) -> Path:
-    """Write a binary skin of one triangle whose vertex ``i`` is bound to ``bodies[i]``."""
-    data = struct.pack("<4i", 3, 0, 1, len(bodies))
-    data += struct.pack("<9f", 0, 0, 0, 0.1, 0, 0, 0, 0.1, 0)
-    data += struct.pack("<3i", 0, 1, 2)
-    for index, body in enumerate(bodies):
-        data += body.encode().ljust(40, b"\0") + struct.pack("<7f", 0, 0, 0, 1, 0, 0, 0)
-        data += struct.pack("<i", 1) + struct.pack("<i", index) + struct.pack("<f", 1)
-    path.write_bytes(data)
-    return path
 
 
 SKINNED = """<mujoco><asset><skin name="sheet" file="sheet.skn"/></asset><worldbody>

@@ -12,14 +12,13 @@ from hypothesis import strategies as st
 
 from mjcf_model import Body, Geom, Mujoco, Site, compiled
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import get_attribute
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.strategies import models
 from mjcf_model.transforms.scaling.pieces import NO_LENGTHS
 from mjcf_model.transforms.scaling.rules import RULES, UNSCALED_BY_DECISION
 from mjcf_model.transforms.scaling.scaled import scaled
-from mjcf_model.tree.traversal import map_tree, walk
+from mjcf_model.tree.traversal import map_tree
 from serializers import dumps, load, loads, to_dict
 from tests.conftest import compiling_corpus, corpus_id
 from tests.oracles import trees_close
@@ -33,15 +32,6 @@ LENGTH_ATTRIBUTES = frozenset(
 )
 
 
-#: Skins read from a file: ``scaled`` cannot scale their vertices and bind poses, which
-#: the file holds (dm_control's dogs); every other corpus skin is written in the model.
-SKIN_FILE_FIELDS = ("skin_vert", "skin_bonebindpos")
-
-
-def _skin_file(model: Mujoco) -> bool:
-    return any(e.tag == "skin" and get_attribute(e, "file") for _, e in walk(model))
-
-
 @pytest.mark.parametrize("path", CORPUS, ids=corpus_id)
 def test_corpus_model_scaled_by_two_changes_every_field_as_classified(path: Path) -> None:
     """A corpus model scaled by 2 compiles with every field its classified multiple.
@@ -52,8 +42,7 @@ def test_corpus_model_scaled_by_two_changes_every_field_as_classified(path: Path
     model = load(path, inline_includes=True)
     changed = compiled(scaled(model, 2))
     original = mujoco.MjModel.from_xml_path(str(path))
-    ignore = SKIN_FILE_FIELDS if _skin_file(model) else ()
-    assert scaled_model_problems(original, changed, 2.0, ignore=ignore) == []
+    assert scaled_model_problems(original, changed, 2.0) == []
 
 
 @given(models())

@@ -1,4 +1,4 @@
-"""Scaling on constructs real models use: density masses, shells, flexcomps, SDF plugins, includes.
+"""Scaling on constructs real models use: masses, shells, flexcomps, SDFs, includes, skin files.
 
 The fixtures live in ``tests/fixtures/scaling``; MuJoCo compiles each original and
 each scaled copy, and the oracle compares the compiled arrays.
@@ -13,6 +13,7 @@ import mujoco
 import numpy as np
 import pytest
 
+from mjcf_model import compiled
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.tools.check import check_file
 from mjcf_model.tools.compare import compile_text_beside
@@ -20,6 +21,7 @@ from mjcf_model.transforms.scaling.scaled import MassPolicy, scaled
 from serializers import dumps, from_etree, load, loads
 from tests.oracles import friction_problems, scaled_problems
 from tests.scaling_oracle import scaled_model_problems
+from tests.skin_files import skin_file
 
 FIXTURES = Path(__file__).parent / "fixtures" / "scaling"
 
@@ -31,12 +33,9 @@ SCALABLE = ("mass.xml", "flexcomp.xml", "sdf.xml", "includes.xml")
 ALL_FIXTURES = (*SCALABLE, "attach.xml", "sdf_fixed_shape.xml", "sdf_gear.xml")
 
 #: What the complete oracle leaves to other checks, per fixture: an SDF mesh scales
-#: through its plugin's settings (checked below) instead of ``scale``; a flex's
-#: torsional and rolling friction is not scaled yet (MuJoCo's built-in values live on
-#: a ``<contact>`` child the flexcomp may not have; see the report of issue item 1).
+#: through its plugin's settings (checked below) instead of ``scale``.
 IGNORED = {
     "sdf.xml": ("plugin_attr", "plugin_attradr", "npluginattr", "mesh_scale"),
-    "flexcomp.xml": ("flex_friction",),
 }
 
 
@@ -224,3 +223,30 @@ def test_a_size_of_more_than_three_numbers_is_refused_as_mujoco_refuses_it(tag: 
     generic = from_etree(ET.fromstring(text), typed=False)
     with pytest.raises(MjcfValueError, match="at most 3"):
         scaled(generic, 2)
+
+
+#: A model whose skin MuJoCo reads from ``sheet.skn``, bound to its three bodies.
+_SKINNED = """<mujoco><asset><skin name="sheet" file="sheet.skn" inflate="0.01"/></asset>
+<worldbody><body name="a"><geom size="0.05"/></body><body name="b" pos="0.1 0 0">
+<geom size="0.05"/></body><body name="c" pos="0 0.1 0"><geom size="0.05"/></body></worldbody>
+</mujoco>"""
+
+
+@pytest.mark.parametrize("factor", [2.0, 0.5])
+def test_skin_read_from_a_file_scales_its_vertices_and_bind_poses(
+    tmp_path: Path, factor: float
+) -> None:
+    """A loaded model's ``.skn`` skin is written inline and compiles with its lengths scaled."""
+    skin_file(tmp_path / "sheet.skn", ("a", "b", "c"))
+    path = tmp_path / "model.xml"
+    path.write_text(_SKINNED)
+    original = mujoco.MjModel.from_xml_path(str(path))
+    assert np.any(original.skin_vert != 0) and np.any(original.skin_bonebindpos != 0)
+    changed = compiled(scaled(load(path), factor))
+    assert scaled_model_problems(original, changed, factor) == []
+
+
+def test_skin_read_from_a_file_without_the_folder_is_refused() -> None:
+    """Without its folder the skin's file cannot be read: scaling says to write it inline."""
+    with pytest.raises(MjcfValueError, match=r"skin 'sheet' is read from 'sheet\.skn'.*inline"):
+        scaled(loads(_SKINNED), 2)

@@ -1,7 +1,8 @@
 """Scaling friction: torsional and rolling coefficients, MuJoCo's built-in ones too, scale.
 
-MuJoCo compiles each model before and after scaling; ``geom_friction`` and
-``pair_friction`` must keep their sliding values and have the others multiplied.
+MuJoCo compiles each model before and after scaling; ``geom_friction``,
+``pair_friction`` and ``flex_friction`` must keep their sliding values and have
+the others multiplied.
 """
 
 from __future__ import annotations
@@ -19,6 +20,18 @@ from tests.scaling_oracle import scaled_model_problems
 
 #: Two geoms touching the world, so a pair between them compiles.
 _PAIRED = '<geom name="a" size="0.1"/><geom name="b" size="0.1" pos="1 0 0"/>'
+
+#: A flex on three bodies, its ``<contact>`` child replacing ``{contact}``.
+_FLEX = (
+    '<worldbody><body name="v0"/><body name="v1" pos="1 0 0"/><body name="v2" pos="0 1 0"/>'
+    '</worldbody><deformable><flex name="f" dim="2" body="v0 v1 v2" vertex="0 0 0 0 0 0 0 0 0"'
+    ' element="0 1 2">{contact}</flex></deformable>'
+)
+#: A flexcomp, its ``<contact>`` child replacing ``{contact}``.
+_FLEXCOMP = (
+    '<worldbody><body name="base"><flexcomp name="c" type="grid" dim="2" count="3 3 1" mass="1">'
+    "{contact}</flexcomp></body></worldbody>"
+)
 
 #: Models whose friction comes from the geom, a class, a partial value or MuJoCo itself.
 CASES = {
@@ -49,6 +62,14 @@ CASES = {
     f"</default></default><worldbody>{_PAIRED}</worldbody>"
     '<contact><pair geom1="a" geom2="b" class="p"/><pair geom1="b" geom2="a" friction="3 3 3 3 3"/>'
     "</contact>",
+    "flex without contact": _FLEX.format(contact=""),
+    "flex contact without friction": _FLEX.format(contact='<contact margin="0.01"/>'),
+    "flex contact one value": _FLEX.format(contact='<contact friction="0.6"/>'),
+    "flexcomp without contact": _FLEXCOMP.format(contact="<edge/>"),
+    "flexcomp contact two values": _FLEXCOMP.format(contact='<contact friction="0.6 0.02"/>'),
+    "flexcomp contact three values": _FLEXCOMP.format(
+        contact='<contact friction="0.6 0.02 0.003"/>'
+    ),
 }
 
 
@@ -71,6 +92,7 @@ def test_friction_lengths_scale_wherever_the_friction_comes_from(case: str, fact
     original, changed = _compiled(model), _compiled(scaled(model, factor))
     assert scaled_model_problems(original, changed, factor) == []
     assert original.ngeom == changed.ngeom and original.npair == changed.npair
+    assert original.nflex == changed.nflex
 
 
 def test_builtin_friction_is_written_once_in_the_main_class() -> None:

@@ -114,3 +114,19 @@ def test_welds_between_sites_and_spatial_tendons_are_read_as_mujoco_does() -> No
     assert np.array_equal(changed.eq_data, original.eq_data)
     assert changed.tendon_lengthspring[0, 0] == 2 * original.tendon_lengthspring[0, 0]
     assert scaled_model_problems(original, changed, 2.0) == []
+
+
+def test_a_site_gear_mixing_offset_and_rotation_measures_a_scaled_length() -> None:
+    """A site transmission with a refsite and a gear of both kinds: its length doubles."""
+    text = """<mujoco><worldbody>
+      <site name="ref"/>
+      <body name="arm"><joint type="slide"/><geom size=".1"/>
+        <site name="tip" pos=".3 .1 0" euler="0 0 28.6"/></body>
+    </worldbody>
+    <actuator><general site="tip" refsite="ref" gear="1 0 0 0 0 1"/>
+      <general site="tip" refsite="ref" gear="0 0 0 0 0 1"/></actuator></mujoco>"""
+    original, changed = _compiled_pair(text, 2.0)
+    assert original.actuator_length0[0] > 0.3  # both parts measured
+    assert np.isclose(changed.actuator_length0[0], 2 * original.actuator_length0[0], rtol=1e-12)
+    assert np.isclose(changed.actuator_length0[1], original.actuator_length0[1], rtol=1e-12)
+    assert scaled_model_problems(original, changed, 2.0) == []

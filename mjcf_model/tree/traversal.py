@@ -28,6 +28,7 @@ from mjcf_model.nodes.base import (
     Node,
     TypedElement,
     build_node,
+    get_attribute,
     to_children,
 )
 from mjcf_model.schema.namespaces import child_key, guess_context
@@ -35,11 +36,13 @@ from mjcf_model.tree.ancestry import Ancestors
 
 __all__ = [
     "GUESS",
-    "Path",
+    "SKIN_KEYS",
     "ElementVisitor",
+    "Path",
     "keyed_walk",
     "map_elements",
     "map_tree",
+    "refuse_file_skin",
     "refuse_opaque",
     "schema_key",
     "walk",
@@ -266,6 +269,36 @@ their files are not part of the tree; load it with inline_includes=True
             "them into bodies, joints and geoms whose names and sizes are not in the tree "
             "(MuJoCo 4.0 removed them); write them as <replicate> or <flexcomp> instead"
         )
+
+
+#: The schema keys of skins, which may keep their vertices, bind poses and bodies in a file.
+SKIN_KEYS = frozenset({"asset/skin", "deformable/skin"})
+
+
+def refuse_file_skin(skin: AnyElement, action: str, because: str) -> None:
+    """Raise because a transform needs what a skin keeps in its ``.skn`` file.
+
+    A skin read from a file has its vertices, bind poses and the names of its
+    bodies there, not in the tree; a model loaded from a file can have it written
+    inline (``serializers.skins.inline_skin_files``).
+
+    Example:
+        >>> from mjcf_model.nodes.base import GenericElement
+        >>> skin = GenericElement(tag="skin", attributes={"file": "s.skn"})
+        >>> refuse_file_skin(skin, "scale", "holds its vertices")
+        Traceback (most recent call last):
+        ...
+        mjcf_model.errors.MjcfValueError: cannot scale a model where a skin is read from \
+'s.skn': the file holds its vertices; write the skin inline first with \
+serializers.skins.inline_skin_files(model, model_folder)
+
+    """
+    name, file = get_attribute(skin, "name"), get_attribute(skin, "file")
+    called = f"skin {name!r}" if name else "a skin"
+    raise MjcfValueError(
+        f"cannot {action} a model where {called} is read from {file!r}: the file {because}; "
+        "write the skin inline first with serializers.skins.inline_skin_files(model, model_folder)"
+    )
 
 
 def walk(node: Node) -> Iterator[tuple[Path, AnyElement]]:

@@ -50,7 +50,14 @@ from mjcf_model.transforms.naming.generated import (
     declarations,
 )
 from mjcf_model.tree.queries import attribute_values
-from mjcf_model.tree.traversal import GUESS, keyed_walk, map_elements, refuse_opaque
+from mjcf_model.tree.traversal import (
+    GUESS,
+    SKIN_KEYS,
+    keyed_walk,
+    map_elements,
+    refuse_file_skin,
+    refuse_opaque,
+)
 from mjcf_model.values import Value
 
 __all__ = [
@@ -67,7 +74,6 @@ __all__ = [
 ALL: frozenset[str] = NAMESPACES
 
 #: Skins, which may read the bodies of their bones from a file.
-_SKINS = frozenset({"asset/skin", "deformable/skin"})
 
 #: ``rename(namespace, name)``: the new name, or the same one to keep it.
 Renamer = Callable[[str, str], str]
@@ -165,7 +171,7 @@ _PLANS = {key: _Plan(spec) for key, spec in SCHEMA.items() if spec.declares or s
 _SAME_MODEL_PLAN = _Plan(SAME_MODEL_ATTACH)
 
 #: The keys of elements renaming leaves alone when they have no children.
-_NOTHING_TO_RENAME = frozenset(SCHEMA) - _PLANS.keys() - _SKINS - {"include", "body/attach"}
+_NOTHING_TO_RENAME = frozenset(SCHEMA) - _PLANS.keys() - SKIN_KEYS - {"include", "body/attach"}
 
 
 def _renamed_attributes(
@@ -227,7 +233,7 @@ def _apply(node: AnyElement, rename: Renamer, attach_prefix: str | None) -> AnyE
     def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
         if key is None or key == "include":
             refuse_opaque(element, key, "rename names in")
-        if key in _SKINS and get_attribute(element, "file"):
+        if key in SKIN_KEYS and get_attribute(element, "file"):
             _refuse_file_skin(element, generated().renames_bodies(rename, attach_prefix))
         changes = _renamed_attributes(element, key, rename, follow, base_dir)
         if attach_prefix and key == "body/attach":
@@ -240,15 +246,12 @@ def _apply(node: AnyElement, rename: Renamer, attach_prefix: str | None) -> AnyE
 
 def _refuse_file_skin(skin: AnyElement, renames_bodies: bool) -> None:
     """Raise when bodies are renamed while a skin names its bodies inside a file."""
-    if not renames_bodies:
-        return
-    name, file = get_attribute(skin, "name"), get_attribute(skin, "file")
-    called = f"skin {name!r}" if name else "a skin"
-    raise MjcfValueError(
-        f"cannot rename the bodies of a model where {called} is read from {file!r}: the file "
-        "names the bodies its bones bind to, and MuJoCo would not find them; write the skin "
-        "inline first with serializers.skins.inline_skin_files(model, model_folder)"
-    )
+    if renames_bodies:
+        refuse_file_skin(
+            skin,
+            "rename the bodies of",
+            "names the bodies its bones bind to, and MuJoCo would not find them",
+        )
 
 
 def renamed(

@@ -1,11 +1,11 @@
 """Scaling friction: the torsional and rolling coefficients are lengths, built-in ones too.
 
-A geom's ``friction`` is "sliding torsional rolling", a contact pair's "tangent1
-tangent2 spin roll1 roll2": the values from the torsional (spin) one on are
-lengths and scale by the mean factor, the sliding (tangential) ones stay. MuJoCo
-fills the values nobody writes from its built-in defaults (``1 0.005 0.0001``
-for geoms, ``1 1 0.005 0.0001 0.0001`` for pairs; a pair does not take them from
-its geoms), and those must scale too:
+A geom's and a flex's ``friction`` is "sliding torsional rolling", a contact
+pair's "tangent1 tangent2 spin roll1 roll2": the values from the torsional (spin)
+one on are lengths and scale by the mean factor, the sliding (tangential) ones
+stay. MuJoCo fills the values nobody writes from its built-in defaults (``1 0.005
+0.0001`` for geoms and flexes, ``1 1 0.005 0.0001 0.0001`` for pairs; a pair does
+not take them from its geoms), and those must scale too:
 
 * in a whole model, the main default class writes every value, the missing ones
   its built-in defaults scaled: ``<default><geom friction="1 0.01 0.0002"/>``
@@ -14,7 +14,9 @@ its geoms), and those must scale too:
   written only when some geom (or pair) leaves a value unwritten;
 * in a part of a model (a body, a ``<contact>`` section), whose classes are not
   known, each geom and pair writing fewer values is completed itself, as if no
-  class set its friction.
+  class set its friction;
+* a flex has no default class: its ``<contact>`` child is completed, and a flex
+  (or flexcomp) without one is given one (:func:`with_flex_contact`).
 
 >>> from mjcf_model import Geom
 >>> rule = friction_rule("geom")
@@ -29,6 +31,7 @@ from collections.abc import Sequence
 from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement, get_attribute
 from mjcf_model.nodes.contact import Pair
 from mjcf_model.nodes.default import Default
+from mjcf_model.nodes.deformable import FlexContact
 from mjcf_model.nodes.geom import Geom
 from mjcf_model.transforms.scaling.context import ScaleContext
 from mjcf_model.transforms.scaling.pieces import Changes, Rule, builtin_default, combine, parts
@@ -36,10 +39,10 @@ from mjcf_model.tree.defaults import MAIN
 from mjcf_model.tree.traversal import keyed_walk, with_children
 from mjcf_model.values import numbers_of
 
-__all__ = ["friction_rule", "with_friction_defaults"]
+__all__ = ["FLEX_KEYS", "friction_rule", "with_flex_contact", "with_friction_defaults"]
 
 #: Where the lengths start in the friction of each tag.
-_FIRST_LENGTH = {"geom": 1, "pair": 2}
+_FIRST_LENGTH = {"geom": 1, "pair": 2, "flex": 1}
 #: The class of the default element that gives each tag its friction.
 _DEFAULTS: dict[str, type[Geom] | type[Pair]] = {"geom": Geom, "pair": Pair}
 #: The schema keys of the elements whose friction MuJoCo completes from its defaults.
@@ -93,7 +96,7 @@ def _unwritten(context: ScaleContext) -> frozenset[str]:
 
 
 def friction_rule(tag: str) -> Rule:
-    """The rule of the ``friction`` of ``tag`` elements (``"geom"`` or ``"pair"``), defaults too.
+    """The rule of the ``friction`` of ``tag`` elements (``"geom"``, ``"pair"``, ``"flex"``).
 
     Written values scale from the torsional one on. The main default class of a
     whole model, and an element outside default classes in a part of a model,
@@ -111,7 +114,7 @@ def friction_rule(tag: str) -> Rule:
     def complete(
         element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
     ) -> Changes:
-        if not _whole_model(context):
+        if tag not in _DEFAULTS or not _whole_model(context):  # no class gives it
             in_default = any(a.tag == "default" for a in ancestors)
             return {} if in_default else _completion(tag, element, context)
         main = len(ancestors) == 2 and ancestors[-1].tag == "default"
@@ -151,3 +154,25 @@ def with_friction_defaults(model: AnyElement, context: ScaleContext) -> AnyEleme
             return with_children(model, children)
     at = next((i for i, c in elements if c.tag not in _HEAD), len(children))
     return with_children(model, [*children[:at], Default(children=written), *children[at:]])
+
+
+#: The schema keys of the elements whose contact settings a ``<contact>`` child holds.
+FLEX_KEYS = frozenset({"body/flexcomp", "deformable/flex"})
+
+
+def with_flex_contact(flex: AnyElement, context: ScaleContext) -> AnyElement:
+    """A scaled flex (or flexcomp) with a ``<contact>`` child giving its friction.
+
+    One that has a ``<contact>`` child had it completed by :func:`friction_rule`;
+    otherwise one is added with MuJoCo's built-in friction, scaled.
+
+    Example:
+        >>> from mjcf_model import Flexcomp
+        >>> with_flex_contact(Flexcomp(name="f"), ScaleContext(factors=(2.0,) * 3)).children
+        (FlexContact(friction=(1.0, 0.01, 0.0002)),)
+
+    """
+    if any(child.tag == "contact" for child in flex.elements):
+        return flex
+    contact = FlexContact(friction=_completed("flex", (), context))
+    return with_children(flex, [*flex.children, contact])

@@ -18,6 +18,14 @@ from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, get_attribute
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.transforms.scaling.context import ScaleContext, times
+from mjcf_model.transforms.scaling.couplings import (
+    fixed_tendon,
+    joint_coupling,
+    slide_factor,
+    spatial_tendon,
+    tendon_coefficient,
+    tendon_coupling,
+)
 from mjcf_model.transforms.scaling.friction import friction_rule
 from mjcf_model.transforms.scaling.mass import geom_density
 from mjcf_model.transforms.scaling.pieces import (
@@ -97,12 +105,6 @@ _site_size = with_builtin(
 )
 
 
-def _slide_factor(kind: object, axis: object, context: ScaleContext) -> float:
-    if kind != "slide":
-        return 1.0
-    return context.along(numbers_of(axis) or (0.0, 0.0, 1.0))  # type: ignore[arg-type]
-
-
 _JOINT_LENGTHS = ("range", "ref", "springref", "margin")
 _JOINT_READ = ("type", "axis", *_JOINT_LENGTHS)
 
@@ -120,7 +122,7 @@ def _joint(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleC
         kind = inherited["type"][0]
     if axis is None and "axis" in inherited:
         axis = inherited["axis"][0]
-    factor = _slide_factor(kind, axis, context)
+    factor = slide_factor(kind, axis, context)
     changes: Changes = {}
     for attribute, own in zip(_JOINT_LENGTHS, lengths_written, strict=True):
         if own is not None:
@@ -134,52 +136,12 @@ def _joint(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleC
         provider_given = classes.given(provider, "joint")
         provider_kind = provider_given.get("type")
         provider_axis = provider_given.get("axis")
-        provider_factor = _slide_factor(
+        provider_factor = slide_factor(
             provider_kind and provider_kind[0], provider_axis and provider_axis[0], context
         )
         if provider_factor != factor:
             changes[attribute] = times(value, factor)
     return changes
-
-
-def _materialized(attribute: str, tag: str) -> Rule:
-    """Write a tendon length scaled on the element, whether its own or inherited.
-
-    The default tendon is shared by spatial and fixed tendons, so it is left alone.
-    """
-
-    def rule(
-        element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
-    ) -> Changes:
-        value = context.classes.resolve(element, ancestors, attribute, tag)
-        if numbers_of(value) is None:
-            return {}
-        assert value is not None
-        return {attribute: times(value, context.mean)}
-
-    return rule
-
-
-_TENDON_LENGTHS = [_materialized(a, "tendon") for a in ("range", "springlength", "margin")]
-
-
-def _spatial_tendon(
-    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
-) -> Changes:
-    changes = combine(*_TENDON_LENGTHS)(element, ancestors, context)
-    width = numbers_of(context.classes.resolve(element, ancestors, "width", "tendon"))
-    changes["width"] = (width or builtin_default("tendon", "width"))[0] * context.mean
-    return changes
-
-
-def _fixed_tendon(
-    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
-) -> Changes:
-    """A fixed tendon's length is a length only when every joint in it slides."""
-    joints = [context.joint(get_attribute(c, "joint")) for c in element.elements]
-    if not joints or any(j is None or j.type != "slide" for j in joints):
-        return {}
-    return combine(*_TENDON_LENGTHS)(element, ancestors, context)
 
 
 def _position_ctrlrange(
@@ -240,50 +202,30 @@ def _weld_relpose(
     }
 
 
-def _joint_coupling(
-    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
-) -> Changes:
-    """``joint1 = a0 + a1 joint2 + ... + a4 joint2**4``: ``a_k`` is in ``joint1 / joint2**k``.
-
-    So with slide joints the coefficients scale (MuJoCo's built-in ``0 1 0 0 0``
-    is written where a hinge is coupled to a slide joint).
-    """
-    first = context.joint(get_attribute(element, "joint1"))
-    second = context.joint(get_attribute(element, "joint2"))
-    if first is None:
-        return {}
-    f1 = _slide_factor(first.type, first.axis, context)
-    f2 = 1.0 if second is None else _slide_factor(second.type, second.axis, context)
-    factors = [f1 / f2**k for k in range(5)]
-    if all(f == 1.0 for f in factors):
-        return {}
-    own = numbers_of(get_attribute(element, "polycoef")) or ()
-    values = (*own, *(0.0, 1.0, 0.0, 0.0, 0.0)[len(own) :])
-    return {"polycoef": tuple(v * f for v, f in zip(values, factors, strict=True))}
-
-
 def _area_factor(
     element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> float:
     return context.mean**2
 
 
-#: A cylinder's ``area`` where MuJoCo's built-in one (1) holds: written, scaled.
+#: A cylinder's ``area``; MuJoCo's built-in one (1) is written, scaled, where nothing sets
+#: it (a ``diameter``, scaled as a length, still overrides it).
 _builtin_area = with_builtin("area", "cylinder", lambda: (1.0,), _area_factor)
 
 
 def _cylinder_area(
     element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
-    """A cylinder's ``area`` scaled; MuJoCo's built-in one written, scaled, where nothing sets it.
+    """The area, unless a diameter sets it: a class's diameter is an area the class gives.
 
-    A ``diameter`` (its own or a class's, scaled as a length) gives the area
-    instead: an ``area`` written on the element would override a class's diameter.
+    MuJoCo turns a ``diameter`` into the area of the element (or class) writing it,
+    so an area written on an element would override its class's diameter.
     """
-    if context.classes.resolve(element, ancestors, "diameter") is None:
-        return _builtin_area(element, ancestors, context)
-    area = get_attribute(element, "area")
-    return {} if area is None else {"area": times(area, _area_factor(element, ancestors, context))}
+    unwritten = get_attribute(element, "area") is None
+    diameter = context.classes.resolve(element, ancestors, "diameter", "cylinder")
+    if unwritten and diameter is not None:
+        return {}
+    return _builtin_area(element, ancestors, context)
 
 
 _GEOM = combine(
@@ -305,7 +247,34 @@ _LIGHT = combine(
     _builtin_length("range", "light"),
 )
 _CONTACT = combine(lengths("margin", "gap"), friction_rule("pair"))
-_ACTUATOR = combine(lengths("cranklength"))
+_FLEX_CONTACT = combine(lengths("margin", "gap"), friction_rule("flex"))
+
+
+def _site_gear(
+    element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+) -> Changes:
+    """A site transmission's rotational gear where its length mixes lengths and angles.
+
+    With a ``refsite`` MuJoCo measures ``gear[:3]`` along the site's offset and
+    ``gear[3:]`` along its rotation. Where both parts are set the length is a
+    length, so the rotational part is a lever arm and scales, as a hinge's
+    ``coef`` does in a fixed tendon that also holds a slide joint. A purely
+    translational gear needs nothing; a purely rotational one measures an angle.
+    """
+    if get_attribute(element, "site") is None or get_attribute(element, "refsite") is None:
+        return {}
+    own = get_attribute(element, "gear")
+    given = context.classes.given_to(element, ancestors).get("gear")
+    gear = numbers_of(own if own is not None else (given[0] if given else None))
+    if gear is None:
+        return {}
+    full = (*gear, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)[:6]
+    if not any(full[:3]) or not any(full[3:]):
+        return {}
+    return {"gear": (*full[:3], *(v * context.mean for v in full[3:]))}
+
+
+_ACTUATOR = combine(lengths("cranklength"), _site_gear)
 _MESH_SCALE = with_builtin(
     "scale", "mesh", functools.partial(builtin_default, "mesh", "scale"), _per_axis
 )
@@ -398,19 +367,21 @@ _EXPLICIT: dict[str, Rule] = {
     "body/light": _LIGHT,
     "body/flexcomp": _flexcomp,
     "body/flexcomp/elasticity": combine(lengths("thickness")),
-    "body/flexcomp/contact": combine(lengths("margin", "gap")),
+    "body/flexcomp/contact": _FLEX_CONTACT,
     "body/frame": combine(points("pos")),
     "body/replicate": combine(points("offset")),
     "deformable/flex": combine(points("vertex", "nodecoord"), _FLEX_RADIUS),
-    "deformable/flex/contact": combine(lengths("margin", "gap")),
+    "deformable/flex/contact": _FLEX_CONTACT,
     "deformable/flex/elasticity": combine(lengths("thickness")),
     "deformable/skin": combine(points("vertex"), lengths("inflate")),
     "deformable/skin/bone": combine(points("bindpos")),
     "contact/pair": _CONTACT,
-    "tendon/spatial": _spatial_tendon,
-    "tendon/fixed": _fixed_tendon,
+    "tendon/spatial": spatial_tendon,
+    "tendon/fixed": fixed_tendon,
+    "tendon/fixed/joint": tendon_coefficient,
     "equality/connect": combine(points("anchor")),
-    "equality/joint": _joint_coupling,
+    "equality/joint": joint_coupling,
+    "equality/tendon": tendon_coupling,
     "equality/weld": combine(points("anchor"), _weld_relpose),
     "actuator/position": combine(_ACTUATOR, _position_ctrlrange),
     "actuator/cylinder": combine(_ACTUATOR, lengths("diameter"), _cylinder_area),

@@ -7,13 +7,14 @@ adds fails a test until someone decides how it scales.
 
 Uniform scaling is exact: MuJoCo compiles the result to a model whose body, geom,
 site, joint, camera and light positions, geom and site sizes, mesh vertices,
-slide-joint ranges and the torsional and rolling friction of geoms and contact
-pairs are the original's times the factor. Where MuJoCo's built-in default is a
-non-zero length (site size, camera ``ipd``, light ``bulbradius`` and ``range``,
-tendon ``width``, mesh ``scale``, torsional and rolling friction) and nothing in
-the model sets it, the scaled value is written out (friction once, in the main
-default class: :mod:`mjcf_model.transforms.scaling.friction`). Three per-axis
-factors follow robosuite's conventions and are an approximation (see :func:`scaled`).
+slide-joint ranges and the torsional and rolling friction of geoms, flexes and
+contact pairs are the original's times the factor. Where MuJoCo's built-in
+default is a non-zero length (site size, camera ``ipd``, light ``bulbradius`` and
+``range``, tendon ``width``, mesh ``scale``, torsional and rolling friction) and
+nothing in the model sets it, the scaled value is written out (friction once, in
+the main default class, or on a flex's ``<contact>``:
+:mod:`mjcf_model.transforms.scaling.friction`). Three per-axis factors follow
+robosuite's conventions and are an approximation (see :func:`scaled`).
 
 >>> from mjcf_model import Body, Geom, Joint
 >>> arm = Body(pos=[0, 0, 1], children=[Geom(type="capsule", size=[0.05, 0.2]),
@@ -33,14 +34,24 @@ import numpy as np
 import numpy.typing as npt
 
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import AnyElement, with_attributes
+from mjcf_model.nodes.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.transforms.scaling.context import ScaleContext
-from mjcf_model.transforms.scaling.friction import with_friction_defaults
+from mjcf_model.transforms.scaling.friction import (
+    FLEX_KEYS,
+    with_flex_contact,
+    with_friction_defaults,
+)
 from mjcf_model.transforms.scaling.pieces import NO_LENGTHS
 from mjcf_model.transforms.scaling.plugins import SDF_SETTINGS_KEYS, with_sdf_settings
 from mjcf_model.transforms.scaling.rules import RULES
 from mjcf_model.tree.defaults import DefaultClasses
-from mjcf_model.tree.traversal import GUESS, map_elements, refuse_opaque
+from mjcf_model.tree.traversal import (
+    GUESS,
+    SKIN_KEYS,
+    map_elements,
+    refuse_file_skin,
+    refuse_opaque,
+)
 
 __all__ = ["MassPolicy", "scaled", "three_factors"]
 
@@ -77,18 +88,19 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     """A copy of ``node`` with every length multiplied by ``factor``.
 
     Lengths are positions (bodies, frames, geoms, sites, joints, cameras, lights,
-    inertials, equality anchors, keyframe mocap positions and the length parts
-    of keyframe ``qpos``/``qvel``), geom and site sizes (by type), ``fromto``,
-    mesh ``scale``, height field ``size``, slide-joint ranges and references,
-    spatial tendon lengths and widths, fixed tendon lengths when all their
-    joints slide, contact margins and gaps, the friction of geoms and contact
-    pairs but for its sliding values (torsional and rolling coefficients are
-    lengths in MuJoCo; values MuJoCo fills from its built-in defaults are
-    written, scaled), position actuators' ``ctrlrange`` on slide
-    joints, crank lengths, and the same attributes in default classes. A
-    ``flexcomp``'s points scale once, through ``scale`` for the ``direct``,
-    ``mesh`` and ``gmsh`` types and through ``spacing`` for the generated ones;
-    a mesh made by an SDF plugin scales through the plugin's length settings
+    inertials, equality anchors, keyframe mocap positions and the length parts of
+    keyframe ``qpos``/``qvel``), geom and site sizes (by type), ``fromto``, mesh
+    ``scale``, height field ``size``, slide-joint ranges and references, spatial tendon
+    lengths and widths, fixed tendon lengths when a slide joint is in them (and then
+    their hinges' ``coef``, a lever arm), the ``polycoef`` of joint and tendon couplings
+    whose coordinates are lengths (:mod:`mjcf_model.transforms.scaling.couplings`),
+    contact margins and gaps, the friction of geoms, flexes and contact pairs but for
+    its sliding values (torsional and rolling coefficients are lengths in MuJoCo; values
+    MuJoCo fills from its built-in defaults are written, scaled), position actuators'
+    ``ctrlrange`` on slide joints, crank lengths, and the same attributes in default
+    classes. A ``flexcomp``'s points scale once, through ``scale`` for the ``direct``,
+    ``mesh`` and ``gmsh`` types and through ``spacing`` for the generated ones; a mesh
+    made by an SDF plugin scales through the plugin's length settings
     (:mod:`mjcf_model.transforms.scaling.plugins`).
 
     Args:
@@ -109,8 +121,11 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
 
     Raises:
         MjcfValueError: for a factor that is not positive, a kept ``<include>``, an
-            ``<attach>`` (the attached model is another file: scale it first), or a
-            mesh or geom made by a plugin other than MuJoCo's torus, bowl and gear SDFs.
+            ``<attach>`` (the attached model is another file: scale it first), a
+            mesh or geom made by a plugin other than MuJoCo's torus, bowl and gear
+            SDFs, or a skin read from a ``.skn`` file in a model that does not know
+            its folder (a loaded model has its skin files written inline first;
+            otherwise call ``serializers.skins.inline_skin_files(model, folder)``).
 
     Example:
         >>> from mjcf_model import Inertial
@@ -123,6 +138,9 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
         raise MjcfValueError(f"mass policy is 'keep' or 'volume', found {mass!r}")
     if factors == (1.0, 1.0, 1.0):
         return node
+    from serializers.skins import with_file_skins_inline
+
+    node = with_file_skins_inline(node)  # a skin file's vertices and bind poses are lengths
     classes = DefaultClasses.of(node)
     context = ScaleContext(factors=factors, mass=mass, classes=classes, model=node)
 
@@ -135,9 +153,13 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
                 "cannot scale an <attach>: the attached model is a separate file; "
                 "scale that model and attach the result"
             )
+        if key in SKIN_KEYS and get_attribute(element, "file"):
+            refuse_file_skin(element, "scale", "holds its vertices and bind poses")
         changed = with_attributes(element, RULES[key](element, ancestors, context))
         if key in SDF_SETTINGS_KEYS:
             return with_sdf_settings(changed, key, ancestors, context)
+        if key in FLEX_KEYS:
+            return with_flex_contact(changed, context)
         if key == "mujoco":
             return with_friction_defaults(changed, context)
         return changed
