@@ -233,8 +233,10 @@ def _equality_data(model: Any, s: float, m: float) -> np.ndarray:
                 factors[row, :6] = s
         elif kind in (int(eq.mjEQ_JOINT), int(eq.mjEQ_TENDON)):
             of = joints if kind == int(eq.mjEQ_JOINT) else tendons
-            f1, f2 = of[first], (of[second] if second >= 0 else 1.0)
-            factors[row, :5] = f1 / f2 ** np.arange(5)
+            if second < 0:  # the object is held at a0; MuJoCo keeps the rest as written
+                factors[row, 0] = of[first]
+            else:
+                factors[row, :5] = of[first] / of[second] ** np.arange(5)
     return factors
 
 

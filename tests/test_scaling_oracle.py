@@ -130,3 +130,17 @@ def test_a_site_gear_mixing_offset_and_rotation_measures_a_scaled_length() -> No
     assert np.isclose(changed.actuator_length0[0], 2 * original.actuator_length0[0], rtol=1e-12)
     assert np.isclose(changed.actuator_length0[1], original.actuator_length0[1], rtol=1e-12)
     assert scaled_model_problems(original, changed, 2.0) == []
+
+
+def test_position_targets_on_a_slide_joint_scale_beside_a_replicate_of_geoms() -> None:
+    """A replicate copying only geoms hides no joint: slide targets and key controls scale."""
+    text = """<mujoco><worldbody><body>
+      <joint name="rail" type="slide"/><geom size=".1"/>
+      <replicate count="2" offset=".3 0 0"><geom size=".1"/></replicate>
+    </body></worldbody>
+    <actuator><position joint="rail" kp="10" ctrlrange="-.5 .5"/></actuator>
+    <keyframe><key ctrl=".25"/></keyframe></mujoco>"""
+    original, changed = _compiled_pair(text, 2.0)
+    assert np.array_equal(changed.actuator_ctrlrange, 2 * original.actuator_ctrlrange)
+    assert np.array_equal(changed.key_ctrl, 2 * original.key_ctrl)
+    assert scaled_model_problems(original, changed, 2.0) == []

@@ -17,7 +17,7 @@ import attrs
 
 from mjcf_model.nodes.base import AnyElement, get_attribute
 from mjcf_model.tree.defaults import DefaultClasses
-from mjcf_model.tree.traversal import keyed_walk
+from mjcf_model.tree.traversal import keyed_walk, walk
 from mjcf_model.values import numbers_of
 
 __all__ = ["JointInfo", "joint_layout", "joint_type"]
@@ -47,6 +47,8 @@ def joint_layout(node: AnyElement, classes: DefaultClasses) -> tuple[JointInfo, 
     """
     joints: list[JointInfo] = []
     for element, key, ancestors in _body_walk(node):
+        if key == "body/replicate" and not _holds_joints(element):
+            continue  # copies of geoms, sites...: no joints to count
         if key in ("body/replicate", "body/flexcomp", "body/attach"):
             return None
         if key == "body/freejoint":
@@ -59,6 +61,11 @@ def joint_layout(node: AnyElement, classes: DefaultClasses) -> tuple[JointInfo, 
                 JointInfo(name=_name(element), type=kind, axis=direction or (0.0, 0.0, 1.0))
             )
     return tuple(joints)
+
+
+def _holds_joints(element: AnyElement) -> bool:
+    """Whether a joint stands anywhere below ``element``."""
+    return any(e.tag in ("joint", "freejoint") for _, e in walk(element))
 
 
 def _body_walk(node: AnyElement) -> Iterator[tuple[AnyElement, str | None, Sequence[AnyElement]]]:

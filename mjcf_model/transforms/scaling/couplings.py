@@ -133,11 +133,15 @@ def tendon_coefficient(
 def _coupled(element: AnyElement, first: float | None, second: float | None) -> Changes:
     """``polycoef`` of a coupling of coordinates scaled by ``first`` and ``second``.
 
-    MuJoCo's built-in ``0 1 0 0 0`` completes what is not written.
+    MuJoCo's built-in ``0 1 0 0 0`` completes what is not written. Without a
+    second object (``second`` is ``0.0``) the first is held at ``a0``, the only
+    coefficient MuJoCo reads; the others are kept as written.
     """
     if first is None or second is None:
         return {}
-    factors = [first / second**k for k in range(5)]
+    factors = (
+        [first, 1.0, 1.0, 1.0, 1.0] if second == 0.0 else [first / second**k for k in range(5)]
+    )
     if all(f == 1.0 for f in factors):
         return {}
     own = numbers_of(get_attribute(element, "polycoef")) or ()
@@ -153,7 +157,7 @@ def joint_coupling(
     return _coupled(
         element,
         _joint_factor(get_attribute(element, "joint1"), context),
-        1.0 if second is None else _joint_factor(second, context),
+        0.0 if second is None else _joint_factor(second, context),
     )
 
 
@@ -166,5 +170,5 @@ def tendon_coupling(
         tendon = _tendon_named(get_attribute(element, attribute), context)
         return None if tendon is None else _tendon_factor(tendon, context)
 
-    second = 1.0 if get_attribute(element, "tendon2") is None else factor("tendon2")
+    second = 0.0 if get_attribute(element, "tendon2") is None else factor("tendon2")
     return _coupled(element, factor("tendon1"), second)

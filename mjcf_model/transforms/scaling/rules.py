@@ -43,6 +43,7 @@ from mjcf_model.transforms.scaling.pieces import (
 )
 from mjcf_model.transforms.scaling.plugins import makes_sdf, sdf_config, sdf_mesh_scale
 from mjcf_model.tree.queries import attribute_values
+from mjcf_model.tree.traversal import keyed_walk
 from mjcf_model.values import Value, format_value, numbers_of
 
 __all__ = ["RULES", "UNSCALED_BY_DECISION"]
@@ -144,21 +145,46 @@ def _joint(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleC
     return changes
 
 
+def _target_factor(element: AnyElement, key: str | None, context: ScaleContext) -> float:
+    """The factor of an actuator's control: a position servo on a slide joint aims at a length."""
+    if key != "actuator/position":
+        return 1.0
+    info = context.joint(get_attribute(element, "joint"))
+    return context.along(info.axis) if info is not None and info.type == "slide" else 1.0
+
+
 def _position_ctrlrange(
     element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
     """A position actuator on a slide joint takes targets in length units."""
-    info = context.joint(get_attribute(element, "joint"))
+    factor = _target_factor(element, "actuator/position", context)
     value = get_attribute(element, "ctrlrange")
-    if info is None or info.type != "slide" or value is None:
-        return {}
-    return {"ctrlrange": times(value, context.along(info.axis))}
+    return {} if factor == 1.0 or value is None else {"ctrlrange": times(value, factor)}
+
+
+def _control_factors(context: ScaleContext) -> tuple[float, ...]:
+    """The factor of each actuator's control, in the model's actuator order."""
+    model = context.model
+
+    def compute() -> tuple[float, ...]:
+        walked = keyed_walk(model) if model is not None else ()
+        return tuple(
+            _target_factor(element, key, context)
+            for element, key, _ in walked
+            if key is not None and key.startswith("actuator/") and not key.endswith("/config")
+        )
+
+    return context.cached("control factors", compute)
 
 
 def _keyframe(
     element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
-    """Mocap positions, and the slide and free-joint parts of ``qpos`` and ``qvel``."""
+    """Mocap positions, the slide and free-joint parts of ``qpos`` and ``qvel``, position targets.
+
+    A ``ctrl`` value of a position servo on a slide joint is a length, as its
+    ``ctrlrange`` is.
+    """
     changes = points("mpos")[0](element, ancestors, context)
     if context.layout is None:
         return changes
@@ -175,7 +201,8 @@ def _keyframe(
             factor = context.along(joint.axis) if joint.type == "slide" else 1.0
             qpos.append(factor)
             qvel.append(factor)
-    for attribute, factors in (("qpos", qpos), ("qvel", qvel)):
+    controls = _control_factors(context)
+    for attribute, factors in (("qpos", qpos), ("qvel", qvel), ("ctrl", controls)):
         value = numbers_of(get_attribute(element, attribute))
         if value is not None and len(value) == len(factors):
             changes[attribute] = tuple(v * f for v, f in zip(value, factors, strict=True))
