@@ -81,20 +81,21 @@ def compose_problems(paths: list[Path], workdir: Path, *, parent: Path | None = 
     dumped = workdir / "dumped" / "scene.xml"
     dumped.parent.mkdir(parents=True)
     dump(scene, dumped)
-    problems = _same_model(dumped, together)
+    problems = same_model(dumped, together)
     if problems:
         return Outcome(tuple(passed), tuple(problems))
     passed.append("dump")
     exported = export(scene, workdir / "exported")
     shutil.move(workdir / "exported", workdir / "moved")
-    problems = _same_model(workdir / "moved" / exported.name, together)
+    problems = same_model(workdir / "moved" / exported.name, together)
     if problems:
         return Outcome(tuple(passed), tuple(problems))
     passed.append("export")
     return Outcome(tuple(passed))
 
 
-def _same_model(path: Path, expected: Any) -> list[str]:
+def same_model(path: Path, expected: Any) -> list[str]:
+    """Why the model at ``path`` is not ``expected`` (MuJoCo compiles both), if it is not."""
     try:
         again = mujoco.MjModel.from_xml_path(str(path))
     except ValueError as error:

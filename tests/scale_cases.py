@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from tests.scale_elements import SLIDER, ScaleCase, element_cases, of, setting, whole
+from tests.schema_devices import ACTUATOR_SETTINGS as _ACTUATOR_SETTINGS
 from tests.schema_model import model
 
 _VERTICES = 'vertex="0 0 0  0.1 0 0  0 0.1 0  0 0 0.1"'
@@ -43,16 +44,9 @@ _POINTS = (
 _CRANK = 'cranksite="shoulder" slidersite="wrist" cranklength="0.3"'
 #: The actuators whose crank length is a length, with what else they need.
 _CRANKED = {
-    "general": "",
-    "motor": "",
-    "position": 'kp="1"',
-    "velocity": 'kv="1"',
-    "intvelocity": 'kp="1" actrange="-1 1"',
-    "pid": 'kp="1"',
-    "damper": 'kv="1" ctrlrange="0 1"',
-    "cylinder": "",
-    "muscle": 'lengthrange="0.1 1"',
-    "dcmotor": 'motorconst="1" resistance="1"',
+    tag: _ACTUATOR_SETTINGS[tag]
+    for tag in _ACTUATOR_SETTINGS
+    if tag not in ("orientation", "plugin", "adhesion")  # no cranklength
 }
 
 

@@ -42,8 +42,8 @@ import numpy as np
 
 from mjcf_model import Mujoco, attach, compiled
 from mjcf_model.nodes.keyframe import Key, Keyframe
-from mjcf_model.tools.compare import model_differences, path_fields
 from serializers import dump, export, load
+from tests.composing import same_model
 
 __all__ = [
     "BOX",
@@ -528,19 +528,11 @@ def _file_problems(scene: Mujoco, together: Any, workdir: Path) -> list[str]:
     dumped = workdir / "dumped" / "scene.xml"
     dumped.parent.mkdir(parents=True)
     dump(scene, dumped)
-    problems = [f"dumped: {p}" for p in _same_model(dumped, together)]
+    problems = [f"dumped: {p}" for p in same_model(dumped, together)]
     exported = export(scene, workdir / "exported")
     shutil.move(workdir / "exported", workdir / "moved")
-    problems += [f"exported: {p}" for p in _same_model(workdir / "moved" / exported.name, together)]
+    problems += [f"exported: {p}" for p in same_model(workdir / "moved" / exported.name, together)]
     return problems
-
-
-def _same_model(path: Path, expected: Any) -> list[str]:
-    try:
-        again = mujoco.MjModel.from_xml_path(str(path))
-    except ValueError as error:
-        return [f"{path.name} does not compile: {str(error).strip()}"]
-    return [f"field {f}" for f in model_differences(expected, again, ignore=path_fields())]
 
 
 def _merged_problems(

@@ -11,7 +11,7 @@ from tests.schema_model import model
 # -- actuators ------------------------------------------------------------------------------
 
 #: What each actuator needs besides its transmission to compile.
-_ACTUATOR_SETTINGS = {
+ACTUATOR_SETTINGS = {
     "general": "",
     "motor": "",
     "position": 'kp="1"',
@@ -55,7 +55,7 @@ def actuator_case(tag: str, attribute: str) -> str:
             transmission = _TRANSMISSIONS["refsite"]
     if tag == "adhesion":
         transmission = transmission.replace('joint="hinge"', 'body="forearm"')
-    settings = _ACTUATOR_SETTINGS[tag]
+    settings = ACTUATOR_SETTINGS[tag]
     if tag == "plugin" and attribute == "instance":
         return model(extension=_PID_INSTANCE, actuator=f"<plugin {transmission}/>")
     if tag == "plugin":
