@@ -102,17 +102,25 @@ def _element_cases(tag: str, kind: str, attributes: tuple[str, ...]) -> list[Sca
     cases = []
     for attribute in attributes:
         text, field, columns = _GEOM_SETTINGS[attribute]
-        value = of(f"{prefix}_{field}", kind, "probe", columns)
-        own = model(world=f'<{tag} name="probe" {text}/>')
-        classed = model(
-            default=f'<default class="probes"><{tag} {text}/></default>',
-            world=f'<{tag} name="probe" class="probes"/>',
+        cases += _own_and_classed(
+            tag, attribute, text, of(f"{prefix}_{field}", kind, "probe", columns)
         )
-        cases += [
-            ScaleCase(f"body/{tag}", attribute, own, value),
-            ScaleCase(f"default/{tag}", attribute, classed, value),
-        ]
     return cases
+
+
+def _own_and_classed(
+    tag: str, attribute: str, text: str, value: Callable[[Any], Any]
+) -> list[ScaleCase]:
+    """The element ``probe`` writing ``text`` itself, and taking it from a class."""
+    own = model(world=f'<{tag} name="probe" {text}/>')
+    classed = model(
+        default=f'<default class="probes"><{tag} {text}/></default>',
+        world=f'<{tag} name="probe" class="probes"/>',
+    )
+    return [
+        ScaleCase(f"body/{tag}", attribute, own, value),
+        ScaleCase(f"default/{tag}", attribute, classed, value),
+    ]
 
 
 _GEOMS = _element_cases("geom", "geom", tuple(_GEOM_SETTINGS))
@@ -136,15 +144,7 @@ def _lens_cases() -> list[ScaleCase]:
     cases = []
     for tag, settings in (("camera", _CAMERA_SETTINGS), ("light", _LIGHT_SETTINGS)):
         for attribute, (text, value) in settings.items():
-            own = model(world=f'<{tag} name="probe" {text}/>')
-            classed = model(
-                default=f'<default class="probes"><{tag} {text}/></default>',
-                world=f'<{tag} name="probe" class="probes"/>',
-            )
-            cases += [
-                ScaleCase(f"body/{tag}", attribute, own, value),
-                ScaleCase(f"default/{tag}", attribute, classed, value),
-            ]
+            cases += _own_and_classed(tag, attribute, text, value)
     return cases
 
 
