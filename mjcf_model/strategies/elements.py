@@ -22,6 +22,7 @@ from mjcf_model.strategies.primitives import (
     _length,
     _mass,
     _number,
+    _optional,
     _position,
     _rgba,
     _size,
@@ -46,6 +47,13 @@ _SIZE_COUNT = {"sphere": 1, "capsule": 2, "cylinder": 2, "box": 3, "ellipsoid": 
 
 
 _FLOAT = st.floats(allow_nan=False, allow_infinity=False, width=64)
+
+# Strategies built once: hypothesis validates each new strategy object, which would
+# otherwise dominate the time a drawn model takes.
+_FRICTION = st.tuples(_length(0.1, 2.0), _length(0.001, 0.1))
+_MESH_SCALE = _vec(3, 0.5, 2.0)
+_AXIS = _vec(3).filter(lambda a: sum(v * v for v in a) > 0.1)
+_DAMPING = st.tuples(_length(0.0, 2.0))
 
 
 _VALUE_BY_CONVERTER: dict[str, st.SearchStrategy[Any]] = {
@@ -80,13 +88,13 @@ def geoms(draw: _Draw[Any], name: str | None = None, material: str | None = None
         name=name,
         type=geom_type,
         size=size,
-        pos=draw(st.none() | _position()),
-        quat=draw(st.none() | _unit_quat()),
-        rgba=draw(st.none() | _rgba()),
+        pos=draw(_optional(_position())),
+        quat=draw(_optional(_unit_quat())),
+        rgba=draw(_optional(_rgba())),
         material=material,
-        group=draw(st.none() | st.integers(0, 5)),
-        friction=draw(st.none() | st.tuples(_length(0.1, 2.0), _length(0.001, 0.1))),
-        mass=draw(st.none() | _mass()),
+        group=draw(_optional(st.integers(0, 5))),
+        friction=draw(_optional(_FRICTION)),
+        mass=draw(_optional(_mass())),
     )
 
 
@@ -136,7 +144,7 @@ def meshes(draw: _Draw[Any], name: str) -> Mesh:
         name=name,
         vertex=tuple(v for corner in tetra for v in corner),
         face=tuple(i for f in faces for i in f),
-        scale=draw(st.none() | st.tuples(*[_number(0.5, 2.0) for _ in range(3)])),
+        scale=draw(_optional(_MESH_SCALE)),
     )
 
 
@@ -166,11 +174,11 @@ def joints(
     return JointNode(
         name=name,
         type=joint_type,
-        axis=draw(st.none() | _vec(3).filter(lambda a: sum(v * v for v in a) > 0.1)),
-        pos=draw(st.none() | _vec(3)),
+        axis=draw(_optional(_AXIS)),
+        pos=draw(_optional(_vec(3))),
         range=limits,
-        damping=draw(st.none() | st.tuples(_length(0.0, 2.0))),
-        armature=draw(st.none() | _length(0.0, 0.1)),
+        damping=draw(_optional(_DAMPING)),
+        armature=draw(_optional(_length(0.0, 0.1))),
     )
 
 
@@ -183,7 +191,7 @@ def sites(draw: _Draw[Any], name: str | None = None) -> Site:
         'tip'
 
     """
-    return Site(name=name, pos=draw(st.none() | _vec(3)), size=(draw(_length(0.005, 0.05)),))
+    return Site(name=name, pos=draw(_optional(_vec(3))), size=(draw(_length(0.005, 0.05)),))
 
 
 @st.composite
@@ -198,8 +206,8 @@ def materials(draw: _Draw[Any], name: str, texture: str | None = None) -> Materi
     return Material(
         name=name,
         texture=texture,
-        rgba=draw(st.none() | _rgba()),
-        specular=draw(st.none() | _length(0.0, 1.0)),
+        rgba=draw(_optional(_rgba())),
+        specular=draw(_optional(_length(0.0, 1.0))),
         texrepeat=(1.0, 1.0) if texture else None,
     )
 
@@ -226,14 +234,14 @@ def element_values(cls: type[TypedElement]) -> st.SearchStrategy[dict[str, Any]]
         'geom'
 
     """
-    values = {name: st.none() | strategy for name, strategy in _field_values(cls).items()}
+    values = {name: _optional(strategy) for name, strategy in _field_values(cls).items()}
     validated = {
         f.name: f for f in attrs.fields(cls) if f.validator is not None and f.name in values
     }
     for name, field in validated.items():
         allowed = getattr(field.validator, "allowed", None)
         if allowed:
-            values[name] = st.none() | st.sampled_from(sorted(allowed))
+            values[name] = _optional(st.sampled_from(sorted(allowed)))
     return st.fixed_dictionaries({}, optional=values)
 
 

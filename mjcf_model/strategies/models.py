@@ -34,6 +34,7 @@ from mjcf_model.strategies.primitives import (
     _euler,
     _length,
     _mass,
+    _optional,
     _position,
     _rgba,
     _size,
@@ -78,7 +79,7 @@ def _geom(draw: _Draw[Any], reg: _Registry, namespace: str = "geom") -> Geom:
     """A primitive or mesh geom, maybe named, maybe of a default class."""
     named = draw(st.booleans())
     name = reg.names(namespace) if named else None
-    material = draw(st.none() | st.sampled_from(reg.materials)) if reg.materials else None
+    material = draw(_optional(st.sampled_from(reg.materials))) if reg.materials else None
     geom: Geom = draw(geoms(name=name, material=material))
     if reg.meshes and _chance(draw, 3):
         geom = attrs.evolve(geom, type="mesh", size=None, mesh=draw(st.sampled_from(reg.meshes)))
@@ -145,9 +146,9 @@ def _frame(draw: _Draw[Any], reg: _Registry, depth: int, nesting: int = 1) -> Fr
             children.append(draw(bodies(depth=max(depth - 1, 0), registry=reg)))
         else:
             children.append(_frame(draw, reg, depth, nesting - 1))
-    childclass = draw(st.none() | st.sampled_from(reg.classes)) if reg.classes else None
+    childclass = draw(_optional(st.sampled_from(reg.classes))) if reg.classes else None
     return FrameNode(
-        pos=draw(st.none() | _position()),
+        pos=draw(_optional(_position())),
         childclass=childclass,
         children=children,
         **_orientation(draw, reg),
@@ -171,7 +172,7 @@ def _replicate(draw: _Draw[Any], reg: _Registry) -> Replicate:
     return Replicate(
         count=draw(st.integers(2, 4)),
         offset=draw(_vec(3, -0.5, 0.5)),
-        euler=draw(st.none() | _euler(reg.angle)),
+        euler=draw(_optional(_euler(reg.angle))),
         children=[content],
     )
 
@@ -257,7 +258,7 @@ def _defaults(draw: _Draw[Any], reg: _Registry) -> Default:
     settings: list[list[Node]] = []
     for index in range(draw(st.integers(0, 3))):
         reg.classes.append(reg.names("class"))
-        parents.append(draw(st.none() | st.integers(0, index - 1)) if index else None)
+        parents.append(draw(_optional(st.integers(0, index - 1))) if index else None)
         own: list[Node] = []
         if draw(st.integers(0, 3)):
             own.append(Geom(rgba=draw(_rgba()), density=draw(_length(100.0, 2000.0))))
@@ -330,4 +331,4 @@ def models(draw: _Draw[Any], max_trees: int = 3) -> Mujoco:
     parts: list[Node] = [*head, defaults, assets, world, *after]
     if draw(st.booleans()):
         parts.append(Custom(children=[Numeric(name=reg.names("numeric"), data=draw(_vec(2)))]))
-    return Mujoco(model=draw(st.none() | names()), children=_maybe_comment(draw, parts))
+    return Mujoco(model=draw(_optional(names())), children=_maybe_comment(draw, parts))

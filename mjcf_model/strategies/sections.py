@@ -42,12 +42,23 @@ from mjcf_model.nodes import (
 from mjcf_model.nodes import Frame as FrameNode
 from mjcf_model.nodes import Joint as JointNode
 from mjcf_model.nodes.base import Node
-from mjcf_model.strategies.primitives import _Draw, _length, _number, _position, _unit_quat, _vec
+from mjcf_model.strategies.primitives import (
+    _Draw,
+    _length,
+    _number,
+    _optional,
+    _position,
+    _unit_quat,
+    _vec,
+)
 from mjcf_model.strategies.registry import _Registry
 from mjcf_model.values import Floats
 
 __all__ = ["sections"]
 
+
+#: A weld's relative pose: a position then a unit quaternion, built once.
+_RELPOSE = st.tuples(_position(), _unit_quat()).map(lambda p: (*p[0], *p[1]))
 
 #: The sizes of a joint's entries in ``qpos`` and ``qvel``.
 _STATE_SIZES = {"free": (7, 6), "ball": (4, 3), "hinge": (1, 1), "slide": (1, 1)}
@@ -76,7 +87,7 @@ def _tendons(draw: _Draw[Any], reg: _Registry) -> list[Fixed | Spatial]:
             break
         path: list[Node] = [TendonSite(site=ends[0])]
         if reg.wrapping_geoms and draw(st.booleans()):
-            side = draw(st.none() | st.sampled_from(reg.sites))
+            side = draw(_optional(st.sampled_from(reg.sites)))
             path.append(TendonGeom(geom=draw(st.sampled_from(reg.wrapping_geoms)), sidesite=side))
         path.append(TendonSite(site=ends[1]))
         found.append(
@@ -111,7 +122,7 @@ def _actuators(draw: _Draw[Any], reg: _Registry) -> tuple[list[Node], int]:
             Motor(name=reg.names("actuator"), tendon=tendon, gear=(draw(_number(-5.0, 5.0)),))
         )
     for site in _pick(draw, reg.sites, draw(st.integers(0, min(2, len(reg.sites))))):
-        refsite = draw(st.none() | st.sampled_from(reg.sites))
+        refsite = draw(_optional(st.sampled_from(reg.sites)))
         gear = draw(_vec(6, -2.0, 2.0))
         found.append(Motor(name=reg.names("actuator"), site=site, refsite=refsite, gear=gear))
     moving = [body for body in reg.bodies if body not in reg.mocap_bodies]
@@ -151,16 +162,14 @@ def _equalities(draw: _Draw[Any], reg: _Registry) -> list[Node]:
         elif kind == "weld":
             welded = _pick(draw, reg.bodies, 2) or reg.bodies[:1]
             other: str | None = welded[1] if len(welded) > 1 else None
-            relpose = draw(
-                st.none() | st.tuples(_position(), _unit_quat()).map(lambda p: (*p[0], *p[1]))
-            )
+            relpose = draw(_optional(_RELPOSE))
             element = Weld(
                 name=name,
                 body1=welded[0],
-                body2=draw(st.none() | st.just(other)),
+                body2=draw(_optional(st.just(other))),
                 relpose=relpose,
-                anchor=draw(st.none() | _vec(3)),
-                torquescale=draw(st.none() | _length(0.1, 10.0)),
+                anchor=draw(_optional(_vec(3))),
+                torquescale=draw(_optional(_length(0.1, 10.0))),
             )
         elif kind == "joint" and reg.scalar_joints:
             pair = _pick(draw, reg.scalar_joints, 2) or reg.scalar_joints[:1]
@@ -249,11 +258,11 @@ def _key(draw: _Draw[Any], reg: _Registry, world: Worldbody, nu: int, na: int) -
     nv = sum(_STATE_SIZES[t][1] for t in types)
 
     def maybe(strategy: st.SearchStrategy[Floats], size: int) -> Floats | None:
-        return draw(st.none() | strategy) if size else None
+        return draw(_optional(strategy)) if size else None
 
     return Key(
         name=reg.names("key"),
-        time=draw(st.none() | _length(0.0, 10.0)),
+        time=draw(_optional(_length(0.0, 10.0))),
         qpos=tuple(v for t in types for v in _qpos(draw, t))
         if types and draw(st.booleans())
         else None,
