@@ -21,9 +21,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from mjcf_model import Mujoco
 from mjcf_model.compat.mjcf_utils.constants import MUJOCO_NAMED_ATTRIBUTES
+from mjcf_model.compat.mjcf_utils.naming import prefixed_attributes
 from mjcf_model.nodes import Body, Geom, Joint, Mesh, Site
-from mjcf_model.strategies import elements
+from mjcf_model.strategies import elements, models
 from serializers import to_etree
 from tests.conftest import corpus_files, corpus_id
 from tests.test_compat_utils_support import (
@@ -327,6 +329,17 @@ def test_add_prefix_matches_robosuite_on_generated_trees(
         "add_prefix", subtree, prefix_twice(prefix, tags=tags, attribs=attribs, exclude=exclude)
     )
     differential("add_prefix", subtree, prefix_logging(prefix, names, tags, attribs))
+
+
+@given(models(), prefixes)
+def test_prefixed_attributes_of_a_typed_model_is_robosuites_add_prefix(
+    model: Mujoco, prefix: str
+) -> None:
+    """On typed nodes (not only a tree's generic ones), the prefixing is robosuite's."""
+    theirs = to_etree(model)
+    rs.add_prefix(theirs, prefix)
+    mine = prefixed_attributes(model, prefix, None, MUJOCO_NAMED_ATTRIBUTES)
+    assert ET.tostring(to_etree(mine)) == ET.tostring(theirs)
 
 
 @given(
