@@ -61,6 +61,18 @@ _MESH_FIELDS = frozenset(
 )
 _MESH_GEOM_FIELDS = frozenset({"geom_size", "geom_aabb", "geom_rbound", "geom_quat"})
 
+#: Whether a frame is its body's frame (1) or inertial frame (2), or shares only its
+#: rotation (3, 4): MuJoCo decides within an absolute tolerance, so an offset near it
+#: can cross it when scaled (a drawn mesh geom 0.6 micrometres from the inertial
+#: frame was "same" (2), and 1.1 micrometres away at twice the size, 4).
+_SAMEFRAME = ("body_sameframe", "geom_sameframe", "site_sameframe")
+#: The pairs of flags an offset crossing the tolerance turns into each other.
+_POSITION_FLIPS = (frozenset({1, 3}), frozenset({2, 4}))
+#: MuJoCo's tolerance: a frame is at another when no coordinate of the offset reaches
+#: it (measured on 3.9 and 4.0: 0.9 micrometres along x or along x and y is "same",
+#: 1 micrometre is not).
+_SAME_POSITION = 1e-6
+
 
 def _mass_factor(factor: float, mass: str) -> float:
     return factor**3 if mass == "volume" else 1.0
@@ -133,7 +145,42 @@ def _float_problem(
     )
 
 
-def _struct_problems(original: Any, changed: Any, factor: float, mass: float) -> list[str]:
+def _offset(original: Any, field: str, index: int, flags: frozenset[int]) -> float:
+    """The largest coordinate of the offset a ``field`` flag compares with the tolerance."""
+    kind = field.removesuffix("_sameframe")
+    if kind == "body":
+        return float(np.max(np.abs(original.body_ipos[index])))
+    position = getattr(original, f"{kind}_pos")[index]
+    if flags == _POSITION_FLIPS[1]:
+        position = position - original.body_ipos[getattr(original, f"{kind}_bodyid")[index]]
+    return float(np.max(np.abs(position)))
+
+
+def _sameframe_problems(
+    original: Any, changed: Any, factor: float, left_out: Collection[str]
+) -> list[str]:
+    """The ``*_sameframe`` flags that changed other than by an offset crossing the tolerance.
+
+    An offset crosses it when scaling by ``factor`` carries its largest coordinate from
+    one side of the tolerance to the other (1% slack for MuJoCo's own arithmetic).
+    """
+    low, high = sorted((_SAME_POSITION, _SAME_POSITION / factor))
+    problems = []
+    for field in (f for f in _SAMEFRAME if f not in left_out):
+        before, after = getattr(original, field), getattr(changed, field)
+        for index in np.flatnonzero(before != after):
+            flags = frozenset({int(before[index]), int(after[index])})
+            crossed = flags in _POSITION_FLIPS and (
+                0.99 * low <= _offset(original, field, index, flags) <= 1.01 * high
+            )
+            if not crossed:
+                problems.append(f"{field}[{index}]: {before[index]} became {after[index]}")
+    return problems
+
+
+def _struct_problems(
+    original: Any, changed: Any, factor: float, mass: float, *, frames_flipped: bool
+) -> list[str]:
     problems = []
     for name in [*_STRUCTS, *_STRUCTS_MASS]:
         struct, field = name.split(".")
@@ -144,6 +191,10 @@ def _struct_problems(original: Any, changed: Any, factor: float, mass: float) ->
         if name == "stat.center" and original.nmesh and not MESH_ARRAYS_COMPARABLE:
             # before 4.0 the centre comes from mesh boxes, which move in the 6th digit
             rtol, atol = 1e-5, 1e-5 * float(changed.stat.extent)
+        if name == "stat.center" and frames_flipped:
+            # a frame taken as its body's now is not (or the other way): MuJoCo places
+            # the element at that frame, up to the offset that crossed the tolerance
+            atol = _SAME_POSITION * max(factor, 1.0)
         if not np.allclose(after, expected, rtol=rtol, atol=atol):
             problems.append(f"{name}: {after!r}, expected {expected!r}")
     return problems
@@ -176,7 +227,7 @@ def scaled_model_problems(
             left_out |= {f for f in model_fields() if f.startswith(prefix)}
     if not MESH_ARRAYS_COMPARABLE:
         left_out |= _MESH_FIELDS
-    ignored = frozenset({*floats, *path_fields(), *left_out})
+    ignored = frozenset({*floats, *path_fields(), *left_out, *_SAMEFRAME})
     struct_names = {*_STRUCTS, *_STRUCTS_MASS, *_STRUCTS_DERIVED}
     problems = unclassified + [
         f"{name}: changed"
@@ -187,7 +238,9 @@ def scaled_model_problems(
         if field not in left_out:
             problem = _float_problem(original, changed, field, factor, masses, rtol)
             problems += [] if problem is None else [problem]
-    problems += _struct_problems(original, changed, factor, masses)
+    flipped = any(not np.array_equal(getattr(original, f), getattr(changed, f)) for f in _SAMEFRAME)
+    problems += _struct_problems(original, changed, factor, masses, frames_flipped=flipped)
+    problems += _sameframe_problems(original, changed, factor, left_out)
     if not MESH_ARRAYS_COMPARABLE:
         traces = np.sum(changed.body_inertia, axis=1), np.sum(original.body_inertia, axis=1)
         if not np.allclose(traces[0], masses * factor**2 * traces[1], rtol=1e-9, atol=0):

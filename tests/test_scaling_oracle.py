@@ -144,3 +144,30 @@ def test_position_targets_on_a_slide_joint_scale_beside_a_replicate_of_geoms() -
     assert np.array_equal(changed.actuator_ctrlrange, 2 * original.actuator_ctrlrange)
     assert np.array_equal(changed.key_ctrl, 2 * original.key_ctrl)
     assert scaled_model_problems(original, changed, 2.0) == []
+
+
+def _offset_frames(offset: float) -> str:
+    """A body whose geom and site lie ``offset`` metres from its frame along x."""
+    return f"""<mujoco><worldbody><body>
+      <inertial pos="0 0 0" mass="1" diaginertia="1 1 1"/>
+      <geom size="0.1" pos="{offset} 0 0"/><site pos="{offset} 0 0"/>
+    </body></worldbody></mujoco>"""
+
+
+def test_a_frame_offset_crossing_mujocos_tolerance_when_scaled_is_no_change() -> None:
+    """0.7 micrometres is "at the body's frame" to MuJoCo, 1.4 is not: that flip is expected."""
+    original, changed = _compiled_pair(_offset_frames(7e-7), 2.0)
+    assert original.geom_sameframe.tolist() == original.site_sameframe.tolist() == [1]
+    assert changed.geom_sameframe.tolist() == changed.site_sameframe.tolist() == [3]
+    assert scaled_model_problems(original, changed, 2.0) == []
+
+
+@pytest.mark.parametrize("offset", [3e-7, 0.01])
+def test_a_frame_flag_flip_the_offset_cannot_explain_is_reported(offset: float) -> None:
+    """A flag that changes where scaling keeps the offset on one side of the tolerance."""
+    original, changed = _compiled_pair(_offset_frames(offset), 2.0)
+    assert scaled_model_problems(original, changed, 2.0) == []
+    changed.site_sameframe[0] = 3 if original.site_sameframe[0] == 1 else 1
+    assert scaled_model_problems(original, changed, 2.0) == [
+        f"site_sameframe[0]: {original.site_sameframe[0]} became {changed.site_sameframe[0]}"
+    ]
