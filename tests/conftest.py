@@ -1,7 +1,9 @@
 """Shared test setup: hypothesis profiles and the real-world corpus.
 
 The profile comes from ``HYPOTHESIS_PROFILE``: ``ci`` (the default under
-``CI=true``; 100 examples per property) or ``dev`` (50, for quick local runs).
+``CI=true``; 100 examples per property), ``dev`` (50, for quick local runs) or
+``mutation`` (30 fixed examples, no shrinking: the mutation tests run the suite
+once per mutant and need the same verdict each time, fast).
 """
 
 from __future__ import annotations
@@ -13,7 +15,7 @@ import re
 from pathlib import Path
 
 import mujoco
-from hypothesis import HealthCheck, settings
+from hypothesis import HealthCheck, Phase, settings
 
 settings.register_profile(
     "ci",
@@ -24,6 +26,15 @@ settings.register_profile(
 )
 settings.register_profile(
     "dev", max_examples=50, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
+settings.register_profile(
+    "mutation",
+    max_examples=30,
+    derandomize=True,
+    database=None,
+    deadline=None,
+    phases=[Phase.explicit, Phase.generate],
+    suppress_health_check=list(HealthCheck),
 )
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
 
