@@ -38,6 +38,10 @@ settings.register_profile(
 )
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
 
+#: For a property run once per node class (about 140 runs): the classes share their value
+#: strategies, so each run draws a quarter of the profile's examples (at least 10).
+PER_CLASS = settings(max_examples=max(10, settings.default.max_examples // 4))
+
 FIXTURES = Path(__file__).parent / "fixtures"
 #: The MuJoCo release this process runs, as (major, minor).
 MUJOCO_VERSION = tuple(int(part) for part in mujoco.__version__.split(".")[:2])

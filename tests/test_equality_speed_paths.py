@@ -39,6 +39,7 @@ from mjcf_model.tools.compare import model_differences
 from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import Unparsed
 from serializers import dicts, dumps, from_dict, loads, to_dict
+from tests.conftest import PER_CLASS
 
 CLASSES = sorted(set(CLASS_BY_KEY.values()), key=lambda cls: cls.__name__)
 
@@ -174,6 +175,7 @@ def test_shared_subtrees_are_skipped_not_misread() -> None:
 def test_equality_matches_attrs_for_every_class(cls: type[TypedElement]) -> None:
     """``==`` agrees with attrs' field-by-field equality, and equal nodes hash alike."""
 
+    @PER_CLASS
     @given(element_values(cls), element_values(cls), st.randoms())
     def check(values: dict[str, Any], others: dict[str, Any], random: Any) -> None:
         node = cls(**values)
@@ -233,6 +235,7 @@ def _ordered(data: Any) -> Any:
 def test_dicts_are_the_converters_own(cls: type[TypedElement]) -> None:
     """``to_dict`` writes the converter's dict, key order included; ``from_dict`` reads it back."""
 
+    @PER_CLASS
     @given(elements(cls))
     def check(node: TypedElement) -> None:
         data = to_dict(node)

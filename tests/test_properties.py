@@ -14,6 +14,7 @@ from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.strategies import elements, models
 from mjcf_model.tools.compare import model_differences
 from serializers import dumps, from_dict, from_etree, loads, to_dict, to_etree
+from tests.conftest import PER_CLASS
 
 
 @given(models())
@@ -58,6 +59,7 @@ CLASSES = sorted({cls for cls in CLASS_BY_KEY.values()}, key=lambda c: c.__name_
 def test_every_element_type_round_trips(cls: type[TypedElement]) -> None:
     """Arbitrary values of every typed class survive dicts, ElementTree and text."""
 
+    @PER_CLASS
     @given(elements(cls))
     def check(node: TypedElement) -> None:
         assert from_dict(to_dict(node)) == node
