@@ -27,7 +27,7 @@ FIXTURES = Path(__file__).parent / "fixtures" / "scaling"
 
 #: The fixtures the scale oracle runs on (``attach.xml`` and ``sdf_fixed_shape.xml`` are
 #: refused; ``sdf_gear.xml`` has its own oracle, below).
-SCALABLE = ("mass.xml", "flexcomp.xml", "sdf.xml", "includes.xml")
+SCALABLE = ("mass.xml", "flexcomp.xml", "sdf.xml", "includes.xml", "keys.xml")
 
 #: Every top-level fixture of the folder.
 ALL_FIXTURES = (*SCALABLE, "attach.xml", "sdf_fixed_shape.xml", "sdf_gear.xml")

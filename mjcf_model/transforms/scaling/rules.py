@@ -183,7 +183,7 @@ def _keyframe(
     """Mocap positions, the slide and free-joint parts of ``qpos`` and ``qvel``, position targets.
 
     A ``ctrl`` value of a position servo on a slide joint is a length, as its
-    ``ctrlrange`` is.
+    ``ctrlrange`` is. A short key's values are the leading entries.
     """
     changes = points("mpos")[0](element, ancestors, context)
     if context.layout is None:
@@ -204,8 +204,12 @@ def _keyframe(
     controls = _control_factors(context)
     for attribute, factors in (("qpos", qpos), ("qvel", qvel), ("ctrl", controls)):
         value = numbers_of(get_attribute(element, attribute))
-        if value is not None and len(value) == len(factors):
-            changes[attribute] = tuple(v * f for v, f in zip(value, factors, strict=True))
+        # a short key gives the leading entries (MuJoCo completes the rest from the
+        # scaled model); a long one MuJoCo rejects, and it is left as it is
+        if value is not None and len(value) <= len(factors):
+            changes[attribute] = tuple(
+                v * f for v, f in zip(value, factors[: len(value)], strict=True)
+            )
     return changes
 
 
