@@ -6,6 +6,7 @@ each scaled copy, and the oracle compares the compiled arrays.
 
 from __future__ import annotations
 
+import math
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -110,16 +111,41 @@ def test_flexcomp_points_are_placed_once_scaled() -> None:
     assert np.allclose(after.xpos, 2 * before.xpos, rtol=1e-9, atol=1e-15)
 
 
-def test_disc_flexcomp_too_tight_to_scale_is_refused() -> None:
-    """A disc whose spacing would fall under twice its radius raises before MuJoCo would."""
-    text = """<mujoco><worldbody><body name="b"><flexcomp name="d" type="disc" count="4 4 1"
-    spacing="{spacing} {spacing} 0.1" radius="{radius}" mass="1"><edge equality="true"/>
-    </flexcomp></body></worldbody></mujoco>"""
-    mujoco.MjModel.from_xml_string(text.format(spacing=0.06, radius=0.004))
-    with pytest.raises(ValueError, match="Spacing must be larger"):  # what scaling would give
-        mujoco.MjModel.from_xml_string(text.format(spacing=0.06 * 10, radius=0.004 * 100))
-    with pytest.raises(MjcfValueError, match="disc flexcomp 'd'"):
-        scaled(loads(text.format(spacing=0.06, radius=0.004)), 100)
+_DISC = """<mujoco><worldbody><body name="b"><flexcomp name="d" type="disc" count="4 4 1"
+    spacing="{spacing} {spacing} {depth}" radius="{radius}" mass="1"><edge equality="true"/>
+    {contact}</flexcomp></body></worldbody></mujoco>"""
+
+
+def _disc(scale: float, margin: float | None) -> str:
+    """The disc scaled by hand: spacing by the root of ``scale``, radius and margin by it."""
+    root = math.sqrt(scale)
+    contact = "" if margin is None else f'<contact margin="{margin * scale}"/>'
+    return _DISC.format(
+        spacing=0.06 * root, depth=0.1 * root, radius=0.004 * scale, contact=contact
+    )
+
+
+@pytest.mark.parametrize("margin", [None, 0.01, 0.03])
+@pytest.mark.parametrize("factor", [2, 4, 9, 16, 64])
+def test_a_disc_flexcomp_is_refused_exactly_when_mujoco_would_reject_it(
+    factor: float, margin: float | None
+) -> None:
+    """Scaling refuses a disc whose spacing falls under twice its radius plus its margin.
+
+    MuJoCo is the referee: it compiles the disc scaled by hand, or rejects it.
+    """
+    mujoco.MjModel.from_xml_string(_disc(1, margin))
+    try:
+        mujoco.MjModel.from_xml_string(_disc(factor, margin))
+        rejected = False
+    except ValueError as error:
+        assert "Spacing must be larger" in str(error)
+        rejected = True
+    if rejected:
+        with pytest.raises(MjcfValueError, match="disc flexcomp 'd'"):
+            scaled(loads(_disc(1, margin)), factor)
+    else:
+        mujoco.MjModel.from_xml_string(dumps(scaled(loads(_disc(1, margin)), factor)))
 
 
 def test_sdf_settings_are_scaled_instead_of_the_mesh_scale() -> None:

@@ -351,15 +351,13 @@ def _flexcomp(
     factors = np.sqrt(context.factors) if kind == "disc" else np.asarray(context.factors)
     changes["spacing"] = times(tuple(spacing), factors)
     radius = (numbers_of(changes.get("radius")) or (0.0,))[0]
+    # the children are scaled before their parent: the contact margin read here is scaled
     margin = sum(
         (numbers_of(get_attribute(c, "margin")) or (0.0,))[0]
         for c in element.elements
         if c.tag == "contact"
     )
-    if (
-        kind == "disc"
-        and min(numbers_of(changes["spacing"]) or ()) < 2 * radius + margin * context.mean
-    ):
+    if kind == "disc" and min(numbers_of(changes["spacing"]) or ()) < 2 * radius + margin:
         raise MjcfValueError(
             f"cannot scale the disc flexcomp {get_attribute(element, 'name')!r} by "
             f"{context.factors}: its spacing grows with the square root of the factor but "
