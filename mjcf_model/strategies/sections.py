@@ -258,13 +258,14 @@ def _key(draw: _Draw[Any], reg: _Registry, world: Worldbody, nu: int, na: int) -
     nv = sum(_STATE_SIZES[t][1] for t in types)
 
     def maybe(strategy: st.SearchStrategy[Floats], size: int) -> Floats | None:
-        return draw(_optional(strategy)) if size else None
+        # three times in four: a key is where drawn states are checked
+        return draw(strategy) if size and draw(st.integers(0, 3)) else None
 
     return Key(
         name=reg.names("key"),
         time=draw(_optional(_length(0.0, 10.0))),
         qpos=tuple(v for t in types for v in _qpos(draw, t))
-        if types and draw(st.booleans())
+        if types and draw(st.integers(0, 3))
         else None,
         qvel=maybe(_vec(nv), nv),
         ctrl=maybe(_vec(nu, 0.0, 1.0), nu),
