@@ -13,7 +13,9 @@ from tests.scale_elements import SLIDER, ScaleCase, element_cases, of, setting, 
 from tests.schema_devices import ACTUATOR_SETTINGS as _ACTUATOR_SETTINGS
 from tests.schema_model import model
 
-_VERTICES = 'vertex="0 0 0  0.1 0 0  0 0.1 0  0 0 0.1"'
+#: An irregular tetrahedron (as the base model's ``tet``): no two principal inertias tie,
+#: so MuJoCo's mesh frame does not turn with the rounding of a scaled copy.
+_VERTICES = 'vertex="0 0 0  0.1 0 0  0.02 0.13 0  0.03 0.01 0.07"'
 _SKIN = (
     '<skin name="hide" inflate="0.01" vertex="0 0 0  0.1 0 0  0 0.1 0" face="0 1 2">'
     '<bone body="arm" bindpos="0 0 1" bindquat="1 0 0 0" vertid="0 1 2" vertweight="1 1 1"/>'
@@ -112,6 +114,11 @@ def _actuator_cases() -> list[ScaleCase]:
     return cases
 
 
+#: MuJoCo keeps mesh vertices in single precision: a factor other than a power of two
+#: rounds them in the 8th digit.
+_SINGLE = 1e-6
+
+
 def _asset_cases() -> list[ScaleCase]:
     shaped = '<geom name="shaped" type="mesh" mesh="probe"/>'
     return [
@@ -120,6 +127,7 @@ def _asset_cases() -> list[ScaleCase]:
             "scale",
             model(asset=f'<mesh name="probe" scale="1 2 3" {_VERTICES}/>', world=shaped),
             whole("mesh_vert"),
+            rtol=_SINGLE,
         ),
         ScaleCase(
             "default/mesh",
@@ -130,6 +138,7 @@ def _asset_cases() -> list[ScaleCase]:
                 world=shaped,
             ),
             whole("mesh_vert"),
+            rtol=_SINGLE,
         ),
         ScaleCase(
             "asset/hfield",
@@ -161,6 +170,9 @@ _RADII = '<config key="radius1" value="0.2"/><config key="radius2" value="0.05"/
 def _sdf_cases() -> list[ScaleCase]:
     """A torus made by the SDF plugin: its radii are the plugin's settings, wherever written."""
     band = of("geom_rbound", "geom", "band")
+    # MuJoCo rebuilds the torus by marching cubes from the scaled radii: its bounding
+    # radius follows the factor to about 1e-7 (measured 4e-8 at a factor of 3)
+    sdf = {"rtol": 1e-6}
     geom = '<geom name="band" type="sdf" mesh="donut"><plugin instance="ring"/></geom>'
     instance = (
         f'<plugin plugin="mujoco.sdf.torus"><instance name="ring">{_RADII}</instance></plugin>'
@@ -182,6 +194,7 @@ def _sdf_cases() -> list[ScaleCase]:
                 world=geom,
             ),
             band,
+            **sdf,
         ),
         ScaleCase(
             "asset/mesh/plugin/config",
@@ -192,12 +205,14 @@ def _sdf_cases() -> list[ScaleCase]:
                 world='<geom name="band" type="sdf" mesh="donut"/>',
             ),
             band,
+            **sdf,
         ),
         ScaleCase(
             "body/geom/plugin/config",
             "value",
             model(extension='<plugin plugin="mujoco.sdf.torus"/>', asset=plain, world=on_geom),
             band,
+            **sdf,
         ),
         # radii left at the plugin's built-in values are written, scaled, as new settings
         ScaleCase(
@@ -205,6 +220,7 @@ def _sdf_cases() -> list[ScaleCase]:
             "key",
             model(extension='<plugin plugin="mujoco.sdf.torus"/>', asset=plain, world=geom_plain),
             band,
+            **sdf,
         ),
     ]
 

@@ -28,6 +28,8 @@ class ScaleCase:
     value: Callable[[Any], Any]
     #: The power of the factor that value scales by.
     power: int = 1
+    #: How closely the compiled value follows the factor.
+    rtol: float = 1e-9
 
 
 def of(field: str, kind: str, name: str, columns: slice = slice(None)) -> Callable[[Any], Any]:

@@ -31,7 +31,7 @@ _BASE = """<mujoco model="case">
     <default class="cls"/>{default}
   </default>{extension}
   <asset>
-    <mesh name="tet" vertex="0 0 0  0.1 0 0  0 0.1 0  0 0 0.1"/>
+    <mesh name="tet" vertex="0 0 0  0.1 0 0  0.02 0.13 0  0.03 0.01 0.07"/>
     <texture name="checker" type="2d" builtin="checker" width="8" height="8"
              rgb1="1 1 1" rgb2="0 0 0"/>
     <material name="paint" texture="checker"/>{asset}
