@@ -71,14 +71,22 @@ def test_connect_and_weld_anchors_scale(tag: str) -> None:
     assert np.allclose(changed.eq_data[0, :3], [0.6, 0.4, 0.2])
 
 
-def test_cylinder_with_the_built_in_area_gets_it_scaled() -> None:
-    """A cylinder actuator's area is a length squared, MuJoCo's default of 1 included."""
-    text = """<mujoco><worldbody><body><joint name="s" type="slide"/><geom size="0.1"/>
+@pytest.mark.parametrize("factor", [2.0, 3.0])
+def test_cylinder_with_the_built_in_area_gets_it_scaled(factor: float) -> None:
+    """A cylinder actuator's area is a length squared, MuJoCo's default of 1 included.
+
+    An area the element writes overrides its class's diameter, and is scaled.
+    """
+    text = """<mujoco><default><default class="bore"><cylinder diameter="0.2"/></default>
+    </default><worldbody><body><joint name="s" type="slide"/><geom size="0.1"/>
     </body></worldbody><actuator><cylinder joint="s"/><cylinder joint="s" area="2"/>
-    <cylinder joint="s" diameter="0.1"/></actuator></mujoco>"""
-    original, changed = _compiled_pair(text, 2.0)
-    assert scaled_model_problems(original, changed, 2.0) == []
-    assert np.allclose(changed.actuator_gainprm[:, 0], 4 * original.actuator_gainprm[:, 0])
+    <cylinder joint="s" diameter="0.1"/><cylinder joint="s" class="bore"/>
+    <cylinder joint="s" class="bore" area="3"/></actuator></mujoco>"""
+    original, changed = _compiled_pair(text, factor)
+    assert scaled_model_problems(original, changed, factor) == []
+    assert np.allclose(
+        changed.actuator_gainprm[:, 0], factor**2 * original.actuator_gainprm[:, 0], rtol=1e-12
+    )
 
 
 @pytest.mark.parametrize(
