@@ -13,16 +13,21 @@ from pathlib import Path
 import mujoco
 import numpy as np
 import pytest
+from hypothesis import given
 
 from mjcf_model import compiled
-from mjcf_model.errors import MjcfValueError
+from mjcf_model.errors import MjcfError, MjcfValueError
+from mjcf_model.nodes.base import TypedElement
+from mjcf_model.strategies import elements
 from mjcf_model.tools.check import check_file
 from mjcf_model.tools.compare import compile_text_beside
 from mjcf_model.transforms.scaling.scaled import MassPolicy, scaled
 from serializers import dumps, from_etree, load, loads
+from tests.conftest import PER_CLASS
 from tests.oracles import friction_problems, scaled_problems
 from tests.scaling_oracle import scaled_model_problems
 from tests.skin_files import skin_file
+from tests.test_properties import CLASSES
 
 FIXTURES = Path(__file__).parent / "fixtures" / "scaling"
 
@@ -276,3 +281,22 @@ def test_skin_read_from_a_file_without_the_folder_is_refused() -> None:
     """Without its folder the skin's file cannot be read: scaling says to write it inline."""
     with pytest.raises(MjcfValueError, match=r"skin 'sheet' is read from 'sheet\.skn'.*inline"):
         scaled(loads(_SKINNED), 2)
+
+
+@pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
+def test_a_lone_element_of_any_class_scales_or_is_refused_clearly(cls: type[TypedElement]) -> None:
+    """``scaled`` takes any node: outside a model it has no ancestors and no model to read.
+
+    The result is a node of the same class, or an ``MjcfError`` that says why.
+    """
+
+    @PER_CLASS
+    @given(elements(cls))
+    def check(node: TypedElement) -> None:
+        try:
+            result = scaled(node, 3.0)
+        except MjcfError:
+            return
+        assert type(result) is cls
+
+    check()
