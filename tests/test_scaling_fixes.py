@@ -300,3 +300,47 @@ def test_a_lone_element_of_any_class_scales_or_is_refused_clearly(cls: type[Type
         assert type(result) is cls
 
     check()
+
+
+#: Slides along x, along MuJoCo's default axis (z) and along y given by a class, in bodies
+#: that do not turn: per-axis scaling is exact there.
+ALIGNED_SLIDES = """<mujoco>
+  <default><default class="sideways"><joint type="slide" axis="0 1 0"/></default></default>
+  <worldbody>
+    <body name="a" pos="0.1 0.2 0.3">
+      <joint name="x" type="slide" axis="1 0 0" range="-0.1 0.2"/>
+      <geom size="0.05"/>
+      <body name="b" pos="0.05 0 0.1">
+        <joint name="z" type="slide" range="0 0.3"/>
+        <geom size="0.05"/>
+        <body name="c" pos="0 0.1 0" childclass="sideways">
+          <joint name="y" range="-0.2 0.2"/>
+          <geom size="0.05"/>
+        </body>
+      </body>
+    </body>
+  </worldbody>
+  <keyframe><key qpos="0.15 0.25 -0.1"/></keyframe>
+</mujoco>"""
+
+
+def test_per_axis_factors_scale_axis_aligned_slides_exactly() -> None:
+    """Per-axis factors: each slide scales by the factor along its axis.
+
+    Its range and its key value scale so, and the key's pose (MuJoCo's kinematics) is
+    the original's pose scaled axis by axis.
+    """
+    factors = np.array([2.0, 3.0, 5.0])
+    original = mujoco.MjModel.from_xml_string(ALIGNED_SLIDES)
+    changed = mujoco.MjModel.from_xml_string(dumps(scaled(loads(ALIGNED_SLIDES), factors)))
+    along = np.abs(original.jnt_axis) @ factors
+    assert along.tolist() == [2.0, 5.0, 3.0]
+    np.testing.assert_allclose(changed.jnt_range, original.jnt_range * along[:, None], rtol=1e-12)
+    np.testing.assert_allclose(changed.key_qpos, original.key_qpos * along, rtol=1e-12)
+    poses = []
+    for model in (original, changed):
+        data = mujoco.MjData(model)
+        mujoco.mj_resetDataKeyframe(model, data, 0)
+        mujoco.mj_kinematics(model, data)
+        poses.append(data.xpos.copy())
+    np.testing.assert_allclose(poses[1], poses[0] * factors, rtol=1e-12, atol=1e-15)
