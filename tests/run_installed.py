@@ -6,7 +6,8 @@ The README's test command ends with this script. It
 2. for each environment in ``tests/environments/`` (``newest``: MuJoCo 4.0.0;
    ``oldest``: MuJoCo 3.9.0, where robosuite 1.5.2's own environments run),
    creates a fresh virtual environment and installs the wheel with its ``test``
-   extra under that file's pip constraints;
+   extra under that file's pip constraints (all environments at once: the later
+   ones install while the first suite runs);
 3. copies ``tests/`` and ``benchmarks/`` (which the tests run) into a folder of
    their own, so that the source folders are not importable from where pytest
    runs, and checks that ``mjcf_model`` and ``serializers`` import from the
@@ -25,6 +26,7 @@ Without pytest arguments, ``-n 2`` is used. The folders live in
 
 from __future__ import annotations
 
+import concurrent.futures
 import os
 import shutil
 import subprocess
@@ -131,11 +133,15 @@ def check_installed_imports(python: Path, suite: Path, environment: dict[str, st
 
 
 def run_suite(
-    name: str, wheel: Path, pytest_arguments: list[str], *, whole_suite: bool = True
+    name: str,
+    python: Path,
+    wheel: Path,
+    pytest_arguments: list[str],
+    *,
+    whole_suite: bool = True,
 ) -> tuple[int, int]:
-    """Install, copy, check and run the suite in one environment: (passed, failed)."""
+    """Copy, check and run the suite in one installed environment: (passed, failed)."""
     print(f"\n=== environment {name!r}: {ENVIRONMENTS / f'{name}.txt'}", flush=True)
-    python = environment_python(name, wheel)
     suite = suite_folder(name)
     environment = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     if name in HYPOTHESIS_PROFILES:
@@ -217,12 +223,21 @@ def main(arguments: list[str]) -> int:
         return 2
     WORK.mkdir(parents=True, exist_ok=True)
     wheel = build_wheel()
-    results = {
-        name: run_suite(
-            name, wheel, pytest_arguments or ["-n", "2"], whole_suite=not pytest_arguments
-        )
-        for name in names or available
-    }
+    # every environment installs at once, the later ones while the first suite runs
+    with concurrent.futures.ThreadPoolExecutor() as pool:
+        installing = {
+            name: pool.submit(environment_python, name, wheel) for name in names or available
+        }
+        results = {
+            name: run_suite(
+                name,
+                future.result(),
+                wheel,
+                pytest_arguments or ["-n", "2"],
+                whole_suite=not pytest_arguments,
+            )
+            for name, future in installing.items()
+        }
     print()
     for name, (passed, failed) in results.items():
         print(f"environment {name}: {passed} passed, {failed} failed")
