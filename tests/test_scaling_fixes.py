@@ -21,6 +21,7 @@ from mjcf_model.nodes.base import TypedElement
 from mjcf_model.strategies import elements
 from mjcf_model.tools.check import check_file
 from mjcf_model.tools.compare import compile_text_beside
+from mjcf_model.transforms.scaling.plugins import SDF_LENGTHS
 from mjcf_model.transforms.scaling.scaled import MassPolicy, scaled
 from serializers import dumps, from_etree, load, loads
 from tests.conftest import PER_CLASS
@@ -147,8 +148,13 @@ def test_a_disc_flexcomp_is_refused_exactly_when_mujoco_would_reject_it(
         assert "Spacing must be larger" in str(error)
         rejected = True
     if rejected:
-        with pytest.raises(MjcfValueError, match="disc flexcomp 'd'"):
+        with pytest.raises(MjcfValueError) as refused:
             scaled(loads(_disc(1, margin)), factor)
+        assert str(refused.value) == (
+            f"cannot scale the disc flexcomp 'd' by {(float(factor),) * 3}: its spacing grows "
+            "with the square root of the factor but must exceed twice its radius plus its "
+            "margin, which grow with the factor; use a smaller factor or a larger spacing"
+        )
     else:
         mujoco.MjModel.from_xml_string(dumps(scaled(loads(_disc(1, margin)), factor)))
 
@@ -167,8 +173,20 @@ def test_sdf_plugin_with_fixed_dimensions_is_refused(plugin: str) -> None:
     """MuJoCo's nut and bolt SDFs compile but have no length settings: scaling names them."""
     text = (FIXTURES / "sdf_fixed_shape.xml").read_text().replace("sdf.nut", f"sdf.{plugin}")
     assert mujoco.MjModel.from_xml_string(text).nmesh == 1
-    with pytest.raises(MjcfValueError, match=rf"'mujoco\.sdf\.{plugin}'.*fixed"):
+    with pytest.raises(MjcfValueError) as refused:
         scaled(loads(text), 2)
+    assert str(refused.value) == _refusal(
+        "mesh", f"mujoco.sdf.{plugin}", "its dimensions are fixed in the plugin's code"
+    )
+
+
+def _refusal(owner: str, plugin: str, why: str) -> str:
+    """What scaling says of a shape plugin it cannot scale: why, and what to do."""
+    return (
+        f"cannot scale the {owner} made by plugin {plugin!r}: {why}; only "
+        f"{', '.join(SDF_LENGTHS)} scale. Replace that shape (or scale its settings "
+        "yourself and take it out of the model) before scaling"
+    )
 
 
 #: The gear SDF's settings in the order MuJoCo keeps them, with its defaults
@@ -233,8 +251,10 @@ def test_unknown_shape_plugin_is_refused(owner: str) -> None:
     model = loads(
         f"<mujoco><asset>{mesh}</asset><worldbody><body>{geom}</body></worldbody></mujoco>"
     )
-    with pytest.raises(MjcfValueError, match=r"'acme\.sdf\.blob'"):
+    with pytest.raises(MjcfValueError) as refused:
         scaled(model, 2)
+    why = "mjcf-model does not know which of its settings are lengths"
+    assert str(refused.value) == _refusal(owner, "acme.sdf.blob", why)
 
 
 def test_attach_fixture_compiles_but_scaling_refuses_it() -> None:
