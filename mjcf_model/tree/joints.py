@@ -46,36 +46,37 @@ def joint_layout(node: AnyElement, classes: DefaultClasses) -> tuple[JointInfo, 
 
     """
     # MuJoCo numbers a body's joints (its frames' included) before any body inside it:
-    # each joint is filed under the body it belongs to, bodies in the order they open
+    # each joint is filed under the innermost body around it, bodies in the order they open
     joints: list[tuple[int, JointInfo]] = []
-    open_bodies: list[tuple[int, int]] = []  # (depth, order) of the bodies around
+    around: list[tuple[int, int]] = []  # (depth, order opened) of the bodies around
     opened = 0
     for element, key, ancestors in _body_walk(node):
         if key == "body/replicate" and not _holds_joints(element):
             continue  # copies of geoms, sites...: no joints to count
         if key in ("body/replicate", "body/flexcomp", "body/attach"):
             return None
+        while around and around[-1][0] >= len(ancestors):
+            around.pop()  # a body closed before this element
         if element.tag == "body":
-            while open_bodies and open_bodies[-1][0] >= len(ancestors):
-                open_bodies.pop()
-            open_bodies.append((len(ancestors), opened))
+            around.append((len(ancestors), opened))
             opened += 1
-        elif key == "body/freejoint":
-            info = JointInfo(name=_name(element), type="free", axis=(0.0, 0.0, 1.0))
-            joints.append((_owner(open_bodies, ancestors), info))
-        elif key == "body/joint":
-            kind, axis = classes.resolve_many(element, ancestors, ("type", "axis"))
-            kind = str(kind or "hinge")
-            direction = numbers_of(axis) if kind != "free" else None
-            info = JointInfo(name=_name(element), type=kind, axis=direction or (0.0, 0.0, 1.0))
-            joints.append((_owner(open_bodies, ancestors), info))
+        elif key in ("body/freejoint", "body/joint"):
+            joints.append(
+                (around[-1][1] if around else -1, _info(element, key, ancestors, classes))
+            )
     return tuple(info for _, info in sorted(joints, key=lambda pair: pair[0]))
 
 
-def _owner(open_bodies: list[tuple[int, int]], ancestors: Sequence[AnyElement]) -> int:
-    """The order of the body a joint belongs to: the nearest body around it."""
-    depth = max((i for i, a in enumerate(ancestors) if a.tag == "body"), default=-1)
-    return next((order for d, order in reversed(open_bodies) if d == depth), -1)
+def _info(
+    element: AnyElement, key: str, ancestors: Sequence[AnyElement], classes: DefaultClasses
+) -> JointInfo:
+    """A body's joint or free joint, its type and axis completed from its classes."""
+    if key == "body/freejoint":
+        return JointInfo(name=_name(element), type="free", axis=(0.0, 0.0, 1.0))
+    kind, axis = classes.resolve_many(element, ancestors, ("type", "axis"))
+    kind = str(kind or "hinge")
+    direction = numbers_of(axis) if kind != "free" else None
+    return JointInfo(name=_name(element), type=kind, axis=direction or (0.0, 0.0, 1.0))
 
 
 def _holds_joints(element: AnyElement) -> bool:
