@@ -22,7 +22,7 @@ from collections.abc import Sequence
 
 from mjcf_model.nodes.base import AnyElement, get_attribute
 from mjcf_model.transforms.scaling.context import ScaleContext, times
-from mjcf_model.transforms.scaling.pieces import Changes, Rule, builtin_default, combine
+from mjcf_model.transforms.scaling.pieces import Changes, builtin_default, combine
 from mjcf_model.tree.traversal import keyed_walk
 from mjcf_model.values import numbers_of
 
@@ -75,15 +75,23 @@ def _tendon_named(name: object, context: ScaleContext) -> AnyElement | None:
     return context.cached("tendons", find).get(name) if name is not None else None
 
 
-def _materialized(attribute: str) -> Rule:
+class _Materialized:
     """Write a tendon length scaled on the element, whether its own or inherited.
 
     The default tendon is shared by spatial and fixed tendons, so it is left alone.
     """
 
-    def rule(
-        element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+    __slots__ = ("attribute",)
+
+    def __init__(self, attribute: str) -> None:
+        #: ``range``, ``springlength`` or ``margin``.
+        self.attribute = attribute
+
+    def __call__(
+        self, element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
     ) -> Changes:
+        """The scaled length of ``element``."""
+        attribute = self.attribute
         value = context.classes.resolve(element, ancestors, attribute, "tendon")
         numbers = numbers_of(value)
         if numbers is None or (attribute == "springlength" and set(numbers) == {-1.0}):
@@ -91,10 +99,8 @@ def _materialized(attribute: str) -> Rule:
         assert value is not None
         return {attribute: times(value, context.mean)}
 
-    return rule
 
-
-_TENDON_LENGTHS = combine(*[_materialized(a) for a in ("range", "springlength", "margin")])
+_TENDON_LENGTHS = combine(*[_Materialized(a) for a in ("range", "springlength", "margin")])
 
 
 def spatial_tendon(

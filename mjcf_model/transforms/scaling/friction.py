@@ -110,18 +110,29 @@ def friction_rule(tag: str) -> Rule:
         {'friction': (0.5, 0.5, 0.02)}
 
     """
+    start = _FIRST_LENGTH[tag]
+    return combine(parts("friction", (1.0,) * start, start), _Completion(tag))
 
-    def complete(
-        element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+
+class _Completion:
+    """The part of :func:`friction_rule` that completes a main class's (or a part's) friction."""
+
+    __slots__ = ("tag",)
+
+    def __init__(self, tag: str) -> None:
+        #: ``"geom"``, ``"pair"`` or ``"flex"``.
+        self.tag = tag
+
+    def __call__(
+        self, element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
     ) -> Changes:
+        """The completed friction of ``element``, where it is completed."""
+        tag = self.tag
         if tag not in _DEFAULTS or not _whole_model(context):  # no class gives it
             in_default = any(a.tag == "default" for a in ancestors)
             return {} if in_default else _completion(tag, element, context)
         main = len(ancestors) == 2 and ancestors[-1].tag == "default"
         return _completion(tag, element, context) if main and tag in _unwritten(context) else {}
-
-    start = _FIRST_LENGTH[tag]
-    return combine(parts("friction", (1.0,) * start, start), complete)
 
 
 def with_friction_defaults(model: AnyElement, context: ScaleContext) -> AnyElement:

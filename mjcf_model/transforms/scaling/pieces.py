@@ -29,6 +29,7 @@ from mjcf_model.values import Value, numbers_of
 __all__ = [
     "NO_LENGTHS",
     "Changes",
+    "BuiltinRule",
     "Rule",
     "ValueRule",
     "ValueScale",
@@ -39,7 +40,6 @@ __all__ = [
     "masses",
     "parts",
     "points",
-    "with_builtin",
 ]
 
 Changes = dict[str, Value | None]
@@ -114,21 +114,25 @@ def _readable(value: Value) -> bool:
     return type(value) is tuple or type(value) is float or numbers_of(value) is not None
 
 
-def _by_cycle(cycle: str) -> ValueScale:
+class _CycleScale:
     """Multiply by the factors ``context.cycles`` keeps under the name ``cycle``."""
-    read = operator.attrgetter(cycle)
 
-    def scale(value: Value, context: ScaleContext) -> Value | None:
-        factors: tuple[float, ...] = read(context.cycles)
+    __slots__ = ("read",)
+
+    def __init__(self, cycle: str) -> None:
+        #: Reads the factors from ``context.cycles``.
+        self.read = operator.attrgetter(cycle)
+
+    def __call__(self, value: Value, context: ScaleContext) -> Value | None:
+        """``value`` scaled; ``None`` for text without numbers."""
+        factors: tuple[float, ...] = self.read(context.cycles)
         if type(value) is tuple and len(factors) == 1:  # the common case, inline
             factor = factors[0]
             return tuple([v * factor for v in value])
         return times_cycle(value, factors) if _readable(value) else None
 
-    return scale
 
-
-_POINTS, _LENGTHS, _MASSES, _INERTIAS = map(_by_cycle, ("per_axis", "mean", "mass", "inertia"))
+_POINTS, _LENGTHS, _MASSES, _INERTIAS = map(_CycleScale, ("per_axis", "mean", "mass", "inertia"))
 
 
 def points(*attributes: str) -> list[Rule]:
@@ -143,15 +147,28 @@ def lengths(*attributes: str) -> list[Rule]:
 
 def parts(attribute: str, unit: tuple[float, ...], start: int) -> Rule:
     """Multiply the values from index ``start`` on (friction: torsion and rolling)."""
+    return ValueRule(attribute, _PartsScale(unit, start))
 
-    def scale(value: Value, context: ScaleContext) -> Value | None:
+
+class _PartsScale:
+    """The scale of :func:`parts`: ``unit`` before index ``start``, the mean factor from it."""
+
+    __slots__ = ("start", "unit")
+
+    def __init__(self, unit: tuple[float, ...], start: int) -> None:
+        #: The factors of the values before ``start``.
+        self.unit = unit
+        #: The index of the first length.
+        self.start = start
+
+    def __call__(self, value: Value, context: ScaleContext) -> Value | None:
+        """``value`` scaled; ``None`` for text without numbers."""
         found = numbers_of(value)
         if found is None:
             return None
-        factors = [*unit[:start], *[context.mean] * (len(found) - start)][: len(found)]
+        length = len(found) - self.start
+        factors = [*self.unit[: self.start], *[context.mean] * length][: len(found)]
         return tuple(n * f for n, f in zip(found, factors, strict=True))
-
-    return ValueRule(attribute, scale)
 
 
 def masses(*attributes: str) -> list[Rule]:
@@ -164,32 +181,55 @@ def inertias(*attributes: str) -> list[Rule]:
     return [ValueRule(a, _INERTIAS) for a in attributes]
 
 
-def with_builtin(
-    attribute: str,
-    tag: str,
-    builtin: Callable[[], tuple[float, ...]],
-    factors: Callable[[AnyElement, Sequence[AnyElement], ScaleContext], Any],
-) -> Rule:
+class BuiltinRule:
     """Scale ``attribute``; where nothing sets it, write MuJoCo's default (``builtin()``) scaled.
 
     A partial value (a sphere site's one size) is completed from its classes and
     the built-in default first, because the values it leaves out are lengths too.
     In a default class only what is written is scaled.
+
+    Example:
+        >>> from mjcf_model import Site
+        >>> rule = BuiltinRule("size", "site", lambda: (0.005, 0.005, 0.005), lambda *_: 2.0)
+        >>> rule(Site(size=[0.1]), (), ScaleContext(factors=(2.0, 2.0, 2.0)))
+        {'size': (0.2, 0.01, 0.01)}
+
     """
 
-    def rule(
-        element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
+    __slots__ = ("attribute", "builtin", "factors", "tag")
+
+    def __init__(
+        self,
+        attribute: str,
+        tag: str,
+        builtin: Callable[[], tuple[float, ...]],
+        factors: Callable[[AnyElement, Sequence[AnyElement], ScaleContext], Any],
+    ) -> None:
+        #: The attribute scaled.
+        self.attribute = attribute
+        #: The tag of the elements (and class settings) that hold it.
+        self.tag = tag
+        #: MuJoCo's built-in value.
+        self.builtin = builtin
+        #: The factor (or per-value factors) of an element.
+        self.factors = factors
+
+    def __call__(
+        self, element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
     ) -> Changes:
-        value = get_attribute(element, attribute)
+        """The change of :attr:`attribute` on ``element``."""
+        value = get_attribute(element, self.attribute)
         own = numbers_of(value)
-        full = None if _in_default(ancestors) else _unwritten(element, ancestors, context, own)
+        full = None if _in_default(ancestors) else self._unwritten(element, ancestors, context, own)
         if full is not None:
-            return {attribute: times(_completed(full, own), factors(element, ancestors, context))}
+            factors = self.factors(element, ancestors, context)
+            return {self.attribute: times(_completed(full, own), factors)}
         if value is None or own is None:
             return {}
-        return {attribute: times(value, factors(element, ancestors, context))}
+        return {self.attribute: times(value, self.factors(element, ancestors, context))}
 
     def _unwritten(
+        self,
         element: AnyElement,
         ancestors: Sequence[AnyElement],
         context: ScaleContext,
@@ -199,34 +239,30 @@ def with_builtin(
 
         It is not needed when the element writes every value, or its classes do.
         """
-        full = builtin()
+        full = self.builtin()
         if own is not None and len(own) >= len(full):
             return None
         classes = context.classes
-        if not classes.sets(tag):
+        if not classes.sets(self.tag):
             return full
         name = classes.class_of(element, ancestors)
         full, covered = context.cached(
-            ("builtin", tag, attribute, name),
-            lambda: _class_values(classes, name, tag, attribute),
+            ("builtin", self.tag, self.attribute, name),
+            lambda: self._class_values(classes, name),
         )
         return None if covered >= len(full) else full
 
-    def _class_values(
-        classes: DefaultClasses, name: str, tag: str, attribute: str
-    ) -> tuple[tuple[float, ...], int]:
+    def _class_values(self, classes: DefaultClasses, name: str) -> tuple[tuple[float, ...], int]:
         """The built-in value completed by class ``name``, and how many values classes write."""
-        full = list(builtin())
+        full = list(self.builtin())
         covered = 0  # how many leading values the classes write (and scale themselves)
         for current in reversed(classes.chain(name)):
-            setting = classes.settings.get((current, tag))
-            inherited = numbers_of(get_attribute(setting, attribute)) if setting else None
+            setting = classes.settings.get((current, self.tag))
+            inherited = numbers_of(get_attribute(setting, self.attribute)) if setting else None
             if inherited:
                 full[: len(inherited)] = inherited
                 covered = max(covered, len(inherited))
         return tuple(full), covered
-
-    return rule
 
 
 def _completed(full: tuple[float, ...], own: tuple[float, ...] | None) -> float | tuple[float, ...]:

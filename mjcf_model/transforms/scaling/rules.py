@@ -30,6 +30,7 @@ from mjcf_model.transforms.scaling.friction import friction_rule
 from mjcf_model.transforms.scaling.mass import geom_density
 from mjcf_model.transforms.scaling.pieces import (
     NO_LENGTHS,
+    BuiltinRule,
     Changes,
     Rule,
     ValueRule,
@@ -39,7 +40,6 @@ from mjcf_model.transforms.scaling.pieces import (
     lengths,
     masses,
     points,
-    with_builtin,
 )
 from mjcf_model.transforms.scaling.plugins import makes_sdf, sdf_config, sdf_mesh_scale
 from mjcf_model.tree.queries import attribute_values
@@ -70,7 +70,7 @@ def _per_axis(
 
 def _builtin_length(attribute: str, tag: str) -> Rule:
     """A length MuJoCo gives a non-zero default (camera ``ipd``, light ``bulbradius``)."""
-    return with_builtin(attribute, tag, functools.partial(builtin_default, tag, attribute), _mean)
+    return BuiltinRule(attribute, tag, functools.partial(builtin_default, tag, attribute), _mean)
 
 
 def _size_factors(
@@ -101,7 +101,7 @@ def _factors_of_size(count: int, context: ScaleContext) -> tuple[float, ...]:
 _geom_size = ValueRule("size", _scaled_size)
 
 
-_site_size = with_builtin(
+_site_size = BuiltinRule(
     "size", "site", functools.partial(builtin_default, "site", "size"), _size_factors
 )
 
@@ -241,7 +241,7 @@ def _area_factor(
 
 #: A cylinder's ``area``; MuJoCo's built-in one (1) is written, scaled, where nothing sets
 #: it (a ``diameter``, scaled as a length, still overrides it).
-_builtin_area = with_builtin("area", "cylinder", lambda: (1.0,), _area_factor)
+_builtin_area = BuiltinRule("area", "cylinder", lambda: (1.0,), _area_factor)
 
 
 def _cylinder_area(
@@ -306,7 +306,7 @@ def _site_gear(
 
 
 _ACTUATOR = combine(lengths("cranklength"), _site_gear)
-_MESH_SCALE = with_builtin(
+_MESH_SCALE = BuiltinRule(
     "scale", "mesh", functools.partial(builtin_default, "mesh", "scale"), _per_axis
 )
 
@@ -321,11 +321,11 @@ def _mesh(element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleCo
 _POINT_TYPES = frozenset({"direct", "mesh", "gmsh"})
 #: MuJoCo's default flexcomp ``spacing`` and ``inertiabox`` (``user_flexcomp.cc``).
 _FLEXCOMP_SPACING, _FLEXCOMP_INERTIABOX = (0.02, 0.02, 0.02), (0.005,)
-_FLEX_RADIUS = with_builtin(
+_FLEX_RADIUS = BuiltinRule(
     "radius", "flex", functools.partial(builtin_default, "flex", "radius"), _mean
 )
 _FLEXCOMP_COMMON = combine(points("pos"), _FLEX_RADIUS, masses("mass"))
-_FLEXCOMP_SCALE = with_builtin(
+_FLEXCOMP_SCALE = BuiltinRule(
     "scale", "flexcomp", functools.partial(builtin_default, "mesh", "scale"), _per_axis
 )
 
