@@ -1,25 +1,30 @@
-"""Give mutmut's import-time functions every test, and name their survivors to run again.
+"""Run again, each in a fresh process, the surviving mutants of functions that run at import.
 
-mutmut 3.8 records which tests call each function while the suite runs once. The
-library's rule tables (the scaling rules, robosuite's ``scale_*_element`` functions) are
-built by factories that run at import, which happens inside the first test: mutmut then
-credits such a factory to that one test alone, and its mutants run against it alone.
-This script gives those functions every test of the run, shortest first, in
-``mutants/mutmut-stats.json`` and prints the names of their surviving mutants, for::
+mutmut 3.8 forks every mutant from a process that has imported the library, and
+records which tests call each function while the suite runs once. A function that
+runs at import (the code that builds the namespace table, or robosuite's
+``scale_*_element`` functions) has then already run, unmutated, when a mutant of it
+is switched on, and mutmut credits it to the first test alone (the one that ran the
+import): its mutants "survive" without having been tried. This script finds those
+functions in ``mutants/mutmut-stats.json``, and runs each of their surviving mutants
+in a new Python process, where the import happens under the mutant, against every
+test of the selection (shortest first, ``tests/mutation_order.py``), and prints the
+ones that still survive. Run it in the folder ``mutmut run`` ran in, after that run::
 
-    python tests/mutation_import_time.py > names.txt
-    HYPOTHESIS_PROFILE=mutation mutmut run $(cat names.txt)
+    HYPOTHESIS_PROFILE=mutation python tests/mutation_import_time.py
 
-Run it in the folder ``mutmut run`` ran in, after that run (not in CI; pinned to the
-stats format of mutmut 3.8.1, the ``mutation`` extra).
+Not in CI; pinned to the stats format of mutmut 3.8.1 (the ``mutation`` extra).
 """
 
 from __future__ import annotations
 
 import collections
+import concurrent.futures
 import json
+import os
 import subprocess
 import sys
+import tomllib
 from pathlib import Path
 
 STATS = Path("mutants") / "mutmut-stats.json"
@@ -40,24 +45,50 @@ def import_time_functions(tests_by_function: dict[str, list[str]]) -> list[str]:
     return sorted(name for name, tests in tests_by_function.items() if tests == [first])
 
 
-def main() -> int:
-    """Rewrite the stats and print the survivors of the import-time functions."""
-    stats = json.loads(STATS.read_text())
-    tests_by_function = stats["tests_by_mangled_function_name"]
-    durations = stats["duration_by_test"]
-    functions = import_time_functions(tests_by_function)
-    every_test = sorted(durations, key=durations.get)
-    for name in functions:
-        tests_by_function[name] = every_test
-    STATS.write_text(json.dumps(stats))
+def _survivors(functions: list[str]) -> list[str]:
+    """The mutants of ``functions`` that mutmut reports as surviving."""
     results = subprocess.run(
         [sys.executable, "-m", "mutmut", "results"], capture_output=True, text=True, check=True
     ).stdout
+    names = []
     for line in results.splitlines():
         mutant, _, verdict = line.strip().partition(": ")
         if verdict == "survived" and mutant.rsplit("__mutmut_", 1)[0] in functions:
-            print(mutant)
-    print(f"{len(functions)} import-time functions given {len(every_test)} tests", file=sys.stderr)
+            names.append(mutant)
+    return names
+
+
+def _survives(mutant: str, tests: list[str]) -> bool:
+    """Whether every test passes with ``mutant`` switched on from the first import."""
+    command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
+    command += ["-p", "tests.mutation_order", *tests]
+    run = subprocess.run(
+        command,
+        cwd="mutants",
+        env={**os.environ, "MUTANT_UNDER_TEST": mutant},
+        capture_output=True,
+        check=False,
+    )
+    if run.returncode == 5:  # no test ran: the selection is wrong, not the mutant killed
+        raise SystemExit(f"no test ran for {mutant}: check pytest_add_cli_args_test_selection")
+    return run.returncode == 0
+
+
+def main() -> int:
+    """Print each import-time survivor's verdict, then the number still surviving."""
+    config = tomllib.loads(Path("pyproject.toml").read_text())["tool"]["mutmut"]
+    tests: list[str] = config["pytest_add_cli_args_test_selection"]
+    stats = json.loads(STATS.read_text())
+    functions = import_time_functions(stats["tests_by_mangled_function_name"])
+    mutants = _survivors(functions)
+    print(f"{len(mutants)} survivors in {len(functions)} import-time functions", file=sys.stderr)
+    with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+        verdicts = pool.map(lambda mutant: _survives(mutant, tests), mutants)
+        left = 0
+        for mutant, survived in zip(mutants, verdicts, strict=True):
+            print(f"{mutant}: {'survived' if survived else 'killed'}", flush=True)
+            left += survived
+    print(f"{left} of {len(mutants)} still survive", file=sys.stderr)
     return 0
 
 
