@@ -1,4 +1,4 @@
-"""Run again, each in a fresh process, the surviving mutants of functions that run at import.
+"""Run surviving mutants again, each in a fresh process, against every test of the selection.
 
 mutmut 3.8 forks every mutant from a process that has imported the library, and
 records which tests call each function while the suite runs once. A function that
@@ -11,7 +11,10 @@ in a new Python process, where the import happens under the mutant, against ever
 test of the selection (shortest first, ``tests/mutation_order.py``), and prints the
 ones that still survive. Run it in the folder ``mutmut run`` ran in, after that run::
 
-    HYPOTHESIS_PROFILE=mutation python tests/mutation_import_time.py
+    HYPOTHESIS_PROFILE=mutation python tests/mutation_rerun.py
+
+With ``--all`` it runs every survivor that way: after tests were added (copy them
+into ``mutants/tests`` and the selection), the verdicts then need no new mutmut run.
 
 Not in CI; pinned to the stats format of mutmut 3.8.1 (the ``mutation`` extra).
 """
@@ -45,15 +48,16 @@ def import_time_functions(tests_by_function: dict[str, list[str]]) -> list[str]:
     return sorted(name for name, tests in tests_by_function.items() if tests == [first])
 
 
-def _survivors(functions: list[str]) -> list[str]:
-    """The mutants of ``functions`` that mutmut reports as surviving."""
+def _survivors(functions: list[str] | None) -> list[str]:
+    """The mutants of ``functions`` (of any function for ``None``) mutmut reports surviving."""
     results = subprocess.run(
         [sys.executable, "-m", "mutmut", "results"], capture_output=True, text=True, check=True
     ).stdout
     names = []
     for line in results.splitlines():
         mutant, _, verdict = line.strip().partition(": ")
-        if verdict == "survived" and mutant.rsplit("__mutmut_", 1)[0] in functions:
+        function = mutant.rsplit("__mutmut_", 1)[0]
+        if verdict == "survived" and (functions is None or function in functions):
             names.append(mutant)
     return names
 
@@ -80,8 +84,8 @@ def main() -> int:
     tests: list[str] = config["pytest_add_cli_args_test_selection"]
     stats = json.loads(STATS.read_text())
     functions = import_time_functions(stats["tests_by_mangled_function_name"])
-    mutants = _survivors(functions)
-    print(f"{len(mutants)} survivors in {len(functions)} import-time functions", file=sys.stderr)
+    mutants = _survivors(None if "--all" in sys.argv[1:] else functions)
+    print(f"{len(mutants)} survivors to run again", file=sys.stderr)
     with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
         verdicts = pool.map(lambda mutant: _survives(mutant, tests), mutants)
         left = 0
