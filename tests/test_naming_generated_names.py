@@ -15,7 +15,9 @@ import attrs
 import mujoco
 import pytest
 
+from mjcf_model import Body
 from mjcf_model.errors import MjcfAssetError, MjcfError
+from mjcf_model.nodes.base import GenericElement, TypedElement
 from mjcf_model.tools.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.transforms.naming.generated import GeneratedNames, copy_suffix, model_file_name
 from mjcf_model.transforms.naming.renaming import prefixed, renamed
@@ -89,7 +91,7 @@ def assert_mujoco_names_the_file(folder: Path, name: str, stale: str) -> None:
 
 
 def test_model_file_name_follows_a_rewrite_with_the_same_size(tmp_path: Path) -> None:
-    """A file rewritten to the same size with a new time is read again: MuJoCo reads the new root."""
+    """A file rewritten to the same size at a new time is read again, as MuJoCo reads it."""
     child = written(tmp_path, CHILD.replace('"kid"', '"aa"'), "child.xml")
     assert model_file_name(child) == "aa"
     stat = child.stat()
@@ -140,7 +142,11 @@ def test_copy_suffix_is_the_suffix_mujoco_gives_each_copy() -> None:
       </replicate>
       <replicate count="3" offset="0 0.3 0"><body name="cell"><geom size="0.1"/></body>
       </replicate></worldbody></mujoco>"""
-    posts, cells = loads(text).worldbody.children
+    world = loads(text).worldbody
+    assert world is not None
+    posts, cells = world.children
+    assert isinstance(posts, TypedElement | GenericElement)
+    assert isinstance(cells, TypedElement | GenericElement)
     bodies = body_names(mujoco.MjModel.from_xml_string(text))
     expected = [f"post_{i:02d}" for i in range(12)] + [f"cell{i}" for i in range(3)]
     assert bodies[1:] == expected
@@ -243,6 +249,30 @@ def test_attached_names_that_look_like_copies_are_not_copies(tmp_path: Path) -> 
     ]
 
 
+def test_an_attached_name_ending_like_a_copy_of_another_replicate_stays(tmp_path: Path) -> None:
+    """b-1 is attached (prefix b-); b, outside every replicate, has no copies: b-1 keeps its name.
+
+    The replicate's separator ``-`` makes b-1 look like a copy of b; MuJoCo only
+    copies what a replicate holds (c-0 and c-1 here).
+    """
+    written(tmp_path, CHILD.replace('name="x1"', 'name="1"'), "child.xml")
+    path = written(
+        tmp_path,
+        """<mujoco><asset><model file="child.xml"/></asset><worldbody>
+          <body name="b"><geom size="0.1"/></body>
+          <replicate count="2" sep="-" offset="1 0 0"><body name="c"><geom size="0.1"/></body>
+          </replicate>
+          <body name="mount" pos="0 0 1"><attach model="kid" body="1" prefix="b-"/></body>
+        </worldbody><contact><exclude body1="b-1" body2="c-0"/></contact></mujoco>""",
+        "scene.xml",
+    )
+    original = mujoco.MjModel.from_xml_path(str(path))
+    assert {"b", "b-1", "c-0", "c-1"} <= set(body_names(original))
+    changed = compile_text_beside(dumps(renamed(load(path), {"body": {"b": "z"}})), path)
+    assert model_differences(original, changed, ignore=RENAMING_FIELDS) == []
+    assert body_names(changed) == [{"b": "z"}.get(name, name) for name in body_names(original)]
+
+
 def test_reference_equal_to_an_attach_prefix_is_not_an_attached_name(tmp_path: Path) -> None:
     """Prefixing one body: a camera there aimed at the parent's body g_ keeps aiming at it.
 
@@ -262,7 +292,9 @@ def test_reference_equal_to_an_attach_prefix_is_not_an_attached_name(tmp_path: P
     )
     model = load(path)
     world = model.worldbody
+    assert world is not None
     rig = world.children[1]
+    assert isinstance(rig, Body)
     new_world = attrs.evolve(
         world, children=tuple(prefixed(rig, "p_") if c is rig else c for c in world.children)
     )
@@ -292,3 +324,45 @@ def test_a_flexcomp_with_an_empty_name_makes_nothing_to_rename() -> None:
     changed = mujoco.MjModel.from_xml_string(dumps(new))
     assert model_differences(original, changed, ignore=RENAMING_FIELDS) == []
     assert body_names(changed) == ["world", "anchor", "_0", "_1", "_2"]
+
+
+def test_attached_like_names_of_flexcomp_bodies_are_not_flexcomp_bodies(tmp_path: Path) -> None:
+    """rope_x1 is attached (prefix rope_), not a body of the flexcomp rope: it keeps its name.
+
+    MuJoCo names the flexcomp's bodies rope_0, rope_1, rope_2; renaming the flex
+    rope to cord renames those only.
+    """
+    written(tmp_path, CHILD, "child.xml")
+    path = written(
+        tmp_path,
+        """<mujoco><asset><model file="child.xml"/></asset><worldbody>
+          <flexcomp name="rope" type="grid" dim="1" count="3 1 1" spacing="0.05 0.05 0.05"
+                    radius="0.01" mass="0.1"><edge equality="true"/></flexcomp>
+          <body name="mount" pos="0 0 1"><attach model="kid" body="palm" prefix="rope_"/></body>
+        </worldbody><contact><exclude body1="rope_x1" body2="rope_1"/></contact></mujoco>""",
+        "scene.xml",
+    )
+    original = mujoco.MjModel.from_xml_path(str(path))
+    assert {"rope_0", "rope_1", "rope_2", "rope_x1"} <= set(body_names(original))
+    changed = compile_text_beside(dumps(renamed(load(path), {"flex": {"rope": "cord"}})), path)
+    assert model_differences(original, changed, ignore=RENAMING_FIELDS) == []
+    assert body_names(changed) == [
+        f"cord_{name[5:]}" if name in ("rope_0", "rope_1", "rope_2") else name
+        for name in body_names(original)
+    ]
+
+
+def test_an_excluded_name_that_starts_with_an_attach_prefix_stays(tmp_path: Path) -> None:
+    """g_hand is the parent's own body: excluded, it stays, though attached names gain p_."""
+    written(tmp_path, CHILD, "child.xml")
+    path = written(
+        tmp_path,
+        """<mujoco><asset><model file="child.xml"/></asset><worldbody>
+          <body name="g_hand"><geom size="0.1"/></body>
+          <body name="mount" pos="0 0 1"><attach model="kid" body="palm" prefix="g_"/></body>
+        </worldbody><contact><exclude body1="g_hand" body2="g_x1"/></contact></mujoco>""",
+        "scene.xml",
+    )
+    original = mujoco.MjModel.from_xml_path(str(path))
+    changed = compile_text_beside(dumps(prefixed(load(path), "p_", exclude={"g_hand"})), path)
+    assert prefix_problems(original, changed, "p_", kept={"g_hand"}) == []

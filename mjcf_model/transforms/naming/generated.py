@@ -325,7 +325,7 @@ class GeneratedNames:
                 continue
             head, tail = name[: len(name) - length], name[len(name) - length :]
             chains = declared.get(head)
-            if chain and chains is not None and (chain in chains or () in chains):
+            if chain and chains is not None and chain in chains:
                 return Source(namespace, head, tail)
             if namespace == "body":
                 found = self._flexcomp_source(head, chain)

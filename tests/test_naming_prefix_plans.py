@@ -1,0 +1,121 @@
+"""Prefix plans: a prefixing traced once, then written with other prefixes and kept names.
+
+MuJoCo is the referee: a model written through a plan compiles to the original's
+arrays with every name prefixed, except the names the caller keeps. The flex's
+``body`` list holds several names, so the plan writes the prefix word by word.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Collection
+
+import mujoco
+import pytest
+
+from mjcf_model.errors import MjcfError, MjcfValueError
+from mjcf_model.nodes.base import AnyElement
+from mjcf_model.transforms.naming.renaming import prefixed
+from mjcf_model.transforms.naming.repeated import PrefixPlan
+from serializers import dumps, loads
+from tests.oracles import prefix_problems
+
+BODIES = """<body name="b1" pos="1 0 0"><joint name="j1" type="free"/><geom name="g1" size="0.1"/>
+  </body><body name="b2" pos="0 1 0"><joint name="j2" type="free"/><geom name="g2" size="0.1"/>
+  </body>"""
+#: A flex whose body list names two bodies.
+PAIR = f"""<mujoco><worldbody>{BODIES}</worldbody><deformable>
+  <flex name="f" dim="1" body="b1 b2" element="0 1" vertex="0 0 0 0 0 0"/></deformable></mujoco>"""
+#: A flex whose body list names the world body (declared nowhere) and one body.
+TO_WORLD = f"""<mujoco><worldbody>{BODIES}</worldbody><deformable>
+  <flex name="f" dim="1" body="world b2" element="0 1" vertex="0 0 0 0 0 0"/>
+  </deformable></mujoco>"""
+
+
+def every_reference(node: AnyElement, prefix: str) -> AnyElement:
+    """Prefixing every name and every reference, declared or not (robosuite's way)."""
+    return prefixed(node, prefix, undeclared=True)
+
+
+def compiled_problems(text: str, new: AnyElement, kept: Collection[str] = ()) -> list[str]:
+    """What keeps ``new`` from compiling to ``text``'s model with names prefixed by p_."""
+    original = mujoco.MjModel.from_xml_string(text)
+    return prefix_problems(original, mujoco.MjModel.from_xml_string(dumps(new)), "p_", kept)
+
+
+def test_a_plan_writes_the_prefix_into_name_lists() -> None:
+    """Written through its plan, the flex's body list is prefixed name by name."""
+    model = loads(PAIR)
+    plan = PrefixPlan.traced(model, prefixed)
+    assert plan is not None
+    assert compiled_problems(PAIR, plan.applied(model, "p_")) == []
+
+
+def test_a_plan_refuses_a_prefix_xml_cannot_carry() -> None:
+    """A prefix holding NUL is refused by name, as for any text."""
+    plan = PrefixPlan.traced(loads(PAIR), prefixed)
+    assert plan is not None
+    bad = "p\x00"
+    message = f"prefix {bad!r} holds U+0000, which XML cannot carry"
+    with pytest.raises(MjcfValueError, match=f"^{re.escape(message)}$") as info:
+        plan.applied(loads(PAIR), bad)
+    assert isinstance(info.value, MjcfError)
+
+
+@pytest.mark.parametrize("kept", [{"b1"}, {"b2"}, set()], ids=["first", "second", "none"])
+def test_kept_names_in_a_list_stay_and_the_others_are_prefixed(kept: set[str]) -> None:
+    """A by-name plan leaves kept names out of the prefixing, in name lists too."""
+    model = loads(PAIR)
+    plan = PrefixPlan.traced(model, every_reference, by_name=True)
+    assert plan is not None
+    new = plan.applied(model, "p_", keep=kept.__contains__)
+    assert compiled_problems(PAIR, new, kept) == []
+
+
+def test_a_list_whose_names_are_all_kept_is_shared() -> None:
+    """When every name of the flex is kept, the flex is not rebuilt: the result shares it."""
+    model = loads(PAIR)
+    plan = PrefixPlan.traced(model, every_reference, by_name=True)
+    assert plan is not None
+    new = plan.applied(model, "p_", keep={"b1", "b2", "f"}.__contains__)
+    assert compiled_problems(PAIR, new, {"b1", "b2", "f"}) == []
+    assert new.deformable is not None and model.deformable is not None
+    assert new.deformable.children[0] is model.deformable.children[0]
+
+
+def test_a_list_naming_the_world_is_written_with_kept_names() -> None:
+    """Where a plan stands for the prefixing, a list naming the world body still compiles.
+
+    Only b2 is declared, so only it is prefixed; a caller keeping names uses the
+    plan when there is one and ordinary prefixing when there is none.
+    """
+    model = loads(TO_WORLD)
+    plan = PrefixPlan.traced(model, prefixed, by_name=True)
+
+    def keep(name: str) -> bool:
+        return name == "g1"
+
+    if plan is None:
+        new = prefixed(model, "p_", exclude=keep)
+    else:
+        new = plan.applied(model, "p_", keep=keep)
+    assert compiled_problems(TO_WORLD, new, {"g1"}) == []
+
+
+#: A flex whose body list names the world body first, then two bodies.
+WORLD_FIRST = f"""<mujoco><worldbody>{BODIES}</worldbody><deformable>
+  <flex name="f" dim="1" body="world b1 b2" element="0 1 1 2" vertex="0 0 0 0 0 0 0 0 0"/>
+  </deformable></mujoco>"""
+
+
+@pytest.mark.parametrize("kept", [{"b1"}, set()], ids=["b1", "none"])
+def test_a_list_with_a_name_left_alone_has_a_by_name_plan(kept: set[str]) -> None:
+    """Prefixing only declared names leaves world as it is: each prefix still starts a name.
+
+    So a by-name plan stands for the prefixing, and writes kept names as they are.
+    """
+    model = loads(WORLD_FIRST)
+    plan = PrefixPlan.traced(model, prefixed, by_name=True)
+    assert plan is not None
+    new = plan.applied(model, "p_", keep=kept.__contains__)
+    assert compiled_problems(WORLD_FIRST, new, kept) == []
