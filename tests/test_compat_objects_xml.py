@@ -95,8 +95,10 @@ def test_xml_model_on_every_robosuite_file(path: Path) -> None:
         if "group" in str(error) or str(error) == "'2'":  # an unnamed geom of group 2: robosuite
             assert _MyModel(str(path)).contact_geoms is not None  # crashes, this names it not
             return
-        with pytest.raises(MjcfValueError, match="Invalid number of root bodies"):
+        with pytest.raises(MjcfValueError, match="^Invalid number of root bodies") as refused:
             _MyModel(str(path), idn=0)
+        if isinstance(error, AssertionError):  # robosuite's words; a KeyError names no count
+            assert str(refused.value) == str(error)
         return
     mine = _MyModel(str(path), idn=0)
     assert_same_tree(mine.root, theirs.root)

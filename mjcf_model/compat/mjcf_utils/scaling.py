@@ -8,6 +8,7 @@
 
 from __future__ import annotations
 
+import functools
 import xml.etree.ElementTree as ET
 from collections.abc import Callable
 from typing import Any
@@ -121,12 +122,19 @@ def scaled_joint(node: Node, scale_array: Any, scale_slide_joints: bool = True) 
     return _changed(node, changes)
 
 
+def _scale_in_place(
+    scaled: Callable[[Node, Any], Node], element: ET.Element, scale_array: Any
+) -> None:
+    """Write ``scaled`` of the live ``element`` back onto it."""
+    old = shallow_node(element)
+    sync_element(element, old, scaled(old, scale_array))
+
+
 def _in_place(scaled: Callable[[Node, Any], Node], what: str) -> Callable[[ET.Element, Any], None]:
     """A ``scale_<tag>_element``: ``scaled`` on one live element, written back in place."""
 
     def scale_element(element: ET.Element, scale_array: Any) -> None:
-        old = shallow_node(element)
-        sync_element(element, old, scaled(old, scale_array))
+        _scale_in_place(scaled, element, scale_array)
 
     tag = scaled.__name__.removeprefix("scaled_")
     scale_element.__name__ = scale_element.__qualname__ = f"scale_{tag}_element"
@@ -143,7 +151,7 @@ scale_site_element = _in_place(scaled_site, "a site's ``pos`` and ``size``")
 def scale_joint_element(
     element: ET.Element, scale_array: Any, scale_slide_joints: bool = True
 ) -> None:
-    """Scale a joint's ``pos`` (and a slide joint's ``range``) in place.
+    """Scale a joint's ``pos`` (and a slide joint's ``range``) in place (see :func:`scaled_joint`).
 
     Example:
         >>> joint = ET.fromstring('<joint type="slide" axis="0 0 1" range="-1 1"/>')
@@ -152,8 +160,9 @@ def scale_joint_element(
         '-3.0 3.0'
 
     """
-    old = shallow_node(element)
-    sync_element(element, old, scaled_joint(old, scale_array, scale_slide_joints))
+    _scale_in_place(
+        functools.partial(scaled_joint, scale_slide_joints=scale_slide_joints), element, scale_array
+    )
 
 
 def scale_mjcf_model(

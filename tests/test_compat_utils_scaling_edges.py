@@ -1,0 +1,85 @@
+"""robosuite's ``scale_*_element`` functions at their edges, robosuite 1.5.2 the referee.
+
+The generated and corpus trees of ``test_compat_utils_trees.py`` never hold a slide
+joint with a zero axis or a size of four numbers, and compare only the type of an
+error: these cases compare the trees and the whole message.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+from tests.test_compat_utils_support import differential, ours, rs, tree_bytes
+
+SCALE_FUNCTIONS = ["geom", "site", "body", "mesh", "joint"]
+
+
+@pytest.mark.parametrize("axis", ["0 0 0", "0 0 0.0", "0 3 4"])
+@pytest.mark.parametrize("slide", [True, False])
+def test_a_slide_joint_range_scales_by_its_axis_as_robosuite_scales_it(
+    axis: str, slide: bool
+) -> None:
+    """A zero axis scales the range by the x factor; any other by the scaled unit axis."""
+    root = ET.fromstring(
+        f'<body><joint type="slide" axis="{axis}" range="-1 2" pos="1 1 1"/></body>'
+    )
+    differential(
+        "scale_joint_element (axis)",
+        root,
+        lambda module, tree: module.scale_joint_element(tree[0], np.array([2, 3, 5]), slide),
+    )
+
+
+def test_a_zero_axis_range_is_the_x_factor_times_the_range() -> None:
+    """The value robosuite writes, stated: x is 2, so ``-1 2`` becomes ``-2 4``."""
+    joint = ET.fromstring('<joint type="slide" axis="0 0 0" range="-1 2"/>')
+    ours.scale_joint_element(joint, np.array([2.0, 3.0, 5.0]))
+    assert joint.get("range") == "-2.0 4.0"
+
+
+@pytest.mark.parametrize("tag", ["geom", "site"])
+@pytest.mark.parametrize("size", ["1 2 3 4", "1 2 3 4 5"])
+def test_a_size_of_more_than_three_numbers_raises_robosuites_message(tag: str, size: str) -> None:
+    """The same ``ValueError`` text as robosuite, naming the geom or the site."""
+    theirs = ET.fromstring(f'<{tag} size="{size}"/>')
+    mine = ET.fromstring(f'<{tag} size="{size}"/>')
+    scale = np.array([1.0, 2.0, 3.0])
+    with pytest.raises(ValueError) as expected:
+        getattr(rs, f"scale_{tag}_element")(theirs, scale)
+    assert str(expected.value) == f"Unsupported {tag} size dimensions."
+    with pytest.raises(ValueError, match=f"^Unsupported {tag} size dimensions\\.$"):
+        getattr(ours, f"scale_{tag}_element")(mine, scale)
+    assert tree_bytes(mine) == tree_bytes(theirs)
+
+
+@pytest.mark.parametrize("tag", SCALE_FUNCTIONS)
+def test_each_scale_element_function_carries_robosuites_name(tag: str) -> None:
+    """``__name__`` and ``__qualname__`` are robosuite's (tracebacks, ``functools.wraps``)."""
+    name = f"scale_{tag}_element"
+    mine, theirs = getattr(ours, name), getattr(rs, name)
+    assert (
+        (mine.__name__, mine.__qualname__)
+        == (theirs.__name__, theirs.__qualname__)
+        == (
+            name,
+            name,
+        )
+    )
+    assert mine.__doc__ is not None
+    assert mine.__doc__.startswith("Scale ")
+    assert f"scaled_{tag}" in mine.__doc__
+
+
+@pytest.mark.parametrize("tag", ["geom", "site", "body", "mesh"])
+def test_each_scale_element_function_scales_the_element_it_is_given(tag: str) -> None:
+    """Each writes robosuite's bytes onto the element passed, keeping a foreign attribute."""
+    text = f'<{tag} pos="1 2 3" size="0.1 0.2" scale="1 2 1" extra="kept"/>'
+    theirs, mine = ET.fromstring(text), ET.fromstring(text)
+    scale = np.array([2.0, 3.0, 4.0])
+    getattr(rs, f"scale_{tag}_element")(theirs, scale)
+    getattr(ours, f"scale_{tag}_element")(mine, scale)
+    assert tree_bytes(mine) == tree_bytes(theirs)
+    assert tree_bytes(mine) != tree_bytes(ET.fromstring(text))
