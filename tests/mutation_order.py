@@ -4,6 +4,8 @@ mutmut 3.8 hands pytest the tests that call a mutated function in no particular
 order, and stops at the first failure (``-x``): a killed mutant costs the tests
 run before the one that kills it. Ordering them by the durations mutmut recorded
 (``mutmut-stats.json`` in the folder it runs in) makes most kills take a second.
+Tests it has no duration for were added after its run, most likely for the
+survivors ``tests/mutation_rerun.py --all`` runs again: they go first.
 Loaded by ``[tool.mutmut] pytest_add_cli_args`` (README); without the stats file
 (mutmut's own first run, or any other run) the order is left alone.
 """
@@ -33,7 +35,7 @@ def recorded_durations(stats: Path = STATS) -> dict[str, float]:
 
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    """Run the shortest tests first (unrecorded ones last, in their order)."""
+    """Run the shortest tests first; unrecorded ones (tests added since) before them all."""
     durations = recorded_durations()
     if durations:
-        items.sort(key=lambda item: durations.get(item.nodeid, float("inf")))
+        items.sort(key=lambda item: durations.get(item.nodeid, -1.0))

@@ -13,8 +13,9 @@ ones that still survive. Run it in the folder ``mutmut run`` ran in, after that 
 
     HYPOTHESIS_PROFILE=mutation python tests/mutation_rerun.py
 
-With ``--all`` it runs every survivor that way: after tests were added (copy them
-into ``mutants/tests`` and the selection), the verdicts then need no new mutmut run.
+With ``--all`` it runs that way every mutant mutmut did not kill (survivors, and
+those a stopped run left unchecked): after tests were added (copy them into
+``mutants/tests`` and the selection), the verdicts then need no new mutmut run.
 
 Not in CI; pinned to the stats format of mutmut 3.8.1 (the ``mutation`` extra).
 """
@@ -49,7 +50,7 @@ def import_time_functions(tests_by_function: dict[str, list[str]]) -> list[str]:
 
 
 def _survivors(functions: list[str] | None) -> list[str]:
-    """The mutants of ``functions`` (of any function for ``None``) mutmut reports surviving."""
+    """The surviving mutants of ``functions``; for ``None``, every mutant not killed."""
     results = subprocess.run(
         [sys.executable, "-m", "mutmut", "results"], capture_output=True, text=True, check=True
     ).stdout
@@ -57,7 +58,8 @@ def _survivors(functions: list[str] | None) -> list[str]:
     for line in results.splitlines():
         mutant, _, verdict = line.strip().partition(": ")
         function = mutant.rsplit("__mutmut_", 1)[0]
-        if verdict == "survived" and (functions is None or function in functions):
+        wanted = verdict == "survived" and (functions is None or function in functions)
+        if wanted or (functions is None and verdict == "not checked"):
             names.append(mutant)
     return names
 
