@@ -13,9 +13,10 @@ ones that still survive. Run it in the folder ``mutmut run`` ran in, after that 
 
     HYPOTHESIS_PROFILE=mutation python tests/mutation_rerun.py
 
-With ``--all`` it runs that way every mutant mutmut did not kill (survivors, and
-those a stopped run left unchecked): after tests were added (copy them into
-``mutants/tests`` and the selection), the verdicts then need no new mutmut run.
+With ``--all`` it runs that way every mutant mutmut did not kill (survivors, those
+no selected test reached, and those a stopped run left unchecked): after tests were
+added (copy them into ``mutants/tests`` and the selection), the verdicts then need no
+new mutmut run.
 
 Not in CI; pinned to the stats format of mutmut 3.8.1 (the ``mutation`` extra).
 """
@@ -59,7 +60,7 @@ def _survivors(functions: list[str] | None) -> list[str]:
         mutant, _, verdict = line.strip().partition(": ")
         function = mutant.rsplit("__mutmut_", 1)[0]
         wanted = verdict == "survived" and (functions is None or function in functions)
-        if wanted or (functions is None and verdict == "not checked"):
+        if wanted or (functions is None and verdict in ("not checked", "no tests")):
             names.append(mutant)
     return names
 

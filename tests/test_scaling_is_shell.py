@@ -68,3 +68,19 @@ def test_is_shell_is_true_exactly_for_the_geoms_mujoco_weighs_by_area(factor: fl
         "mesh_shell",
         "written_shell",
     ]
+
+
+def test_without_a_model_no_mesh_is_known_to_be_a_shell() -> None:
+    """A context without a model knows no mesh asset: a mesh geom is weighed as a solid.
+
+    Only a box written ``shellinertia`` is a shell then, as in a model.
+    """
+    context = ScaleContext(factors=(2.0, 2.0, 2.0))
+    model = loads(_GEOMS)
+    geoms = {
+        ancestors[-1].name: element
+        for element, key, ancestors in keyed_walk(model)
+        if key == "body/geom"
+    }
+    assert not is_shell(geoms["mesh_shell"], (), context)
+    assert is_shell(geoms["written_shell"], (), context)
