@@ -18,7 +18,6 @@ from robosuite.utils import mjcf_utils as rs
 
 from mjcf_model.compat.objects import naming
 from mjcf_model.compat.objects.naming import naming_skeleton, robosuite_prefixed
-from mjcf_model.transforms.naming.repeated import PrefixPlan
 from serializers import from_etree, to_etree
 
 
@@ -46,25 +45,6 @@ def robosuite_bytes(tree: Any, prefix: str, exclude: Callable[[str], bool] | Non
 def our_bytes(tree: Any, prefix: str, exclude: Callable[[str], bool] | None) -> bytes:
     """What ``robosuite_prefixed`` makes of ``tree``."""
     return ET.tostring(to_etree(robosuite_prefixed(tree, prefix, exclude)))
-
-
-@pytest.fixture
-def plan_calls(monkeypatch: pytest.MonkeyPatch) -> dict[str, int]:
-    """How often a plan is traced and applied while the test runs."""
-    calls = {"traced": 0, "applied": 0}
-    traced, applied = PrefixPlan.traced.__func__, PrefixPlan.applied  # type: ignore[attr-defined]
-
-    def counting_traced(cls: type[PrefixPlan], *args: Any, **kwargs: Any) -> Any:
-        calls["traced"] += 1
-        return traced(cls, *args, **kwargs)
-
-    def counting_applied(self: PrefixPlan, *args: Any, **kwargs: Any) -> Any:
-        calls["applied"] += 1
-        return applied(self, *args, **kwargs)
-
-    monkeypatch.setattr(PrefixPlan, "traced", classmethod(counting_traced))
-    monkeypatch.setattr(PrefixPlan, "applied", counting_applied)
-    return calls
 
 
 def test_a_plan_is_traced_at_the_second_tree_of_a_skeleton_and_used_after(

@@ -16,7 +16,7 @@ import pytest
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement
 from mjcf_model.transforms.naming.renaming import prefixed
-from mjcf_model.transforms.naming.repeated import PrefixPlan
+from mjcf_model.transforms.naming.repeated import PrefixPlan, RepeatedPrefixing
 from serializers import dumps, loads
 from tests.oracles import prefix_problems
 
@@ -119,3 +119,25 @@ def test_a_list_with_a_name_left_alone_has_a_by_name_plan(kept: set[str]) -> Non
     assert plan is not None
     new = plan.applied(model, "p_", keep=kept.__contains__)
     assert compiled_problems(WORLD_FIRST, new, kept) == []
+
+
+def test_repeated_prefixing_traces_at_the_second_copy_and_applies_after(
+    plan_calls: dict[str, int],
+) -> None:
+    """Copy 1 is prefixed directly, copy 2 traces the plan, copies 3 and 4 only apply it.
+
+    Every copy compiles to the original with its names prefixed (MuJoCo's names);
+    a trace applies its plan once itself, to check it.
+    """
+    model = loads(PAIR)
+    copies = RepeatedPrefixing(model, prefixed)
+    seen = []
+    for _ in range(4):
+        assert compiled_problems(PAIR, copies.prefixed("p_")) == []
+        seen.append(dict(plan_calls))
+    assert seen == [
+        {"traced": 0, "applied": 0},
+        {"traced": 1, "applied": 2},
+        {"traced": 1, "applied": 3},
+        {"traced": 1, "applied": 4},
+    ]
