@@ -86,6 +86,8 @@ def main() -> int:
     config = tomllib.loads(Path("pyproject.toml").read_text())["tool"]["mutmut"]
     tests: list[str] = config["pytest_add_cli_args_test_selection"]
     stats = json.loads(STATS.read_text())
+    if not _survives("", tests):  # no mutant: a failing test would "kill" every mutant
+        raise SystemExit("the selection fails without a mutant: fix it (or the copies) first")
     functions = import_time_functions(stats["tests_by_mangled_function_name"])
     mutants = _survivors(None if "--all" in sys.argv[1:] else functions)
     print(f"{len(mutants)} survivors to run again", file=sys.stderr)
