@@ -141,3 +141,45 @@ def test_repeated_prefixing_traces_at_the_second_copy_and_applies_after(
         {"traced": 1, "applied": 3},
         {"traced": 1, "applied": 4},
     ]
+
+
+def test_a_plan_prefixes_a_tree_of_generic_nodes() -> None:
+    """Robosuite's layer holds generic nodes: the plan writes their attribute text alike."""
+    import xml.etree.ElementTree as ET
+
+    from serializers import from_etree
+
+    model = from_etree(ET.fromstring(PAIR), typed=False)
+    plan = PrefixPlan.traced(model, prefixed)
+    assert plan is not None
+    assert compiled_problems(PAIR, plan.applied(model, "p_")) == []
+    assert plan.applied(model, "p_") == prefixed(model, "p_")
+
+
+def test_a_plan_writes_attributes_a_typed_node_keeps_as_extra_text() -> None:
+    """A prefixer may write an attribute a newer MuJoCo reads (kept as ``extra``): so does the plan.
+
+    The plan's contract is to reproduce its prefixer, here one that also prefixes
+    the unknown ``futureref``.
+    """
+    from mjcf_model.nodes.base import get_attribute, with_attributes
+    from mjcf_model.tree.traversal import map_elements
+
+    def with_future(node: AnyElement, prefix: str) -> AnyElement:
+        def visit(element: AnyElement, key: str | None, _: object) -> AnyElement:
+            future = get_attribute(element, "futureref")
+            return (
+                element
+                if future is None
+                else with_attributes(element, {"futureref": prefix + str(future)})
+            )
+
+        return prefixed(map_elements(visit, node), prefix)
+
+    model = loads('<mujoco><worldbody><geom name="g" size="1" futureref="x"/></worldbody></mujoco>')
+    plan = PrefixPlan.traced(model, with_future)
+    assert plan is not None
+    copy = plan.applied(model, "p_")
+    assert copy == with_future(model, "p_")
+    geom = copy.children[0].children[0]
+    assert (geom.name, get_attribute(geom, "futureref")) == ("p_g", "p_x")
