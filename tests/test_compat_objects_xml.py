@@ -95,7 +95,7 @@ def test_xml_model_on_every_robosuite_file(path: Path) -> None:
         if "group" in str(error) or str(error) == "'2'":  # an unnamed geom of group 2: robosuite
             assert _MyModel(str(path)).contact_geoms is not None  # crashes, this names it not
             return
-        with pytest.raises(MjcfValueError, match="^Invalid number of root bodies") as refused:
+        with pytest.raises(MjcfValueError, match=r"^Invalid number of root bodies") as refused:
             _MyModel(str(path), idn=0)
         if isinstance(error, AssertionError):  # robosuite's words; a KeyError names no count
             assert str(refused.value) == str(error)

@@ -281,6 +281,10 @@ _CONTACT = combine(lengths("margin", "gap"), friction_rule("pair"))
 _FLEX_CONTACT = combine(lengths("margin", "gap"), friction_rule("flex"))
 
 
+#: MuJoCo's built-in actuator ``gear``.
+_BUILTIN_GEAR = (1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+
+
 def _site_gear(
     element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
@@ -294,12 +298,14 @@ def _site_gear(
     """
     if get_attribute(element, "site") is None or get_attribute(element, "refsite") is None:
         return {}
-    own = get_attribute(element, "gear")
+    own = numbers_of(get_attribute(element, "gear"))
     given = context.classes.given_to(element, ancestors).get("gear")
-    gear = numbers_of(own if own is not None else (given[0] if given else None))
-    if gear is None:
+    inherited = numbers_of(given[0]) if given else None
+    if own is None and inherited is None:
         return {}
-    full = (*gear, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)[:6]
+    full = list(_BUILTIN_GEAR)  # MuJoCo reads a short gear over its class's, then the built-in
+    for values in (inherited, own):
+        full[: len(values or ())] = (values or ())[:6]
     if not any(full[:3]) or not any(full[3:]):
         return {}
     return {"gear": (*full[:3], *(v * context.mean for v in full[3:]))}
