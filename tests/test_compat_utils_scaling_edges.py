@@ -83,3 +83,36 @@ def test_each_scale_element_function_scales_the_element_it_is_given(tag: str) ->
     getattr(ours, f"scale_{tag}_element")(mine, scale)
     assert tree_bytes(mine) == tree_bytes(theirs)
     assert tree_bytes(mine) != tree_bytes(ET.fromstring(text))
+
+
+def test_a_slide_joint_without_an_axis_scales_by_robosuites_default_x_axis() -> None:
+    """Robosuite takes a missing axis as ``1 0 0`` (not MuJoCo's ``0 0 1``): the x factor."""
+    root = ET.fromstring('<body><joint type="slide" range="-1 2"/></body>')
+    differential(
+        "scale_joint_element (no axis)",
+        root,
+        lambda module, tree: module.scale_joint_element(tree[0], np.array([2, 3, 5])),
+    )
+    joint = ET.fromstring('<joint type="slide" range="-1 2"/>')
+    ours.scale_joint_element(joint, np.array([2.0, 3.0, 5.0]))
+    assert joint.get("range") == "-2.0 4.0"
+
+
+def test_scaling_a_model_scales_slide_ranges_unless_told_not_to() -> None:
+    """``scale_mjcf_model``'s and ``scaled_joint``'s default is robosuite's: ranges scale."""
+    from mjcf_model.compat.mjcf_utils.scaling import scaled_joint
+    from mjcf_model.nodes.base import GenericElement
+
+    text = '<body><body><joint type="slide" axis="0 0 1" range="-1 2"/></body></body>'
+    differential(
+        "scale_mjcf_model (default)",
+        ET.fromstring(text),
+        lambda module, tree: module.scale_mjcf_model(
+            tree, ET.Element("asset"), [1, 1, 3], module.get_elements
+        ),
+    )
+    obj = ET.fromstring(text)
+    ours.scale_mjcf_model(obj, ET.Element("asset"), [1, 1, 3], ours.get_elements)
+    assert obj[0][0].get("range") == "-3.0 6.0"
+    joint = GenericElement(tag="joint", attributes={"type": "slide", "range": "-1 2"})
+    assert scaled_joint(joint, np.array([2.0, 1.0, 1.0])).attributes["range"] == "-2.0 4.0"
