@@ -13,13 +13,11 @@ import importlib.util
 import os
 import re
 from pathlib import Path
-from typing import Any
 
 import mujoco
-import pytest
 from hypothesis import HealthCheck, Phase, settings
 
-from mjcf_model.transforms.naming.repeated import PrefixPlan
+from tests.plan_counting import plan_calls  # noqa: F401  (a fixture)
 
 settings.register_profile(
     "ci",
@@ -126,22 +124,3 @@ def printed_schema() -> dict[str, set[str]]:
         key = "/".join(stack[1:]) or "mujoco"
         schema[key] = set(attributes)
     return schema
-
-
-@pytest.fixture
-def plan_calls(monkeypatch: pytest.MonkeyPatch) -> dict[str, int]:
-    """How often a plan is traced and applied while the test runs."""
-    calls = {"traced": 0, "applied": 0}
-    traced, applied = PrefixPlan.traced.__func__, PrefixPlan.applied  # type: ignore[attr-defined]
-
-    def counting_traced(cls: type[PrefixPlan], *args: Any, **kwargs: Any) -> Any:
-        calls["traced"] += 1
-        return traced(cls, *args, **kwargs)
-
-    def counting_applied(self: PrefixPlan, *args: Any, **kwargs: Any) -> Any:
-        calls["applied"] += 1
-        return applied(self, *args, **kwargs)
-
-    monkeypatch.setattr(PrefixPlan, "traced", classmethod(counting_traced))
-    monkeypatch.setattr(PrefixPlan, "applied", counting_applied)
-    return calls

@@ -19,6 +19,7 @@ from mjcf_model.transforms.naming.renaming import prefixed
 from mjcf_model.transforms.naming.repeated import PrefixPlan, RepeatedPrefixing
 from serializers import dumps, loads
 from tests.oracles import prefix_problems
+from tests.plan_counting import PLANNED_AT_THE_SECOND_COPY
 
 BODIES = """<body name="b1" pos="1 0 0"><joint name="j1" type="free"/><geom name="g1" size="0.1"/>
   </body><body name="b2" pos="0 1 0"><joint name="j2" type="free"/><geom name="g2" size="0.1"/>
@@ -135,12 +136,7 @@ def test_repeated_prefixing_traces_at_the_second_copy_and_applies_after(
     for _ in range(4):
         assert compiled_problems(PAIR, copies.prefixed("p_")) == []
         seen.append(dict(plan_calls))
-    assert seen == [
-        {"traced": 0, "applied": 0},
-        {"traced": 1, "applied": 2},
-        {"traced": 1, "applied": 3},
-        {"traced": 1, "applied": 4},
-    ]
+    assert seen == PLANNED_AT_THE_SECOND_COPY
 
 
 def test_a_plan_prefixes_a_tree_of_generic_nodes() -> None:
