@@ -12,6 +12,7 @@ from pathlib import Path
 import mujoco
 import pytest
 
+from mjcf_model.nodes.base import get_attribute
 from mjcf_model.tools.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.transforms.naming.renaming import prefix_map, prefixed, renamed
 from serializers import dumps, load, loads
@@ -137,3 +138,23 @@ def test_excluding_with_a_namespace_that_declares_nothing() -> None:
     changed = mujoco.MjModel.from_xml_string(dumps(prefixed(loads(text), "p_", exclude={"x"})))
     assert prefix_problems(original, changed, "p_") == []
     assert changed.cam_targetbodyid[0] == 0
+
+
+def test_a_name_list_renaming_leaves_alone_is_the_input_node() -> None:
+    """A flex's body list with nothing renamed stays the same node (unchanged parts are shared).
+
+    Its two spaces are kept too: only a list holding a renamed name is written again.
+    """
+    text = """<mujoco><worldbody>
+      <body name="b1"><joint type="free"/><geom size="0.1"/></body>
+      <body name="b2" pos="0 1 0"><joint type="free"/><geom size="0.1"/></body></worldbody>
+      <deformable><flex name="f" dim="1" body="b1  b2" element="0 1" vertex="0 0 0 0 0 0"/>
+      </deformable></mujoco>"""
+    model = loads(text)
+    flex = model.deformable.children[0]
+    unchanged = renamed(model, {"geom": {"nothing": "else"}, "body": {"b3": "b4"}})
+    assert unchanged.deformable.children[0] is flex
+    changed = renamed(model, {"body": {"b1": "z1"}})
+    assert get_attribute(changed.deformable.children[0], "body") == "z1 b2"
+    names = compiled_names(mujoco.MjModel.from_xml_string(dumps(changed)))["body"]
+    assert names == ["world", "z1", "b2"]
