@@ -281,10 +281,6 @@ _CONTACT = combine(lengths("margin", "gap"), friction_rule("pair"))
 _FLEX_CONTACT = combine(lengths("margin", "gap"), friction_rule("flex"))
 
 
-#: MuJoCo's built-in actuator ``gear``.
-_BUILTIN_GEAR = (1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
-
-
 def _site_gear(
     element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
@@ -303,7 +299,7 @@ def _site_gear(
     inherited = numbers_of(given[0]) if given else None
     if own is None and inherited is None:
         return {}
-    full = list(_BUILTIN_GEAR)  # MuJoCo reads a short gear over its class's, then the built-in
+    full = list(builtin_default("actuator", "gear"))  # a short gear is read over its class's
     for values in (inherited, own):
         full[: len(values or ())] = (values or ())[:6]
     if not any(full[:3]) or not any(full[3:]):
