@@ -179,3 +179,22 @@ def test_a_plan_writes_attributes_a_typed_node_keeps_as_extra_text() -> None:
     assert copy == with_future(model, "p_")
     geom = copy.children[0].children[0]
     assert (geom.name, get_attribute(geom, "futureref")) == ("p_g", "p_x")
+
+
+def test_a_chain_nested_as_deep_as_a_long_cable_has_a_plan(plan_calls: dict[str, int]) -> None:
+    """A cable of 150 segments nests 150 bodies: its copies are written through one plan.
+
+    Each copy compiles to the chain with its names prefixed (MuJoCo's names), and
+    the fourth copy is written by the plan traced at the second, not directly.
+    """
+    depth = 150
+    opening = "".join(
+        f'<body name="s{i}" pos="0 0 0.1"><joint/><geom size="0.01"/>' for i in range(depth)
+    )
+    chain = f"<mujoco><worldbody>{opening}{'</body>' * depth}</worldbody></mujoco>"
+    copies = RepeatedPrefixing(loads(chain), prefixed)
+    seen = []
+    for _ in range(4):
+        assert compiled_problems(chain, copies.prefixed("p_")) == []
+        seen.append(dict(plan_calls))
+    assert seen == PLANNED_AT_THE_SECOND_COPY
