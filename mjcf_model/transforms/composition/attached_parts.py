@@ -158,9 +158,9 @@ def _world_reference(key: str, attribute: str) -> bool:
 class _Copied:
     """The names a copy holds, by namespace, and the generators of the names MuJoCo makes."""
 
-    def __init__(self, tree: AnyElement) -> None:
+    def __init__(self, tree: Worldbody) -> None:
         self.names: dict[str, set[str]] = {}
-        for element, key, _ in keyed_walk(tree, "mujoco" if tree.tag == "worldbody" else "body"):
+        for element, key, _ in keyed_walk(tree):
             for _, namespace, name in declarations(element, key):
                 self.names.setdefault(namespace, set()).add(name)
         self.generated = GeneratedNames.of(tree)
@@ -170,11 +170,9 @@ class _Copied:
             return True
         return namespace in _TREE and self.generated.source(namespace, name) is not None
 
-    def kept(self, element: AnyElement, key: str | None, same_model: bool) -> bool:
-        """Whether MuJoCo copies ``element`` (outside the tree) along with the subtree."""
-        if key is None:
-            return False
-        copied = 0
+    def kept(self, element: AnyElement, key: str, same_model: bool) -> bool:
+        """Whether MuJoCo copies ``element`` (outside the tree, ``key`` its schema key)."""
+        refers = False  # to something copied (the world counts, but not in an exclude)
         for inner, inner_key, _ in keyed_walk(element, key.rpartition("/")[0]):
             for attribute, namespace, name in element_references(inner, inner_key):
                 if namespace not in _TREE | _DECIDED:
@@ -182,13 +180,13 @@ class _Copied:
                 if namespace == "body" and name == _WORLD and inner_key is not None:
                     if not _world_reference(inner_key, attribute):
                         return False
-                    copied += key != "contact/exclude"
+                    refers = refers or key != "contact/exclude"
                 elif self.holds(namespace, name):
-                    copied += 1
+                    refers = True
                 else:
                     return False
         if key in ("custom/tuple", "contact/exclude") or (same_model and key.startswith("custom/")):
-            return copied > 0
+            return refers
         return True
 
     def add(self, element: AnyElement, key: str) -> None:
