@@ -115,7 +115,12 @@ class _Expansion:
     def expanded(self, model: Mujoco, chain: tuple[Path, ...]) -> Mujoco:
         """``model`` with every ``<attach>`` expanded, its keyframes left as they are."""
         held = [s for s in model.children if getattr(s, "tag", None) == "keyframe"]
-        model = attrs.evolve(model, children=[s for s in model.children if s not in held])
+        # <size nkey> is held too: attach() would write its blank keys before the held ones
+        sizes = {id(s): s for s in model.elements if s.tag == "size" and get_attribute(s, "nkey")}
+        plain: dict[int, Node] = {k: with_attributes(s, {"nkey": None}) for k, s in sizes.items()}
+        model = attrs.evolve(
+            model, children=[plain.get(id(s), s) for s in model.children if s not in held]
+        )
         attached = [get_attribute(e, "model") for _, e in walk(model) if e.tag == "attach"]
         children = [self._child(model, str(name), chain) for name in attached if name is not None]
         if any(compiler_settings(child)["angle"] == "radian" for child in children):
@@ -125,7 +130,9 @@ class _Expansion:
         while (found := self._first_attach(model)) is not None:
             model = self._expanded_one(model, *found, chain)
         model = _without_model_assets(model)
-        return attrs.evolve(model, children=[*model.children, *held])
+        restored: dict[int, Node] = {id(plain[k]): size for k, size in sizes.items()}
+        sections = [restored.get(id(s), s) for s in model.children]
+        return attrs.evolve(model, children=[*sections, *held])
 
     @staticmethod
     def _first_attach(model: Mujoco) -> tuple[AnyElement, TreePath, int] | None:
