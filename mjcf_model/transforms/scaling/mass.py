@@ -92,8 +92,6 @@ def _is_shell(kind: object, mesh: object, shell: object, context: ScaleContext) 
 
 def _in_world(ancestors: Sequence[AnyElement]) -> bool:
     """Whether the nearest body around an element is the world body."""
-    if ancestors and ancestors[-1].tag == "body":
-        return False
     for ancestor in reversed(ancestors):
         if ancestor.tag in ("body", "worldbody"):
             return ancestor.tag == "worldbody"
