@@ -52,8 +52,8 @@ def _variant(model: Mujoco, settings: Settings) -> Mujoco:
     for section in sections:
         written.update((k, v) for k, v in attribute_items(section) if k in PATH_SETTINGS)
     written.update(_NEUTRAL)
-    inner = [c for s in sections for c in s.children]
-    compiler = with_attributes(Compiler(children=inner), written)
+    # no <lengthrange>: it is model-wide (the parent's holds) and inertias do not read it
+    compiler = with_attributes(Compiler(), written)
 
     def unaligned(
         element: AnyElement, key: str | None, ancestors: Sequence[AnyElement]
