@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
+from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import attribute_items
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.values import format_value
@@ -76,6 +77,9 @@ def compiler_settings(model: Mujoco) -> Settings:
 
     Settings of :data:`CONVERTED_SETTINGS` no section writes have MuJoCo's default.
 
+    Raises:
+        MjcfValueError: ``eulerseq`` is not 3 characters long (MuJoCo rejects it).
+
     Example:
         >>> from serializers import loads
         >>> m = loads('<mujoco><compiler angle="radian"/><compiler angle="degree"/></mujoco>')
@@ -87,4 +91,9 @@ def compiler_settings(model: Mujoco) -> Settings:
     for section in model.elements:
         if section.tag == "compiler":
             settings.update((k, format_value(v)) for k, v in attribute_items(section))
+    if len(settings["eulerseq"]) != 3:
+        raise MjcfValueError(
+            f"<compiler eulerseq={settings['eulerseq']!r}>: MuJoCo reads a sequence of exactly "
+            "3 axes, such as 'xyz' (intrinsic) or 'XYZ' (extrinsic)"
+        )
     return settings
