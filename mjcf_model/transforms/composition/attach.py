@@ -44,7 +44,7 @@ from mjcf_model.transforms.composition.keyframes import (
     keys_of,
 )
 from mjcf_model.transforms.composition.main_defaults import CLASSED_SECTIONS, with_main_as_class
-from mjcf_model.transforms.composition.part_states import Pose
+from mjcf_model.transforms.composition.part_states import IDENTITY, Pose
 from mjcf_model.transforms.composition.places import (
     AttachKind,
     Where,
@@ -399,9 +399,12 @@ class _Composer:
             self._set_parent(so_far)
             self.pending, self.world = {}, []
         part = PartStates.of(original)
-        if self.pose is None:
-            self.pose = attach_pose(self.parent, self.point, self.where.at, part)
-        self.scene_keys.add(part, keys_of(original), keys_of(child), self.pose, self.policy)
+        pose = IDENTITY  # each part is checked: only one with free joints or mocap bodies moves
+        if part.moves_with_placement:
+            if self.pose is None:
+                self.pose = attach_pose(self.parent, self.point, self.where.at, part)
+            pose = self.pose
+        self.scene_keys.add(part, keys_of(original), keys_of(child), pose, self.policy)
         if self.policy == "merged":
             self.declared.setdefault("key", set()).update(self.scene_keys.names)
 
