@@ -16,8 +16,10 @@ the child's that is dropped), and writes the scene's keys as one ``<keyframe>``.
 
 from __future__ import annotations
 
+import sys
 import warnings
 from collections.abc import Collection, Mapping, Sequence
+from pathlib import Path
 
 from mjcf_model.errors import MjcfDroppedSettingWarning, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, attribute_items
@@ -130,8 +132,17 @@ def warn_dropped(dropped: list[str], prefix: str) -> None:
             MjcfDroppedSettingWarning(
                 f"{child} loses settings the parent's replace: {'; '.join(dropped)}"
             ),
-            stacklevel=6,  # the caller of attach
+            stacklevel=_outside_the_library(),
         )
+
+
+def _outside_the_library() -> int:
+    """The ``stacklevel`` of the first caller outside this package (attach, attach_all, ...)."""
+    package = str(Path(__file__).parents[2])
+    frame, level = sys._getframe(1), 1
+    while frame.f_back is not None and frame.f_code.co_filename.startswith(package):
+        frame, level = frame.f_back, level + 1
+    return level
 
 
 def merged_into(sections: list[Node], tag: str, nodes: list[Node]) -> None:
