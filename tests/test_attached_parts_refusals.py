@@ -2,7 +2,8 @@
 
 MuJoCo is asked first: where it refuses too, the expansion names what is wrong;
 where MuJoCo compiles a scene whose copy is not known, the expansion says what to
-change instead of guessing.
+change instead of guessing. MuJoCo 3.9 refuses every ``<attach frame>`` (its
+schema has no ``frame``); the expansion refuses those scenes the same way there.
 """
 
 from __future__ import annotations
@@ -14,6 +15,16 @@ import pytest
 
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from serializers import load
+from tests.conftest import MUJOCO_VERSION
+
+#: What MuJoCo 3.9 says of any ``<attach frame>`` (its schema has no ``frame``, added in 4.0).
+NO_FRAME_BEFORE_4 = "unrecognized attribute: 'frame'"
+
+
+def _mujoco_refuses(scene: Path, says: str) -> None:
+    """MuJoCo refuses ``scene``, saying ``says`` (MuJoCo 3.9: that it has no ``frame``)."""
+    with pytest.raises(ValueError, match=says if MUJOCO_VERSION >= (4, 0) else NO_FRAME_BEFORE_4):
+        mujoco.MjModel.from_xml_path(str(scene))
 
 
 def _scene(tmp_path: Path, child: str, attach: str) -> Path:
@@ -52,8 +63,7 @@ def test_frame_inside_a_replicate_is_refused(tmp_path: Path) -> None:
         '<body name="b"><geom size="1"/></body></frame></replicate></worldbody></mujoco>'
     )
     scene = _scene(tmp_path, child, '<attach model="c" frame="f" prefix="p_"/>')
-    with pytest.raises(ValueError, match="could not find frame 'f'"):
-        mujoco.MjModel.from_xml_path(str(scene))
+    _mujoco_refuses(scene, "could not find frame 'f'")
     with pytest.raises(MjcfValueError, match=r"<attach frame='f'>: it is inside a <replicate>"):
         load(scene, inline_attachments=True)
 
@@ -65,8 +75,7 @@ def test_unknown_frame_lists_the_frames(tmp_path: Path) -> None:
         "</worldbody></mujoco>"
     )
     scene = _scene(tmp_path, child, '<attach model="c" frame="g" prefix="p_"/>')
-    with pytest.raises(ValueError, match="could not find frame 'g'"):
-        mujoco.MjModel.from_xml_path(str(scene))
+    _mujoco_refuses(scene, "could not find frame 'g'")
     with pytest.raises(MjcfLookupError, match=r"no frame named 'g'; its frames are \['f'\]"):
         load(scene, inline_attachments=True)
 
@@ -78,8 +87,7 @@ def test_attach_of_a_body_and_a_frame_is_refused(tmp_path: Path) -> None:
         "</worldbody></mujoco>"
     )
     scene = _scene(tmp_path, child, '<attach model="c" body="b" frame="f" prefix="p_"/>')
-    with pytest.raises(ValueError, match="at most one of 'body', 'frame'"):
-        mujoco.MjModel.from_xml_path(str(scene))
+    _mujoco_refuses(scene, "at most one of 'body', 'frame'")
     with pytest.raises(MjcfValueError, match=r"^an <attach> names a body or a frame, not both$"):
         load(scene, inline_attachments=True)
 

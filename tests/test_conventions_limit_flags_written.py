@@ -4,8 +4,9 @@ The conversion writes each limit flag the child's ``autolimits`` decides
 (``limited``, ``ctrllimited``...) on the elements that leave it unset or auto; a
 flag a class sets stays the class's. An ``<intvelocity>`` sets ``actlimited``
 itself, so nothing is written there, and MuJoCo 4.0 rejects its ``actrange``
-under ``autolimits="false"``: refused, saying what to do. MuJoCo, compiling the
-child alone, referees.
+under ``autolimits="false"``: refused, saying what to do. MuJoCo 3.9 limits every
+``<intvelocity>`` (it needs an ``actrange``, under any ``autolimits``): there the
+range is kept as it is. MuJoCo, compiling the child alone, referees.
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from mjcf_model.tools.compare import model_differences
 from mjcf_model.transforms.composition.conventions import in_conventions
 from mjcf_model.tree.traversal import with_children
 from serializers import loads
+from tests.conftest import MUJOCO_VERSION
 
 BODY = (
     '<worldbody><body><joint name="j" limited="true" range="-1 1"/><geom size="1"/></body>'
@@ -61,10 +63,14 @@ def test_a_flag_a_class_sets_is_left_to_the_class() -> None:
 
 
 def test_nothing_is_written_for_an_integrated_velocity_activation_limit() -> None:
-    """An intvelocity gets no actlimited (MuJoCo 3.9 has no such attribute); compiles the same."""
+    """An intvelocity gets no actlimited (MuJoCo 3.9 has no such attribute); compiles the same.
+
+    MuJoCo 3.9 rejects an intvelocity without an ``actrange``, so there it has one.
+    """
+    actrange = "" if MUJOCO_VERSION >= (4, 0) else ' actrange="-1 1"'
     child = loads(
         f'<mujoco><compiler autolimits="false"/>{BODY}'
-        '<actuator><intvelocity name="v" joint="j" kp="1"/></actuator></mujoco>'
+        f'<actuator><intvelocity name="v" joint="j" kp="1"{actrange}/></actuator></mujoco>'
     )
     parent = loads("<mujoco/>")
     converted = in_conventions(child, parent)
@@ -91,14 +97,23 @@ REJECTED = "^" + re.escape(
     ids=["own", "from its class"],
 )
 def test_an_integrated_velocity_range_refuses_autolimits_false(actuators: str) -> None:
-    """An intvelocity actrange, own or from a class, is refused under autolimits="false"."""
+    """An intvelocity actrange, own or from a class, is refused under autolimits="false".
+
+    MuJoCo 3.9 reads it under autolimits="false" too: there it is kept, and compiles the same.
+    """
     child = loads(f"<mujoco>{BODY}{actuators}</mujoco>")
     assert compiled(child).actuator_actlimited[0]
     rejected = loads(f'<mujoco><compiler autolimits="false"/>{BODY}{actuators}</mujoco>')
+    parent = loads('<mujoco><compiler autolimits="false"/></mujoco>')
+    if MUJOCO_VERSION < (4, 0):
+        assert compiled(rejected).actuator_actlimited[0]
+        converted = in_conventions(child, parent)
+        assert model_differences(compiled(child), compiled(_under(converted, parent))) == []
+        return
     with pytest.raises(MjcfError, match="actrange"):  # MuJoCo rejects it under the parent's
         compiled(rejected)
     with pytest.raises(MjcfValueError, match=REJECTED + "$"):
-        in_conventions(child, loads('<mujoco><compiler autolimits="false"/></mujoco>'))
+        in_conventions(child, parent)
 
 
 def test_inheritrange_still_limits_the_control() -> None:

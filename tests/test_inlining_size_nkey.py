@@ -3,7 +3,9 @@
 MuJoCo 4.0 compiles ``<size nkey="2"/>`` with one ``<key name="own">`` to the keys
 ``own`` and one blank key. The expansion once set the ``<keyframe>`` aside but not
 ``nkey``: the attach wrote two blank keys and the own key came third (and with a keyed
-sub-model the expansion refused the scene, naming a wrong key order).
+sub-model the expansion refused the scene, naming a wrong key order). MuJoCo 3.9
+refuses the self-attach (it requires ``model``), and keeps all ``nkey`` keys before
+an attached model's: ``own``, two blank keys, then the sub-model's.
 """
 
 from __future__ import annotations
@@ -11,10 +13,12 @@ from __future__ import annotations
 from pathlib import Path
 
 import mujoco
+import pytest
 
 from mjcf_model import compiled, inlined_attachments
 from mjcf_model.tools.compare import compiled_names, model_differences, path_fields
 from serializers import load, loads
+from tests.conftest import MUJOCO_VERSION
 
 
 def test_size_nkey_and_own_key_survive_a_self_attach() -> None:
@@ -24,9 +28,15 @@ def test_size_nkey_and_own_key_survive_a_self_attach() -> None:
         '<body name="m"><attach body="a" prefix="c_"/></body></worldbody>'
         '<keyframe><key name="own" qpos="0.5 0"/></keyframe></mujoco>'
     )
+    got = compiled(inlined_attachments(loads(text)))
+    if MUJOCO_VERSION < (4, 0):
+        with pytest.raises(ValueError, match="required attribute missing: 'model'"):
+            mujoco.MjModel.from_xml_string(text)
+        text = text.replace(
+            '<attach body="a" prefix="c_"/>', '<body name="c_a"><joint/><geom size="1"/></body>'
+        )
     reference = mujoco.MjModel.from_xml_string(text)
     assert compiled_names(reference)["key"] == ["own", ""]
-    got = compiled(inlined_attachments(loads(text)))
     assert model_differences(reference, got, ignore=path_fields()) == []
 
 
@@ -46,6 +56,7 @@ def test_size_nkey_and_own_key_with_a_keyed_sub_model(tmp_path: Path) -> None:
         encoding="utf-8",
     )
     reference = mujoco.MjModel.from_xml_path(str(path))
-    assert compiled_names(reference)["key"] == ["own", "", "x_raised"]
+    keys = ["own", "", "x_raised"] if MUJOCO_VERSION >= (4, 0) else ["own", "", "", "x_raised"]
+    assert compiled_names(reference)["key"] == keys
     got = compiled(inlined_attachments(load(path)))
     assert model_differences(reference, got, ignore=path_fields()) == []

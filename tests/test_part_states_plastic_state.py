@@ -5,6 +5,8 @@ MuJoCo 4.0 keeps a plastic state per yielding joint (``springyield``) in each ke
 keyframes raises :class:`MjcfValueError` telling the user to remove its keyframes.
 MuJoCo before 4.0 (the oldest supported release is 3.9) compiles models with no
 ``key_plastic`` at all; their states are read from the arrays MuJoCo compiles.
+MuJoCo 3.9 rejects ``springyield``, so there the keyed part is refused as a part
+MuJoCo cannot compile.
 """
 
 from __future__ import annotations
@@ -16,8 +18,10 @@ import numpy as np
 import pytest
 
 from mjcf_model import MjcfValueError, attach
+from mjcf_model.errors import MjcfCompileError
 from mjcf_model.transforms.composition.part_states import PartStates
 from serializers import loads
+from tests.conftest import MUJOCO_VERSION
 
 #: A hinge that yields (plastic state) and a key.
 YIELDING = """<mujoco>
@@ -52,7 +56,20 @@ class _WithoutPlasticState:
 
 
 def test_a_part_with_plastic_state_and_keys_is_refused_with_the_way_out() -> None:
-    """A yielding joint's part with keys raises MjcfValueError: remove its keyframes."""
+    """A yielding joint's part with keys raises MjcfValueError: remove its keyframes.
+
+    MuJoCo 3.9 has no ``springyield``: the part is refused as MuJoCo rejects it.
+    """
+    if MUJOCO_VERSION < (4, 0):
+        with pytest.raises(ValueError, match="unrecognized attribute: 'springyield'"):
+            mujoco.MjModel.from_xml_string(YIELDING)
+        with pytest.raises(
+            MjcfCompileError,
+            match=r"^<string>:3: /mujoco/worldbody/body/joint\[@name='h'\]: MuJoCo rejects the "
+            r"model: .*unrecognized attribute: 'springyield'.*the part must compile on its own\)$",
+        ):
+            attach(loads("<mujoco/>"), loads(YIELDING), prefix="c_")
+        return
     assert mujoco.MjModel.from_xml_string(YIELDING).nplastic == 1
     with pytest.raises(
         MjcfValueError,
