@@ -375,7 +375,7 @@ class _Composer:
         if any(sets_values(default) for default in defaults):
             name = f"{prefix}main" if prefix else self._new_class("child_main")
             self.declared.setdefault("class", set()).add(name)
-            main = Default(dclass=name, children=merged_settings(added))
+            main = Default(dclass=name, children=merged_settings(defaults))
             added = [main]
         self.pending.setdefault("default", []).extend(added)
         return main

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import (
     AnyElement,
     GenericElement,
@@ -44,15 +45,39 @@ def sets_values(default: AnyElement) -> bool:
     return any(e.tag != "default" for e in default.elements)
 
 
-def merged_settings(nodes: list[Node]) -> list[Node]:
-    """Several top-level defaults as one class: settings of one tag merged, later ones winning.
+def sets_classes(default: AnyElement) -> bool:
+    """Whether a ``<default>`` declares nested classes."""
+    return any(e.tag == "default" for e in default.elements)
+
+
+def merged_settings(defaults: Sequence[AnyElement]) -> list[Node]:
+    """A model's top-level defaults as one class: settings of one tag merged, later ones winning.
+
+    MuJoCo gives a class the settings of its parent as it reads the class: what a
+    later top-level section sets does not reach the classes of an earlier one, but
+    it would reach them in one merged class, so such models are refused.
+
+    Raises:
+        MjcfValueError: A top-level ``<default>`` sets values after an earlier one
+            declared classes.
 
     Example:
         >>> from mjcf_model import Geom
-        >>> merged_settings([Geom(rgba=[1, 0, 0, 1]), Geom(size=[1])])
+        >>> merged_settings([Default(children=[Geom(rgba=[1, 0, 0, 1])]),
+        ...                  Default(children=[Geom(size=[1])])])
         [Geom(size=(1.0,), rgba=(1.0, 0.0, 0.0, 1.0))]
 
     """
+    nodes: list[Node] = []
+    for index, section in enumerate(defaults):
+        if index and sets_values(section) and any(sets_classes(d) for d in defaults[:index]):
+            raise MjcfValueError(
+                f"top-level <default> number {index + 1} sets values after an earlier one "
+                "declared classes: MuJoCo does not give those classes the later values, and "
+                "merged into one class they would get them; move the settings into the first "
+                "top-level <default>, or into the classes that should have them"
+            )
+        nodes.extend(section.children)
     merged: list[Node] = []
     first: dict[str, int] = {}
     for node in nodes:

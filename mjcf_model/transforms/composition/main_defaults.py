@@ -117,7 +117,7 @@ def with_main_as_class(model: Mujoco, name: str) -> Mujoco:
     defaults = [c for c in model.elements if c.tag == "default"]
     if not any(sets_values(default) for default in defaults):
         return model
-    main = Default(dclass=name, children=merged_settings([n for d in defaults for n in d.children]))
+    main = Default(dclass=name, children=merged_settings(defaults))
     sections: list[Node] = []
     for section in _main_renamed(model, name).children:
         tag = getattr(section, "tag", None)
