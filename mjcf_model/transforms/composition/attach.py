@@ -297,7 +297,8 @@ class _Composer:
             if self.assets.setdefault(asset, self.added) != self.added:
                 shared.append(asset)
         for asset in shared:
-            for _, namespace, name in declarations(asset, f"asset/{asset.tag}"):
+            key, folder = f"asset/{asset.tag}", self.parent.base_dir  # the paths are rebased
+            for _, namespace, name in declarations(asset, key, base_dir=folder):
                 theirs.get(namespace, set()).discard(name)
         check_collisions(self.declared, theirs)
         for namespace, found in theirs.items():
