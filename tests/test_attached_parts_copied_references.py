@@ -11,25 +11,13 @@ from pathlib import Path
 import mujoco
 import pytest
 
-from mjcf_model import FramePos, Motor, compiled
+from mjcf_model import FramePos, Motor
 from mjcf_model.tools.compare import model_differences, path_fields
 from mjcf_model.transforms.composition.attached_parts import element_references
-from serializers import load
+from tests.attach_files import attached_body
 
 #: The attached body: one joint and one geom.
 BODY = '<worldbody><body name="b"><joint name="j1"/><geom size="1"/></body></worldbody>'
-
-
-def _attached(tmp_path: Path, child: str) -> tuple[mujoco.MjModel, mujoco.MjModel]:
-    """MuJoCo's compilation of a scene attaching ``b`` of ``child``, and of its expansion."""
-    (tmp_path / "child.xml").write_text(child, encoding="utf-8")
-    scene = tmp_path / "scene.xml"
-    scene.write_text(
-        '<mujoco><asset><model name="c" file="child.xml"/></asset><worldbody>'
-        '<body name="holder"><attach model="c" body="b" prefix="p_"/></body></worldbody></mujoco>',
-        encoding="utf-8",
-    )
-    return mujoco.MjModel.from_xml_path(str(scene)), compiled(load(scene, inline_attachments=True))
 
 
 def test_actuator_class_does_not_hide_its_uncopied_joint(tmp_path: Path) -> None:
@@ -40,7 +28,7 @@ def test_actuator_class_does_not_hide_its_uncopied_joint(tmp_path: Path) -> None
         '<body name="b"><joint name="j1"/><geom size="1"/></body></body></worldbody>'
         '<actuator><motor class="c" joint="j0"/><motor class="c" joint="j1"/></actuator></mujoco>'
     )
-    reference, expansion = _attached(tmp_path, child)
+    reference, expansion = attached_body(tmp_path, child)
     assert reference.nu == 1
     assert model_differences(reference, expansion, ignore=path_fields()) == []
 
@@ -48,7 +36,7 @@ def test_actuator_class_does_not_hide_its_uncopied_joint(tmp_path: Path) -> None
 def test_exclude_of_a_copied_body_and_the_world_is_copied(tmp_path: Path) -> None:
     """``<exclude body1="b" body2="world">`` is copied like ``body1="world" body2="b"``."""
     child = f'<mujoco>{BODY}<contact><exclude body1="b" body2="world"/></contact></mujoco>'
-    reference, expansion = _attached(tmp_path, child)
+    reference, expansion = attached_body(tmp_path, child)
     assert reference.nexclude == 1
     assert model_differences(reference, expansion, ignore=path_fields()) == []
 
@@ -60,7 +48,7 @@ def test_sensor_on_a_replicated_site_is_copied(tmp_path: Path) -> None:
         '<replicate count="2" offset="0.1 0 0"><site name="s"/></replicate></body></worldbody>'
         '<sensor><framepos objtype="site" objname="s1"/></sensor></mujoco>'
     )
-    reference, expansion = _attached(tmp_path, child)
+    reference, expansion = attached_body(tmp_path, child)
     assert reference.nsensor == 1
     assert model_differences(reference, expansion, ignore=path_fields()) == []
 
@@ -71,7 +59,7 @@ def test_reference_to_a_name_with_a_space_is_one_name(tmp_path: Path) -> None:
         '<mujoco><worldbody><body name="b"><joint name="left j1"/><geom size="1"/></body>'
         '</worldbody><actuator><motor joint="left j1"/></actuator></mujoco>'
     )
-    reference, expansion = _attached(tmp_path, child)
+    reference, expansion = attached_body(tmp_path, child)
     assert reference.nu == 1
     assert model_differences(reference, expansion, ignore=path_fields()) == []
     assert list(element_references(Motor(joint="left j1"), "actuator/motor")) == [
@@ -83,7 +71,7 @@ def test_empty_reference_names_nothing(tmp_path: Path) -> None:
     """A weld whose ``body2`` is written empty (the world, for MuJoCo) is copied with ``b``."""
     child = f'<mujoco>{BODY}<equality><weld body1="b" body2=""/></equality></mujoco>'
     mujoco.MjModel.from_xml_string(child)
-    reference, expansion = _attached(tmp_path, child)
+    reference, expansion = attached_body(tmp_path, child)
     assert reference.neq == 1
     assert model_differences(reference, expansion, ignore=path_fields()) == []
     assert list(element_references(Motor(joint="j1", site=""), "actuator/motor")) == [

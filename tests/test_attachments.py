@@ -21,6 +21,7 @@ from mjcf_model.tools.compare import compiled_names, model_differences, path_fie
 from mjcf_model.tree.queries import find, find_all, parent_of
 from mjcf_model.tree.traversal import walk
 from serializers import dump, load, loads
+from tests.attach_files import written
 from tests.conftest import FIXTURES, MUJOCO_VERSION, compiling_corpus, corpus_id
 from tests.oracles import prefix_problems, scaled_problems
 
@@ -176,15 +177,9 @@ def test_loads_expands_from_base_dir() -> None:
     assert _differences(path, compiled(from_text)) == []
 
 
-def _written(folder: Path, files: dict[str, str]) -> Path:
-    for name, text in files.items():
-        (folder / name).write_text(text, encoding="utf-8")
-    return folder / next(iter(files))
-
-
 def test_unattached_model_asset_is_removed(tmp_path: Path) -> None:
     """An asset ``<model>`` no ``<attach>`` uses adds nothing in MuJoCo, and is dropped."""
-    path = _written(
+    path = written(
         tmp_path,
         {
             "scene.xml": '<mujoco><asset><model file="cup.xml"/><material name="m"/></asset>'
@@ -226,11 +221,11 @@ def test_euler_angles_in_another_sequence_are_refused(tmp_path: Path) -> None:
         '<body name="a" euler="10 20 30"><attach model="c" body="b" prefix="c_"/></body>'
         "</worldbody></mujoco>"
     )
-    path = _written(tmp_path, {"scene.xml": scene, "child.xml": child.format('euler="30 0 10"')})
+    path = written(tmp_path, {"scene.xml": scene, "child.xml": child.format('euler="30 0 10"')})
     mujoco.MjModel.from_xml_path(str(path))
     with pytest.raises(MjcfValueError, match="eulerseq"):
         load(path, inline_attachments=True)
-    _written(tmp_path, {"child.xml": child.format('quat="0.9 0.1 0.3 0.2"')})
+    written(tmp_path, {"child.xml": child.format('quat="0.9 0.1 0.3 0.2"')})
     assert _differences(path, compiled(load(path, inline_attachments=True))) == []
 
 
@@ -247,7 +242,7 @@ def test_unknown_model_body_or_source_is_an_error(tmp_path: Path) -> None:
             '<mujoco><asset><model file="child.xml"/></asset><worldbody>'
             f'<body name="a">{attach_element}</body><body name="late"/></worldbody></mujoco>'
         )
-        path = _written(tmp_path, {"scene.xml": scene, "child.xml": child})
+        path = written(tmp_path, {"scene.xml": scene, "child.xml": child})
         with pytest.raises(ValueError):
             mujoco.MjModel.from_xml_path(str(path))
         with pytest.raises(MjcfLookupError, match=message):
@@ -258,7 +253,7 @@ def test_models_attaching_each_other_are_refused(tmp_path: Path) -> None:
     """A cycle of sub-models raises (MuJoCo documents that it loops forever, so it is not run)."""
     one = '<mujoco><asset><model name="two" file="two.xml"/></asset><worldbody><body name="b">'
     two = '<mujoco><asset><model name="one" file="one.xml"/></asset><worldbody><body name="b">'
-    path = _written(
+    path = written(
         tmp_path,
         {
             "one.xml": one
@@ -285,7 +280,7 @@ def test_unknown_world_reference_is_refused(tmp_path: Path) -> None:
         '<mujoco><asset><model file="child.xml"/></asset><worldbody>'
         '<attach model="c" body="b" prefix="x_"/></worldbody></mujoco>'
     )
-    path = _written(tmp_path, {"scene.xml": scene, "child.xml": child})
+    path = written(tmp_path, {"scene.xml": scene, "child.xml": child})
     mujoco.MjModel.from_xml_path(str(path))
     with pytest.raises(MjcfValueError, match=r'flex body="world"'):
         inlined_attachments(load(path))

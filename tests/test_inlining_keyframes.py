@@ -21,6 +21,7 @@ from mjcf_model.tools.compare import compiled_names, model_differences, path_fie
 from mjcf_model.tree.queries import find_all
 from mjcf_model.tree.traversal import walk
 from serializers import load
+from tests.attach_files import written
 
 #: A sub-model with one joint and one key, at time 0.5.
 KEYED = (
@@ -43,16 +44,10 @@ SCENE = (
 )
 
 
-def _written(folder: Path, files: dict[str, str]) -> Path:
-    for name, text in files.items():
-        (folder / name).write_text(text, encoding="utf-8")
-    return folder / next(iter(files))
-
-
 @pytest.fixture
 def scene(tmp_path: Path) -> Path:
     """The scene and its two sub-models, written to a folder."""
-    return _written(tmp_path, {"scene.xml": SCENE, "keyed.xml": KEYED, "plain.xml": PLAIN})
+    return written(tmp_path, {"scene.xml": SCENE, "keyed.xml": KEYED, "plain.xml": PLAIN})
 
 
 def test_attached_keys_compile_as_mujocos(scene: Path) -> None:
@@ -93,7 +88,7 @@ def test_keyless_attachments_expand_in_a_model_mujoco_refuses(tmp_path: Path) ->
         '<attach model="plain" body="leg" prefix="p_"/></worldbody>'
         '<keyframe><key qpos="1 2 3"/></keyframe></mujoco>'
     )
-    path = _written(tmp_path, {"scene.xml": scene, "plain.xml": PLAIN})
+    path = written(tmp_path, {"scene.xml": scene, "plain.xml": PLAIN})
     with pytest.raises(ValueError, match="invalid qpos size"):
         mujoco.MjModel.from_xml_path(str(path))
     expanded = inlined_attachments(load(path))

@@ -21,13 +21,8 @@ from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.tools.compare import compiled_names, model_differences, path_fields
 from mjcf_model.tree.traversal import walk
 from serializers import load, loads
+from tests.attach_files import written
 from tests.conftest import MUJOCO_VERSION
-
-
-def _written(folder: Path, files: dict[str, str]) -> Path:
-    for name, text in files.items():
-        (folder / name).write_text(text, encoding="utf-8")
-    return folder / next(iter(files))
 
 
 def _differences(path: Path) -> list[str]:
@@ -39,7 +34,7 @@ def _differences(path: Path) -> list[str]:
 
 def test_sub_model_includes_are_read(tmp_path: Path) -> None:
     """A sub-model whose bodies are in an included file attaches them, as MuJoCo does."""
-    path = _written(
+    path = written(
         tmp_path,
         {
             "scene.xml": '<mujoco><asset><model file="cup.xml"/></asset><worldbody>'
@@ -56,7 +51,7 @@ def test_sub_model_includes_are_read(tmp_path: Path) -> None:
 
 def test_asset_comments_and_other_assets_stay(tmp_path: Path) -> None:
     """Removing the asset ``<model>`` keeps the asset section's comment and material."""
-    path = _written(
+    path = written(
         tmp_path,
         {
             "scene.xml": '<mujoco><asset><!-- the parts --><model file="cup.xml"/>'
@@ -76,7 +71,7 @@ def test_asset_comments_and_other_assets_stay(tmp_path: Path) -> None:
 
 def test_empty_prefix_keeps_the_names(tmp_path: Path) -> None:
     """``prefix=""`` attaches the sub-model's names unchanged, as MuJoCo does."""
-    path = _written(
+    path = written(
         tmp_path,
         {
             "scene.xml": '<mujoco><asset><model file="cup.xml"/></asset><worldbody>'
