@@ -180,8 +180,35 @@ def test_attach_cannot_be_scaled() -> None:
         '<mujoco><asset><model name="m" file="m.xml"/></asset><worldbody><body>'
         '<attach model="m" body="b" prefix="x"/></body></worldbody></mujoco>'
     )
-    with pytest.raises(MjcfValueError, match="attach"):
+    with pytest.raises(MjcfValueError) as refused:
         scaled(model, 2)
+    assert str(refused.value) == (
+        "cannot scale an <attach>: the attached model is a separate file; "
+        "scale that model and attach the result"
+    )
+
+
+def test_an_unknown_mass_policy_is_refused_naming_the_two_policies() -> None:
+    """A typo in ``mass`` is an error that lists what it can be, before anything is scaled."""
+    with pytest.raises(MjcfValueError) as refused:
+        scaled(Body(pos=[0, 0, 1]), 2, mass="density")  # type: ignore[arg-type]
+    assert str(refused.value) == "mass policy is 'keep' or 'volume', found 'density'"
+
+
+def test_a_kept_include_is_refused_saying_to_inline_includes(tmp_path: Path) -> None:
+    """An ``<include>``'s file is not in the tree: scaling says to load with includes inlined."""
+    (tmp_path / "part.xml").write_text('<mujoco><body name="b"><geom size="0.1"/></body></mujoco>')
+    path = tmp_path / "model.xml"
+    path.write_text('<mujoco><worldbody><include file="part.xml"/></worldbody></mujoco>')
+    assert mujoco.MjModel.from_xml_path(str(path)).body("b").id == 1
+    with pytest.raises(MjcfValueError) as refused:
+        scaled(load(path), 2)
+    assert str(refused.value) == (
+        "cannot scale a model with <include> elements: their files are not part of the tree; "
+        "load it with inline_includes=True"
+    )
+    inlined = compiled(scaled(load(path, inline_includes=True), 2))
+    assert inlined.geom_size[0][0] == pytest.approx(0.2)
 
 
 def test_tendon_lengths_from_default_classes_scale_on_spatial_tendons_only() -> None:
