@@ -6,6 +6,7 @@ import attrs
 import mujoco
 import pytest
 
+from mjcf_model import prefixed
 from mjcf_model.nodes.base import field_table
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema import keywords
@@ -17,6 +18,7 @@ from mjcf_model.schema.namespaces import (
     child_key,
 )
 from mjcf_model.values import OneOf
+from serializers import dumps, loads
 from tests.conftest import printed_schema
 
 #: Elements MuJoCo reads outside the schema it prints.
@@ -153,6 +155,16 @@ def test_child_keys_follow_the_tree() -> None:
     assert child_key("default", "default") == "default"
     assert child_key("sensor", "contact") == "sensor/contact"
     assert child_key("body", "composite") is None
+
+
+def test_a_section_mujoco_does_not_define_has_no_key_and_passes_through_prefixing() -> None:
+    """A future top-level section is unknown: it keeps its name while known names are prefixed."""
+    assert child_key("mujoco", "wheel") is None
+    model = loads(
+        '<mujoco><wheel name="w" radius="1"/><worldbody><body name="b"><geom size="1"/>'
+        "</body></worldbody></mujoco>"
+    )
+    assert dumps(prefixed(model, "p_")) == dumps(model).replace('name="b"', 'name="p_b"')
 
 
 def test_keyword_validators_expose_their_keywords() -> None:

@@ -540,7 +540,7 @@ def child_key(context: str | None, tag: str) -> str | None:
     if context == "mujoco":
         return tag if tag in SCHEMA else None
     base = _CHILD_CONTEXT.get(context, context)
-    if tag == base.rsplit("/", 1)[-1] and base in _RECURSIVE:
+    if tag == base and base in _RECURSIVE:  # a body in a body, a class in a class
         return base
     key = f"{base}/{tag}"
     return key if key in SCHEMA else None
