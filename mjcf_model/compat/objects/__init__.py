@@ -62,6 +62,18 @@ of the colour, not a PNG written to ``<tempdir>/robosuite_temp_tex/tex.png``
 them); ``CompositeBodyObject`` leaves its children as they were (robosuite
 strips, moves and renames their elements in place).
 
+The composite recipes (``Bin``, ``Lid``, ``ConeObject``, ``HammerObject``...) keep
+robosuite's quirks that show in the model or its properties: a
+``PotWithHandlesObject``'s ``total_size`` is 3 x 3, a ``StandWithMount``'s hole
+marker is named ``hole_vis_vis`` and its upright ``init_quat`` is an integer array,
+a ``HammerObject`` without ``rng`` draws from a new unseeded generator and draws
+again at each read of ``init_quat``. They differ where robosuite raises: a numpy
+colour for a pot works (robosuite: ``ValueError``), and a bad hammer
+``handle_shape`` or cone material raises :class:`~mjcf_model.MjcfValueError`
+(robosuite asserts; the hammer raises after its draws, as robosuite's). A
+``HookFrame`` tip builds no throw-away ``ConeObject``, and a
+``RatchetingWrenchObject`` no unused grip material.
+
 Further: ``BallObject`` and ``CapsuleObject`` take ``rng`` too (robosuite's
 draw unseeded); white space text of the file is not kept (``get_xml()`` equals
 robosuite's once white space is stripped); an element-level
@@ -79,7 +91,12 @@ from __future__ import annotations
 
 from mjcf_model.compat.objects.base import GEOM_GROUPS, GEOMTYPE2GROUP, MujocoModel, MujocoObject
 from mjcf_model.compat.objects.composite import CompositeObject
-from mjcf_model.compat.objects.composite_body import CompositeBodyObject, HingedBoxObject
+from mjcf_model.compat.objects.composite_body import (
+    CompositeBodyObject,
+    HingedBoxObject,
+    RatchetingWrenchObject,
+)
+from mjcf_model.compat.objects.containers import Bin, Lid, StandWithMount
 from mjcf_model.compat.objects.generated import (
     BallObject,
     BoxObject,
@@ -88,6 +105,8 @@ from mjcf_model.compat.objects.generated import (
     MujocoGeneratedObject,
     PrimitiveObject,
 )
+from mjcf_model.compat.objects.pot import PotWithHandlesObject
+from mjcf_model.compat.objects.shells import ConeObject, HollowCylinderObject
 from mjcf_model.compat.objects.shipped import (
     BottleObject,
     BreadObject,
@@ -104,12 +123,14 @@ from mjcf_model.compat.objects.shipped import (
     RoundNutObject,
     SquareNutObject,
 )
+from mjcf_model.compat.objects.tools import HammerObject, HookFrame
 from mjcf_model.compat.objects.xml import MujocoXML, MujocoXMLModel, MujocoXMLObject
 
 __all__ = [
     "GEOMTYPE2GROUP",
     "GEOM_GROUPS",
     "BallObject",
+    "Bin",
     "BottleObject",
     "BoxObject",
     "BreadObject",
@@ -121,10 +142,15 @@ __all__ = [
     "CerealVisualObject",
     "CompositeBodyObject",
     "CompositeObject",
+    "ConeObject",
     "CylinderObject",
     "DoorObject",
+    "HammerObject",
     "HingedBoxObject",
+    "HollowCylinderObject",
+    "HookFrame",
     "LemonObject",
+    "Lid",
     "MilkObject",
     "MilkVisualObject",
     "MujocoGeneratedObject",
@@ -134,7 +160,10 @@ __all__ = [
     "MujocoXMLModel",
     "MujocoXMLObject",
     "PlateWithHoleObject",
+    "PotWithHandlesObject",
     "PrimitiveObject",
+    "RatchetingWrenchObject",
     "RoundNutObject",
     "SquareNutObject",
+    "StandWithMount",
 ]
