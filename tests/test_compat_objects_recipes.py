@@ -23,6 +23,7 @@ from robosuite.utils.mjcf_utils import CustomMaterial as TheirMaterial
 
 from mjcf_model import CustomMaterial, MjcfValueError
 from mjcf_model.compat import objects as ours
+from mjcf_model.tools.compare import model_differences
 from tests.conftest import PER_CLASS
 from tests.test_compat_objects_composite_body import assert_same_composite
 from tests.test_compat_objects_support import assert_same_object, assert_same_value, text_of
@@ -100,12 +101,14 @@ CASES: dict[str, list[dict[str, Any]]] = {
     ],
     "ConeObject": [
         {},
+        {"material": _STEEL, "ngeoms": 5},
         {"ngeoms": 9, "use_box": True},
         {"ngeoms": 4, "rgba": (1, 0, 0, 1), "friction": (1, 0.1, 0.01), "density": 10},
         {"outer_radius": 0.05, "inner_radius": 0.001, "height": 0.1, "solref": (0.01, 0.5)},
     ],
     "HollowCylinderObject": [
         {},
+        {"material": _STEEL, "make_half": True},
         {"make_half": True},
         {"ngeoms": 5, "rgba": (0, 0, 1, 1), "friction": (2, 0.1, 0.1)},
         {"ngeoms": 12, "make_half": True, "height": 0.01, "solimp": (0.99, 0.99, 0.001)},
@@ -172,12 +175,17 @@ _BODY_RECIPES = {"RatchetingWrenchObject"}
 
 
 def _pair(cls: str, kwargs: dict[str, Any], seed: int = 0) -> tuple[Any, Any]:
-    """Our object and robosuite's from the same arguments (a hammer from generators of ``seed``)."""
+    """Our object and robosuite's from the same arguments (a hammer from generators of ``seed``).
+
+    A ``material`` given as a dict of ``CustomMaterial`` arguments becomes each library's own.
+    """
     made = []
-    for module in (ours, rs):
+    for module, material_class in ((ours, CustomMaterial), (rs, TheirMaterial)):
         arguments = copy.deepcopy(kwargs)
         if cls == "HammerObject":
             arguments["rng"] = np.random.default_rng(seed)
+        if isinstance(arguments.get("material"), dict):
+            arguments["material"] = material_class(**arguments["material"])
         made.append(getattr(module, cls)("obj", **arguments))
     return made[0], made[1]
 
@@ -217,6 +225,9 @@ def test_recipe_is_robosuites(cls: str, index: int) -> None:
     """Body, assets, names, offsets, attributes and arguments are robosuite's, for each case."""
     mine, theirs = _pair(cls, CASES[cls][index])
     assert_same_recipe(cls, mine, theirs)
+    my_model, their_model = (_world([obj]).get_model(mode="mujoco") for obj in (mine, theirs))
+    assert model_differences(my_model, their_model) == []
+    assert my_model.ngeom == len(mine.contact_geoms) + len(mine.visual_geoms) > 0
 
 
 @pytest.mark.parametrize("cls", ["ConeObject", "HollowCylinderObject"])
@@ -390,6 +401,7 @@ ARGUMENTS: dict[str, st.SearchStrategy[dict[str, Any]]] = {
         ngeoms=st.integers(2, 20),
         use_box=st.booleans(),
         rgba=st.none() | _RGBA,
+        material=st.none() | st.just(_STEEL),
         density=_DENSITY,
         friction=_FRICTION,
         solimp=_SOLIMP,
@@ -401,6 +413,7 @@ ARGUMENTS: dict[str, st.SearchStrategy[dict[str, Any]]] = {
         ngeoms=st.integers(3, 20),
         make_half=st.booleans(),
         rgba=st.none() | _RGBA,
+        material=st.none() | st.just(_STEEL),
         density=_DENSITY,
         friction=_FRICTION,
     ),
