@@ -69,6 +69,7 @@ def _cases(tiny: bool) -> list[Case]:
     from benchmarks.cases_imports import import_cases
     from benchmarks.cases_objects import object_cases
     from benchmarks.cases_synthetic import synthetic_cases
+    from benchmarks.cases_variants import compile_cases, variant_cases
 
     corpus = compiling_corpus()
     return [
@@ -76,6 +77,8 @@ def _cases(tiny: bool) -> list[Case]:
         *synthetic_cases(50 if tiny else 5000),
         *object_cases((2, 5) if tiny else (10, 100, 1000)),
         *import_cases(),
+        *compile_cases(list(corpus[:12] if tiny else corpus)),
+        *variant_cases(tiny),
     ]
 
 

@@ -4,6 +4,9 @@ from __future__ import annotations
 
 import re
 
+import numpy as np
+
+from benchmarks.cases_variants import PATCHED
 from benchmarks.harness import OURS, Row
 
 __all__ = ["targets"]
@@ -85,6 +88,62 @@ def _compose(rows: list[Row]) -> list[str]:
     ]
 
 
+def _per_case(rows: list[Row], prefix: str, peer: str) -> dict[str, float]:
+    """mjcf-model's time over ``peer``'s in every case whose name starts with ``prefix``."""
+    ratios = {}
+    for case in sorted({row.case for row in rows if row.case.startswith(prefix)}):
+        ratio = _ratio(_median(rows, case, OURS), _median(rows, case, peer))
+        if ratio is not None:
+            ratios[case.removeprefix(prefix)] = ratio
+    return ratios
+
+
+def _variants(rows: list[Row]) -> list[str]:
+    """Issue 26's targets: compiling mesh models, and the physical variant loop."""
+    lines = []
+    compiles = _per_case(rows, "compile: ", "MjModel.from_xml_path")
+    if compiles:
+        worst = max(compiles, key=compiles.__getitem__)
+        within = sum(ratio <= 1.2 for ratio in compiles.values())
+        lines.append(
+            _line(
+                f"compile a mesh model: compiled(load(p)) / from_xml_path(p), worst of "
+                f"{len(compiles)} ({worst}; {within} within 1.2)",
+                compiles[worst],
+                1.2,
+                at_most=True,
+            )
+        )
+    physical = _per_case(rows, "physical variants: ", "MjSpec")
+    if physical:
+        mean = float(np.exp(np.mean(np.log(list(physical.values())))))
+        worst = max(physical, key=physical.__getitem__)
+        lines.append(
+            _line(
+                f"physical variants + compile: mjcf-model time / MjSpec time, geometric mean "
+                f"of {len(physical)} (worst: {worst} {physical[worst]:.2f})",
+                mean,
+                1.0,
+                at_most=True,
+            )
+        )
+        # mjcf-model/patched over mjcf-model/MjSpec: MjSpec's time over patched()'s.
+        patched = _per_case(rows, "physical variants: ", PATCHED)
+        faster = {case: ratio / physical[case] for case, ratio in patched.items()}
+        if faster:
+            slowest = min(faster, key=faster.__getitem__)
+            lines.append(
+                _line(
+                    f"physical variants, patched: MjSpec time / patched() time, geometric mean "
+                    f"of {len(faster)} (least: {slowest} {faster[slowest]:.1f})",
+                    float(np.exp(np.mean(np.log(list(faster.values()))))),
+                    10.0,
+                    at_most=False,
+                )
+            )
+    return lines
+
+
 def targets(rows: list[Row]) -> str:
     """A table: each target, the measured ratio, and whether it holds (issue 12's targets).
 
@@ -128,4 +187,5 @@ def targets(rows: list[Row]) -> str:
                     at_most=True,
                 )
             )
+    lines += _variants(rows)
     return "\n".join(lines)

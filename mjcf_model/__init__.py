@@ -23,6 +23,7 @@ from mjcf_model.compat.typed_builders import (
 )
 from mjcf_model.errors import *  # noqa: F403  (every error class; listed in errors.__all__)
 from mjcf_model.files.compiling import compiled
+from mjcf_model.files.patching import patched
 from mjcf_model.nodes import *  # noqa: F403  (every node class; listed in nodes.__all__)
 from mjcf_model.nodes.base import (
     AttributeMap,
@@ -73,6 +74,7 @@ __all__ = [
     "new_joint",
     "new_site",
     "parent_of",
+    "patched",
     "prefix_map",
     "prefixed",
     "recolored_collision_geoms",

@@ -35,6 +35,7 @@ __all__ = [
     "MjcfError",
     "MjcfIncludeError",
     "MjcfLookupError",
+    "MjcfRecompiledWarning",
     "MjcfRenderError",
     "MjcfSecurityError",
     "MjcfSyntaxError",
@@ -150,4 +151,12 @@ class MjcfDroppedSettingWarning(UserWarning):
     MuJoCo keeps one set of model-wide settings, so :func:`mjcf_model.attach`
     keeps the parent's and warns, naming each of the child's it drops. Filter
     it as any warning: ``warnings.simplefilter("ignore", MjcfDroppedSettingWarning)``.
+    """
+
+
+class MjcfRecompiledWarning(UserWarning):
+    """:func:`mjcf_model.patched` compiled the model in full: a change has no one-for-one array.
+
+    The message names the first such change. The result is still exact; only the
+    time differs. Filter it as any warning.
     """

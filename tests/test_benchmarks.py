@@ -8,15 +8,17 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import mujoco
+import numpy as np
 import pytest
 
+from benchmarks.cases_variants import VARIANT_MODELS, our_physical_variant, spec_physical_variant
 from benchmarks.etree_path import etree_inlined, robosuite_scaled
 from benchmarks.harness import OURS, Case, Contender, Row, run_case
-from benchmarks.inputs import synthetic_xml
+from benchmarks.inputs import package_dir, synthetic_xml
 from benchmarks.targets import targets
 from mjcf_model import compiled, scaled
 from mjcf_model.tools.compare import compile_text_beside, model_differences, path_fields
-from serializers import loads
+from serializers import load, loads
 from tests.conftest import compiling_corpus, corpus_id
 
 #: Corpus files with ``<include>`` elements (robosuite's ElementTree path must inline them).
@@ -84,6 +86,8 @@ def test_tiny_run_writes_every_case_with_every_contender(tiny_results: str) -> N
         "synthetic wide: hash",
         "construct CanObject",
         "compose 5 cans + write XML",
+        "physical variants: suite/humanoid.xml",
+        "compile: ",
     ):
         assert f"| {case}" in text, case
     for contender in ("robosuite", "dm_control.mjcf", "MjSpec", "lxml", "ElementTree"):
@@ -165,3 +169,21 @@ def test_ratios_are_relative_to_this_library() -> None:
     assert rows["slower"].ratio == slower / ours
     assert len(rows["slower"].times) == 5
     assert rows["absent"].median is None and rows["absent"].note == "not installed"
+
+
+@pytest.mark.parametrize("model", VARIANT_MODELS, ids=lambda m: m[1].rsplit("/", 2)[-2])
+def test_both_physical_variant_rows_make_the_same_variants(model: tuple[str, str]) -> None:
+    """The physical variants of both rows compile to the same model, changed where drawn."""
+    package, relative = model
+    folder = package_dir(package)
+    assert folder is not None
+    path = folder / relative
+    spec, loaded = mujoco.MjSpec.from_file(str(path)), load(path)
+    original = spec.compile()
+    for seed in (0, 1):
+        theirs = spec_physical_variant(spec, np.random.default_rng(seed)).compile()
+        mine = compiled(our_physical_variant(loaded, np.random.default_rng(seed)))
+        assert model_differences(mine, theirs, ignore=path_fields()) == []
+    changed = set(model_differences(theirs, original))
+    assert {"geom_rgba", "geom_friction"} <= changed
+    assert ("body_mass" in changed) == any(body.explicitinertial for body in spec.bodies)

@@ -135,8 +135,13 @@ def bundled(
         ('assets/a.obj', ['a.obj'])
 
     """
+    return _bundled(model, dict(assets or {}), folder, on_disk=False)
+
+
+def _bundled(model: Mujoco, assets: Mapping[str, bytes], folder: str, *, on_disk: bool) -> Bundle:
+    """:func:`bundled`; with ``on_disk``, files that exist stay where they are, by absolute path."""
     names = _Names()
-    result = _bundle(model, dict(assets or {}), folder, names, ())
+    result = _bundle(model, assets, folder, names, (), on_disk)
     return Bundle(model=result, files=names.files)
 
 
@@ -146,12 +151,15 @@ def _bundle(
     folder: str,
     names: _Names,
     chain: tuple[Path, ...],
+    on_disk: bool,
 ) -> Mujoco:
     model = inlined(model)
 
     def new_path(reference: FileReference) -> str:
         if reference.key == "asset/model":
-            data = _submodel_text(reference, assets, names, chain)
+            data = _submodel_text(reference, assets, names, chain, on_disk)
+        elif on_disk and _on_disk(reference, assets):
+            return os.path.abspath(reference.path)
         else:
             data = _read(reference, assets)
         return folder + names.name(reference.text, data)
@@ -159,8 +167,19 @@ def _bundle(
     return with_folders(with_paths(model, new_path), Folders())
 
 
+def _on_disk(reference: FileReference, assets: Mapping[str, bytes]) -> bool:
+    """Whether MuJoCo can read the file itself: not given in ``assets``, and a file on disk."""
+    return (
+        reference.lookup not in assets and reference.text not in assets and reference.path.is_file()
+    )
+
+
 def _submodel_text(
-    reference: FileReference, assets: Mapping[str, bytes], names: _Names, chain: tuple[Path, ...]
+    reference: FileReference,
+    assets: Mapping[str, bytes],
+    names: _Names,
+    chain: tuple[Path, ...],
+    on_disk: bool,
 ) -> bytes:
     """The bundled text of an asset ``<model>`` file (its own paths resolve from its folder)."""
     from serializers import dumps, loads
@@ -171,18 +190,23 @@ def _submodel_text(
     sub = loads(
         _read(reference, assets), base_dir=reference.path.parent, filename=str(reference.path)
     )
-    bundled_sub = _bundle(sub, {}, "", names, (*chain, reference.path))
+    bundled_sub = _bundle(sub, {}, "", names, (*chain, reference.path), on_disk)
     return dumps(bundled_sub).encode()
 
 
 def compiled(model: Mujoco, *, assets: Mapping[str, bytes] | None = None) -> mujoco.MjModel:
     r"""Compile ``model`` with MuJoCo in memory: nothing is written.
 
-    Every file the model names is read from where its provenance says it is
+    Every file the model names is found where its provenance says it is
     (see :mod:`mjcf_model.files.provenance`): a loaded model's files resolve from its
     folder, the files of models attached from other folders from theirs. A
     model built in code resolves relative paths from the working folder, or
-    takes the files from ``assets``.
+    takes the files from ``assets``. MuJoCo reads a file that exists on disk
+    itself, by its absolute path (so its cache of decoded meshes and textures
+    serves every compile of the same file); the text of asset ``<model>`` files
+    and whatever ``assets`` gives go through MuJoCo's asset dictionary. The
+    compiler's ``meshdir``, ``texturedir``, ``assetdir`` and ``strippath`` are
+    resolved before MuJoCo sees the model.
 
     Args:
         model: The model.
@@ -210,7 +234,7 @@ def compiled(model: Mujoco, *, assets: Mapping[str, bytes] | None = None) -> muj
 
     from serializers import dumps
 
-    bundle = bundled(model, assets=assets)
+    bundle = _bundled(model, dict(assets or {}), "", on_disk=True)
     text = dumps(bundle.model)
     try:
         return mujoco.MjModel.from_xml_string(text, bundle.files)

@@ -1,0 +1,208 @@
+"""The domain-randomisation loop: make variants of a model and compile each, beside ``MjSpec``.
+
+Two kinds of variant, each made the same way by both contenders from the same
+seeded draws (checked before timing: both compile to the same model):
+
+* physical: every geom gets a random ``rgba`` and sliding friction, every body
+  with an explicit inertial a random mass (times 0.8 to 1.2); made and compiled,
+  and made and patched into the compiled model (:func:`mjcf_model.patched`);
+* compiling: ``compiled(load(path))`` against MuJoCo loading the file.
+
+``MjSpec`` parses the file once and copies the spec per variant (``spec.copy()``);
+this library loads the file once and transforms the immutable model per variant.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from benchmarks.harness import OURS, Case, Contender
+
+__all__ = [
+    "PATCHED",
+    "VARIANT_MODELS",
+    "compile_cases",
+    "our_physical_variant",
+    "spec_physical_variant",
+    "variant_cases",
+]
+
+#: The contender that patches the compiled model instead of compiling each variant.
+PATCHED = "patched() (mjcf-model, no compile)"
+
+#: How many variants each timed run makes.
+VARIANTS = 10
+
+
+def _physical_draws(rng: np.random.Generator, geoms: int, bodies: int) -> tuple[Any, Any, Any]:
+    """Per geom an rgba and a sliding friction, per body with an inertial a mass factor."""
+    rgba = np.column_stack([rng.uniform(0, 1, (geoms, 3)), np.ones(geoms)])
+    return rgba, rng.uniform(0.5, 1.5, geoms), rng.uniform(0.8, 1.2, bodies)
+
+
+def _spec_bodies(body: Any) -> Iterator[Any]:
+    """A spec body and every body below it, each before its children."""
+    yield body
+    for child in body.bodies:
+        yield from _spec_bodies(child)
+
+
+def spec_physical_variant(spec: Any, rng: np.random.Generator) -> Any:
+    """A copy of ``spec`` with the physical draws written, body by body (its geoms first)."""
+    variant = spec.copy()
+    bodies = list(_spec_bodies(variant.worldbody))
+    geoms = [geom for body in bodies for geom in body.geoms]
+    weighed = [body for body in bodies if body.explicitinertial]
+    rgba, friction, mass = _physical_draws(rng, len(geoms), len(weighed))
+    for geom, colour, slide in zip(geoms, rgba, friction, strict=True):
+        geom.rgba = colour
+        geom.friction = [slide, 0.005, 0.0001]
+    for body, factor in zip(weighed, mass, strict=True):
+        body.mass = body.mass * factor
+    return variant
+
+
+def _our_bodies(body: Any) -> Iterator[Any]:
+    yield body
+    for child in body.children:
+        if getattr(child, "tag", None) == "body":
+            yield from _our_bodies(child)
+
+
+def _inertial(body: Any) -> Any:
+    return next((c for c in body.children if getattr(c, "tag", None) == "inertial"), None)
+
+
+def our_physical_variant(model: Any, rng: np.random.Generator) -> Any:
+    """``model`` with the physical draws written, in :func:`spec_physical_variant`'s order."""
+    from mjcf_model import get_attribute, with_attributes
+    from mjcf_model.tree.traversal import with_children
+
+    worldbody = model.worldbody
+    bodies = list(_our_bodies(worldbody))
+    geoms = [c for b in bodies for c in b.children if getattr(c, "tag", None) == "geom"]
+    weighed = [b for b in bodies if _inertial(b) is not None]
+    rgba, friction, mass = _physical_draws(rng, len(geoms), len(weighed))
+    colours = {
+        id(g): (tuple(c), (float(f), 0.005, 0.0001))
+        for g, c, f in zip(geoms, rgba, friction, strict=True)
+    }
+    factors = dict(zip((id(b) for b in weighed), mass, strict=True))
+
+    def rebuilt(body: Any) -> Any:
+        children = []
+        for child in body.children:
+            tag = getattr(child, "tag", None)
+            if tag == "geom":
+                colour, slide = colours[id(child)]
+                child = with_attributes(child, {"rgba": colour, "friction": slide})
+            elif tag == "inertial" and id(body) in factors:
+                mass_value = float(get_attribute(child, "mass")) * factors[id(body)]
+                child = with_attributes(child, {"mass": mass_value})
+            elif tag == "body":
+                child = rebuilt(child)
+            children.append(child)
+        return with_children(body, children)
+
+    return with_children(model, [rebuilt(c) if c is worldbody else c for c in model.children])
+
+
+#: The models of the variant loop: robosuite's mesh robots, dm_control's mesh-heavy dog
+#: and mesh-free humanoid.
+VARIANT_MODELS = (
+    ("robosuite", "models/assets/robots/panda/robot.xml"),
+    ("robosuite", "models/assets/robots/sawyer/robot.xml"),
+    ("dm_control", "suite/dog.xml"),
+    ("dm_control", "suite/humanoid.xml"),
+)
+
+
+def _variant_case(path: Path) -> Case:
+    import mujoco
+
+    from mjcf_model import compiled, patched
+    from mjcf_model.tools.compare import model_differences, path_fields
+    from serializers import load
+
+    model, spec = load(path), mujoco.MjSpec.from_file(str(path))
+    mine = compiled(our_physical_variant(model, np.random.default_rng(0)))
+    theirs = spec_physical_variant(spec, np.random.default_rng(0)).compile()
+    differences = model_differences(mine, theirs, ignore=path_fields())
+    if differences:
+        raise AssertionError(f"{path.name}: the two physical variants differ in {differences}")
+
+    def ours() -> None:
+        rng = np.random.default_rng(1)
+        for _ in range(VARIANTS):
+            compiled(our_physical_variant(model, rng))
+
+    base = compiled(model)
+
+    def ours_patched() -> None:
+        rng = np.random.default_rng(1)
+        for _ in range(VARIANTS):
+            patched(base, model, our_physical_variant(model, rng))
+
+    def mjspec() -> None:
+        rng = np.random.default_rng(1)
+        for _ in range(VARIANTS):
+            spec_physical_variant(spec, rng).compile()
+
+    name = f"{path.parent.name}/{path.name}"
+    return Case(
+        f"physical variants: {name}",
+        [
+            Contender(OURS, ours, note="transform the loaded model, then compiled()"),
+            Contender("MjSpec", mjspec, note="spec.copy(), the same edits, compile()"),
+            Contender(
+                PATCHED,
+                ours_patched,
+                note="the same variants, patched(compiled model, model, variant): no compile",
+            ),
+        ],
+        f"{VARIANTS} variants (rgba, friction per geom; mass per inertial)",
+    )
+
+
+def variant_cases(tiny: bool = False) -> list[Case]:
+    """One physical-variant case per model of :data:`VARIANT_MODELS` (``tiny``: the last)."""
+    from benchmarks.inputs import package_dir
+
+    cases = []
+    for package, relative in VARIANT_MODELS[-1:] if tiny else VARIANT_MODELS:
+        folder = package_dir(package)
+        if folder is not None:
+            cases.append(_variant_case(folder / relative))
+    return cases
+
+
+def compile_cases(files: list[Path]) -> list[Case]:
+    """``compiled(load(path))`` against ``MjModel.from_xml_path`` per corpus model with meshes."""
+    import mujoco
+
+    from mjcf_model import compiled
+    from serializers import load
+
+    cases = []
+    for path in files:
+        if "<mesh" not in path.read_text(errors="replace"):
+            continue
+        model = load(path)
+        cases.append(
+            Case(
+                f"compile: {path.parent.name}/{path.name}",
+                [
+                    Contender(OURS, lambda m=model: compiled(m), note="compiled(model), loaded"),
+                    Contender(
+                        "MjModel.from_xml_path",
+                        lambda p=str(path): mujoco.MjModel.from_xml_path(p),
+                    ),
+                ],
+                "one mesh model",
+            )
+        )
+    return cases

@@ -1,0 +1,179 @@
+"""``compiled`` lets MuJoCo read the files that exist on disk, and compiles what MuJoCo would.
+
+Each model is written into a folder with its mesh, texture, included and asset
+``<model>`` files; MuJoCo loading the file (``MjModel.from_xml_path``) is the
+referee, and ``compiled(load(path))`` must give the same model (but for the file paths it records,
+``path_fields``) while reading none
+of those files itself (they go to MuJoCo by absolute path, so its cache serves
+them). Files given in ``assets=`` and files that are not on disk still go through
+MuJoCo's asset dictionary.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import mujoco
+import numpy as np
+import pytest
+
+from mjcf_model import MjcfAssetError, compiled
+from mjcf_model.files import compiling
+from mjcf_model.files.png import png_bytes
+from mjcf_model.tools.compare import model_differences, path_fields
+from serializers import load, loads
+
+
+def _tetrahedron(size: float) -> bytes:
+    """An OBJ tetrahedron with edges ``size`` long along the axes."""
+    points = f"v 0 0 0\nv {size} 0 0\nv 0 {size} 0\nv 0 0 {size}\n"
+    return (points + "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n").encode()
+
+
+def _checker() -> bytes:
+    """A 4 x 4 PNG of two colours."""
+    pixels = np.zeros((4, 4, 3), dtype=np.uint8)
+    pixels[::2, ::2] = (255, 0, 0)
+    return png_bytes(pixels)
+
+
+def _write(folder: Path, files: dict[str, bytes | str]) -> None:
+    for name, data in files.items():
+        path = folder / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_bytes(data.encode() if isinstance(data, str) else data)
+
+
+@pytest.fixture
+def no_reads(monkeypatch: pytest.MonkeyPatch) -> list[str]:
+    """The files ``compiled`` reads itself (it should leave those on disk to MuJoCo)."""
+    reads: list[str] = []
+    read = compiling._read
+
+    def counting(reference: compiling.FileReference, assets: dict[str, bytes]) -> bytes:
+        reads.append(reference.text)
+        return read(reference, assets)
+
+    monkeypatch.setattr(compiling, "_read", counting)
+    return reads
+
+
+_MESH_BODY = """<worldbody><body><geom type="mesh" mesh="tet"/>
+<geom type="box" size="0.1 0.1 0.1" material="checks" pos="1 0 0"/></body></worldbody>"""
+
+#: Models whose files MuJoCo finds through each folder setting, by what they test.
+FOLDER_CASES: dict[str, dict[str, bytes | str]] = {
+    "plain paths": {
+        "model.xml": f"""<mujoco><asset><mesh name="tet" file="parts/tet.obj"/>
+            <texture name="checks" type="2d" file="parts/checks.png"/>
+            <material name="checks" texture="checks"/></asset>{_MESH_BODY}</mujoco>""",
+        "parts/tet.obj": _tetrahedron(0.2),
+        "parts/checks.png": _checker(),
+    },
+    "meshdir and texturedir": {
+        "model.xml": f"""<mujoco><compiler meshdir="meshes" texturedir="../textures"/>
+            <asset><mesh name="tet" file="tet.obj"/>
+            <texture name="checks" type="2d" file="checks.png"/>
+            <material name="checks" texture="checks"/></asset>{_MESH_BODY}</mujoco>""",
+        "meshes/tet.obj": _tetrahedron(0.3),
+        "../textures/checks.png": _checker(),
+    },
+    "assetdir": {
+        "model.xml": f"""<mujoco><compiler assetdir="assets"/>
+            <asset><mesh name="tet" file="tet.obj"/>
+            <texture name="checks" type="2d" file="checks.png"/>
+            <material name="checks" texture="checks"/></asset>{_MESH_BODY}</mujoco>""",
+        "assets/tet.obj": _tetrahedron(0.4),
+        "assets/checks.png": _checker(),
+    },
+    "strippath": {
+        "model.xml": f"""<mujoco><compiler meshdir="meshes" texturedir="meshes"
+            strippath="true"/><asset><mesh name="tet" file="C:/elsewhere/tet.obj"/>
+            <texture name="checks" type="2d" file="/far/away/checks.png"/>
+            <material name="checks" texture="checks"/></asset>{_MESH_BODY}</mujoco>""",
+        "meshes/tet.obj": _tetrahedron(0.5),
+        "meshes/checks.png": _checker(),
+    },
+    "an include in another folder": {
+        "model.xml": """<mujoco><compiler meshdir="meshes"/>
+            <include file="parts/assets.xml"/>
+            <worldbody><include file="parts/body.xml"/></worldbody></mujoco>""",
+        "parts/assets.xml": """<mujoco><asset><mesh name="tet" file="tet.obj"/>
+            <texture name="checks" type="2d" file="textures/checks.png"/>
+            <material name="checks" texture="checks"/></asset></mujoco>""",
+        "parts/body.xml": f"<mujoco>{_MESH_BODY.replace('worldbody', 'body')}</mujoco>",
+        "meshes/tet.obj": _tetrahedron(0.6),
+        "textures/checks.png": _checker(),
+    },
+}
+
+
+@pytest.mark.parametrize("case", list(FOLDER_CASES))
+def test_compiled_is_what_mujoco_loads_and_reads_no_file_itself(
+    case: str, tmp_path: Path, no_reads: list[str]
+) -> None:
+    """MuJoCo compiles the same model from the file and from ``compiled``, which reads nothing."""
+    folder = tmp_path / "robot"
+    folder.mkdir()
+    _write(folder, FOLDER_CASES[case])
+    path = folder / "model.xml"
+    expected = mujoco.MjModel.from_xml_path(str(path))
+    before = sorted(tmp_path.rglob("*"))
+    for inline_includes in (False, True):
+        result = compiled(load(path, inline_includes=inline_includes))
+        assert model_differences(result, expected, ignore=path_fields()) == [], inline_includes
+    assert result.nmesh == 1 and result.ntex == 1
+    assert no_reads == []
+    assert sorted(tmp_path.rglob("*")) == before  # nothing written
+
+
+def test_asset_models_are_read_from_their_own_folder(tmp_path: Path) -> None:
+    """An asset ``<model>`` goes to MuJoCo as text; its mesh, in its own folder, by path."""
+    _write(
+        tmp_path,
+        {
+            "scene.xml": """<mujoco><asset><model name="arm" file="arm/arm.xml"/></asset>
+                <worldbody><body name="mount"><attach model="arm" body="link" prefix="a_"/>
+                </body></worldbody></mujoco>""",
+            "arm/arm.xml": """<mujoco><compiler meshdir="meshes"/>
+                <asset><mesh name="tet" file="tet.obj"/></asset>
+                <worldbody><body name="link"><geom type="mesh" mesh="tet"/></body></worldbody>
+                </mujoco>""",
+            "arm/meshes/tet.obj": _tetrahedron(0.25),
+        },
+    )
+    path = tmp_path / "scene.xml"
+    expected = mujoco.MjModel.from_xml_path(str(path))
+    assert model_differences(compiled(load(path)), expected, ignore=path_fields()) == []
+    assert expected.nmesh == 1
+
+
+def test_files_given_in_assets_win_over_the_files_on_disk(
+    tmp_path: Path, no_reads: list[str]
+) -> None:
+    """``assets=`` replaces a file on disk: MuJoCo compiles the given bytes."""
+    _write(tmp_path / "kept", FOLDER_CASES["plain paths"])
+    _write(tmp_path / "other", {**FOLDER_CASES["plain paths"], "parts/tet.obj": _tetrahedron(2.0)})
+    model = load(tmp_path / "kept" / "model.xml")
+    given = compiled(model, assets={"parts/tet.obj": _tetrahedron(2.0)})
+    assert no_reads == ["parts/tet.obj"]
+    expected = mujoco.MjModel.from_xml_path(str(tmp_path / "other" / "model.xml"))
+    assert model_differences(given, expected, ignore=path_fields()) == []
+    assert model_differences(compiled(model), expected, ignore=path_fields()) != []
+
+
+def test_a_model_built_in_code_takes_its_files_from_assets_or_the_working_folder(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Without a folder, relative paths resolve from the working folder; missing ones say so."""
+    text = '<mujoco><asset><mesh name="tet" file="tet.obj"/></asset><worldbody>'
+    text += '<geom type="mesh" mesh="tet"/></worldbody></mujoco>'
+    model = loads(text)
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(MjcfAssetError, match=r"<mesh file='tet\.obj'>: cannot read"):
+        compiled(model)
+    assert compiled(model, assets={"tet.obj": _tetrahedron(0.1)}).nmesh == 1
+    (tmp_path / "tet.obj").write_bytes(_tetrahedron(0.1))
+    from_folder = compiled(model)
+    expected = mujoco.MjModel.from_xml_string(text)
+    assert model_differences(from_folder, expected, ignore=path_fields()) == []

@@ -1,0 +1,140 @@
+"""``patched`` gives, array for array, what ``compiled`` gives for a variant.
+
+Every mapped attribute written in a model is changed (colours drawn, the other values
+scaled by drawn factors, so they stay valid); MuJoCo compiling the variant in full is
+the referee, over the shipped strategies' models and over the corpus. A change it
+cannot map falls back to a full compile and says so.
+"""
+
+from __future__ import annotations
+
+import warnings
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from mjcf_model import MjcfRecompiledWarning, compiled, map_elements, patched, with_attributes
+from mjcf_model.files.patching import FIELDS
+from mjcf_model.nodes.base import AnyElement, attribute_items
+from mjcf_model.nodes.root import Mujoco
+from mjcf_model.strategies import models
+from mjcf_model.tools.compare import model_differences
+from mjcf_model.values import numbers_of
+from serializers import load, loads
+from tests.conftest import MUJOCO_VERSION, compiling_corpus, corpus_id
+
+#: MuJoCo before 4.0 patches fewer fields (``patching._BEFORE_4``).
+OLD = MUJOCO_VERSION < (4, 0)
+
+
+def _changed_value(attribute: str, numbers: tuple[float, ...], rng: np.random.Generator) -> Any:
+    """A valid new value of as many numbers: colours drawn, the rest scaled."""
+    if attribute == "rgba":
+        return tuple(float(v) for v in rng.uniform(0, 1, len(numbers)))
+    if attribute == "solimp":
+        d0 = float(rng.uniform(0.5, 0.9))
+        drawn = (d0, float(rng.uniform(d0, 0.99)), float(rng.uniform(1e-4, 0.01)), 0.5, 2.0)
+        return drawn[: len(numbers)]
+    factor = float(rng.uniform(0.5, 2.0))
+    return tuple(v * factor for v in numbers)
+
+
+def variant(model: Mujoco, seed: int) -> tuple[Mujoco, int]:
+    """``model`` with every mapped attribute it writes changed; how many were changed."""
+    rng = np.random.default_rng(seed)
+    count = 0
+
+    def change(element: AnyElement, key: str | None, ancestors: Any) -> AnyElement:
+        nonlocal count
+        fields = FIELDS.get(key or "", {})
+        values = {}
+        for name, value in attribute_items(element):
+            numbers = numbers_of(value)
+            if name in fields and numbers:
+                values[name] = " ".join(repr(v) for v in _changed_value(name, numbers, rng))
+        count += len(values)
+        return with_attributes(element, values) if values else element
+
+    return map_elements(change, model), count
+
+
+def _patched_and_expected(before: Mujoco, after: Mujoco) -> tuple[Any, Any, list[str]]:
+    model = compiled(before)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", MjcfRecompiledWarning)
+        result = patched(model, before, after)
+    reasons = [str(w.message) for w in caught if issubclass(w.category, MjcfRecompiledWarning)]
+    return result, compiled(after), reasons
+
+
+@settings(suppress_health_check=[HealthCheck.too_slow])
+@given(model=models(), seed=st.integers(0, 2**32 - 1))
+def test_patched_drawn_models_are_compiled_variants(model: Mujoco, seed: int) -> None:
+    """Any drawn model, every mapped value changed: the patched arrays are MuJoCo's."""
+    after, _ = variant(model, seed)
+    result, expected, _ = _patched_and_expected(model, after)
+    assert model_differences(result, expected) == []
+
+
+@pytest.mark.parametrize("path", compiling_corpus(), ids=corpus_id)
+def test_patched_corpus_variants_are_compiled_variants(path: Path) -> None:
+    """Each corpus model with its mapped values changed: patched without recompiling."""
+    before = load(path, inline_includes=True)
+    after, _ = variant(before, 0)
+    result, expected, reasons = _patched_and_expected(before, after)
+    assert model_differences(result, expected) == []
+    allowed = ("the compiler's", "a springdamper", *(("MuJoCo before 4.0",) if OLD else ()))
+    assert all(any(why in reason for why in allowed) for reason in reasons), reasons
+
+
+def test_a_change_without_an_array_compiles_again_and_says_which() -> None:
+    """A geom size has no one-for-one array: a full compile, with a warning naming it."""
+    before = loads('<mujoco><worldbody><geom name="g" size="0.1"/></worldbody></mujoco>')
+
+    def bigger(element: AnyElement, key: str | None, ancestors: Any) -> AnyElement:
+        return with_attributes(element, {"size": (0.2,)}) if key == "body/geom" else element
+
+    after = map_elements(bigger, before)
+    with pytest.warns(MjcfRecompiledWarning, match=r"<geom> size at \(0, 0\): "):
+        result = patched(compiled(before), before, after)
+    assert result.geom_size[0][0] == pytest.approx(0.2)
+
+
+def test_unchanged_models_and_the_input_model_are_left_alone() -> None:
+    """Patching a model against itself copies it; the given compiled model never changes."""
+    before = loads('<mujoco><worldbody><geom size="0.1" rgba="1 0 0 1"/></worldbody></mujoco>')
+    model = compiled(before)
+    same = patched(model, before, before)
+    assert same is not model and model_differences(same, model) == []
+    after, _ = variant(before, 3)
+    patched(model, before, after)
+    assert model.geom_rgba.tolist() == [[1.0, 0.0, 0.0, 1.0]]
+
+
+def test_readme_variant_example_runs_on_a_robot(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The README's variant loop, from the installed package's description, on robosuite's Panda.
+
+    It patches every variant (no full compile) and each equals ``compiled`` of that variant.
+    """
+    from importlib import metadata
+
+    import robosuite
+
+    readme = metadata.metadata("mjcf-model").get_payload()
+    assert isinstance(readme, str)
+    section = readme.split("### Variants: domain randomisation", 1)[1]
+    code = section.split("```python\n", 1)[1].split("```", 1)[0]
+    panda = Path(robosuite.__file__).parent / "models/assets/robots/panda/robot.xml"
+    assert 'load("robot.xml")' in code
+    namespace: dict[str, Any] = {}
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", MjcfRecompiledWarning)
+        exec(code.replace('"robot.xml"', repr(str(panda))), namespace)
+    made = namespace["models"]
+    assert len(made) == 100
+    assert not np.array_equal(made[0].geom_rgba, made[1].geom_rgba)
+    assert not np.array_equal(made[0].geom_rgba, namespace["base"].geom_rgba)
