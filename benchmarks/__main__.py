@@ -69,7 +69,7 @@ def _cases(tiny: bool) -> list[Case]:
     from benchmarks.cases_imports import import_cases
     from benchmarks.cases_objects import object_cases
     from benchmarks.cases_synthetic import synthetic_cases
-    from benchmarks.cases_variants import compile_cases, variant_cases
+    from benchmarks.cases_variants import compile_cases, sweep_cases, variant_cases
 
     corpus = compiling_corpus()
     return [
@@ -79,6 +79,7 @@ def _cases(tiny: bool) -> list[Case]:
         *import_cases(),
         *compile_cases(list(corpus[:12] if tiny else corpus)),
         *variant_cases(tiny),
+        *sweep_cases(tiny),
     ]
 
 

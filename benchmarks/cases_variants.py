@@ -26,6 +26,8 @@ __all__ = [
     "PATCHED",
     "VARIANT_MODELS",
     "compile_cases",
+    "rollout",
+    "sweep_cases",
     "our_physical_variant",
     "spec_physical_variant",
     "variant_cases",
@@ -206,6 +208,61 @@ def variant_cases(tiny: bool = False) -> list[Case]:
         if folder is not None:
             cases.append(_variant_case(folder / relative))
     return cases
+
+
+def rollout(job: tuple[Any, int]) -> float:
+    """The README's sweep task: one variant (masses times 0.8 to 1.2), compiled, 1 s simulated."""
+    import mujoco
+
+    from mjcf_model import compiled, map_elements, with_attributes
+
+    model, seed = job
+    rng = np.random.default_rng(seed)
+
+    def heavier(element: Any, key: str | None, ancestors: Any) -> Any:
+        if key != "body/inertial":
+            return element
+        return with_attributes(element, {"mass": element.mass * rng.uniform(0.8, 1.2)})
+
+    physics = compiled(map_elements(heavier, model))
+    data = mujoco.MjData(physics)
+    mujoco.mj_step(physics, data, nstep=int(1 / physics.opt.timestep))
+    return float(data.qpos[0])
+
+
+def sweep_cases(tiny: bool = False) -> list[Case]:
+    """The README's process-pool sweep on robosuite's Panda against the same jobs in one process."""
+    import pickle
+    from concurrent.futures import ProcessPoolExecutor
+
+    from benchmarks.inputs import package_dir
+    from serializers import load
+
+    folder = package_dir("robosuite")
+    if folder is None:
+        return []
+    robot = load(folder / "models/assets/robots/panda/robot.xml")
+    jobs = [(robot, seed) for seed in range(4 if tiny else 40)]
+
+    def pooled() -> list[float]:
+        with ProcessPoolExecutor(max_workers=2) as pool:
+            return list(pool.map(rollout, jobs))
+
+    size = len(pickle.dumps(jobs[0]))
+    return [
+        Case(
+            "variant sweep: panda/robot.xml",
+            [
+                Contender(OURS, lambda: [rollout(job) for job in jobs], note="one process"),
+                Contender(
+                    "ProcessPoolExecutor, 2 workers",
+                    pooled,
+                    note=f"pool started per run; {size:,} bytes pickled per task (model, seed)",
+                ),
+            ],
+            f"{len(jobs)} variants, each compiled and simulated for 1 s",
+        )
+    ]
 
 
 def compile_cases(files: list[Path]) -> list[Case]:

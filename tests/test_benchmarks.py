@@ -87,6 +87,7 @@ def test_tiny_run_writes_every_case_with_every_contender(tiny_results: str) -> N
         "construct CanObject",
         "compose 5 cans + write XML",
         "physical variants: suite/humanoid.xml",
+        "variant sweep: panda/robot.xml",
         "compile: ",
     ):
         assert f"| {case}" in text, case
