@@ -23,6 +23,7 @@ class, a size, a position...) is compiled again in full, with a
 from __future__ import annotations
 
 import copy
+import functools
 import warnings
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
@@ -93,11 +94,10 @@ _BEFORE_4 = frozenset(
 #: Fields of a geom's contacts and looks: changing only these needs no ``mj_setConst``.
 _LOCAL = frozenset(FIELDS["body/geom"].values()) | {"dof_damping", "dof_frictionloss"}
 
-#: The MuJoCo object type of each element key with fields, and how its row is found.
-_OBJECTS = {"body/geom": "geom", "body/joint": "joint", "body/inertial": "body"}
-
 #: ``<compiler>`` settings under which explicit inertials are not compiled as written.
-_INERTIA_SETTINGS = ("inertiafromgeom", "boundmass", "boundinertia", "balanceinertia")
+_INERTIA_SETTINGS = (
+    "inertiafromgeom", "boundmass", "boundinertia", "balanceinertia", "settotalmass",
+)  # fmt: skip
 
 
 def patched(model: mujoco.MjModel, before: Mujoco, after: Mujoco) -> mujoco.MjModel:
@@ -178,13 +178,13 @@ def _mapped(
         return problem
     if not pending:
         return None
-    rows = _Rows(model, before)
+    rows = _Rows(before)
     for key, element, attribute, numbers, written, path in pending:
         if key == "body/inertial" and rows.inertia_settings:
             return f"the compiler's {rows.inertia_settings} changes how inertials compile"
         if key in ("body/joint", "body/inertial") and rows.springdamper:
             return "a springdamper sets stiffness and damping from the joints' masses"
-        row = rows.row(key, element, path)
+        row = rows.row(path)
         if row is None:
             return f"cannot tell which compiled {key} the element at {path} is"
         field = FIELDS[key][attribute]
@@ -259,36 +259,32 @@ def _elements(element: AnyElement) -> list[AnyElement]:
 class _Rows:
     """Which compiled row each element of ``before`` is: MuJoCo's numbering, read once."""
 
-    def __init__(self, model: mujoco.MjModel, before: Mujoco) -> None:
+    def __init__(self, before: Mujoco) -> None:
         import mujoco
 
-        self.model = model
         self.before = before
-        self._by_path: dict[tuple[int, ...], int] | None = None
         settings = [
             name
             for section in _sections(before, "compiler")
             for name in section
-            if name in _INERTIA_SETTINGS or name == "settotalmass"
+            if name in _INERTIA_SETTINGS
         ]
+        #: The compiler settings that change how inertials compile, as a list for people.
         self.inertia_settings = ", ".join(settings)
         #: Whether MuJoCo is older than 4.0 (see :data:`_BEFORE_4`).
         self.before_4 = int(mujoco.__version__.split(".")[0]) < 4
-        #: Whether some joint or class has a ``springdamper`` (it sets stiffness and damping).
-        self.springdamper = any(
+
+    @functools.cached_property
+    def springdamper(self) -> bool:
+        """Whether some joint or class has a ``springdamper`` (it sets stiffness and damping)."""
+        return any(
             get_attribute(element, "springdamper") is not None
-            for element, _, _ in keyed_walk(before)
+            for element, _, _ in keyed_walk(self.before)
         )
 
-    def row(self, key: str, element: AnyElement, path: tuple[int, ...]) -> int | None:
-        if key.startswith("actuator/") or key in _OBJECTS:
-            return self._numbered().get(path)
-        return None
-
-    def _numbered(self) -> dict[tuple[int, ...], int]:
-        if self._by_path is None:
-            self._by_path = _numbering(self.before)
-        return self._by_path
+    def row(self, path: tuple[int, ...]) -> int | None:
+        """The compiled row of the geom, joint, inertial (its body) or actuator at ``path``."""
+        return _numbering(self.before).get(path)
 
 
 _NUMBERINGS: dict[int, tuple[Mujoco, dict[tuple[int, ...], int]]] = {}
