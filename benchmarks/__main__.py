@@ -77,7 +77,7 @@ def _cases(tiny: bool) -> list[Case]:
         *synthetic_cases(50 if tiny else 5000),
         *object_cases((2, 5) if tiny else (10, 100, 1000)),
         *import_cases(),
-        *compile_cases(list(corpus[:12] if tiny else corpus)),
+        *compile_cases(list(corpus), 3 if tiny else None),
         *variant_cases(tiny),
         *sweep_cases(tiny),
     ]

@@ -3,7 +3,7 @@
 Each of robosuite's 19 manipulation environments is built twice on the same seed,
 once as robosuite ships it and once with every object class (and
 ``CustomMaterial``) the modules that build its objects import from robosuite
-replaced by this library's twin; both are reset and stepped with the same 200
+replaced by this library's twin; both are reset and stepped with the same 100
 seeded random actions. The compiled models, the model XML, every observation,
 every reward, every ``done`` flag and every success check must be identical. An
 environment that used an object class this library lacks fails here, since every
@@ -98,7 +98,7 @@ TASKS: dict[str, Task] = {
     ),
 }
 #: How many random actions each run takes.
-STEPS = 200
+STEPS = 100
 #: The environment settings: no rendering, staged rewards (they check grasps).
 SETTINGS = {
     "has_renderer": False,
@@ -171,7 +171,7 @@ def test_every_robosuite_environment_is_run() -> None:
 def test_task_runs_identically_with_this_librarys_objects(
     task: str, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    """Same compiled model, XML, observations, rewards and done flags over 200 random steps."""
+    """Same compiled model, XML, observations, rewards and done flags over 100 random steps."""
     import importlib
 
     theirs = _record(task, seed=3)

@@ -25,7 +25,7 @@ from mjcf_model.strategies import models
 from mjcf_model.tools.compare import model_differences
 from mjcf_model.values import numbers_of
 from serializers import load, loads
-from tests.conftest import MUJOCO_VERSION, compiling_corpus, corpus_id
+from tests.conftest import MUJOCO_VERSION, PER_CLASS, compiling_corpus, corpus_id
 
 #: MuJoCo before 4.0 patches fewer fields (``patching._BEFORE_4``).
 OLD = MUJOCO_VERSION < (4, 0)
@@ -71,7 +71,7 @@ def _patched_and_expected(before: Mujoco, after: Mujoco) -> tuple[Any, Any, list
     return result, compiled(after), reasons
 
 
-@settings(suppress_health_check=[HealthCheck.too_slow])
+@settings(PER_CLASS, suppress_health_check=[HealthCheck.too_slow])
 @given(model=models(), seed=st.integers(0, 2**32 - 1))
 def test_patched_drawn_models_are_compiled_variants(model: Mujoco, seed: int) -> None:
     """Any drawn model, every mapped value changed: the patched arrays are MuJoCo's."""
@@ -141,7 +141,7 @@ def test_readme_variant_example_runs_on_a_robot(monkeypatch: pytest.MonkeyPatch)
 
 
 def test_readme_process_pool_sweep_runs_as_a_script(tmp_path: Path) -> None:
-    """The README's process-pool sweep, saved as a script, runs on robosuite's Panda."""
+    """The README's process-pool sweep, saved as a script (8 seeds), runs on robosuite's Panda."""
     import subprocess
     import sys
     from importlib import metadata
@@ -154,11 +154,27 @@ def test_readme_process_pool_sweep_runs_as_a_script(tmp_path: Path) -> None:
     code = section.split("```python\n")[2].split("```", 1)[0]
     panda = Path(robosuite.__file__).parent / "models/assets/robots/panda/robot.xml"
     script = tmp_path / "sweep.py"
-    script.write_text(code.replace('"robot.xml"', repr(str(panda))))
+    assert "range(100)" in code
+    script.write_text(
+        code.replace('"robot.xml"', repr(str(panda))).replace("range(100)", "range(8)")
+    )
+    import os
+
+    import mjcf_model
+    import serializers
+
+    # The script imports the same library this test does (installed, or the checkout).
+    roots = {str(Path(m.__file__).parents[1]) for m in (mjcf_model, serializers)}
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(sorted(roots))}
     done = subprocess.run(
-        [sys.executable, str(script)], capture_output=True, text=True, check=False, timeout=600
+        [sys.executable, str(script)],
+        capture_output=True,
+        text=True,
+        check=False,
+        timeout=600,
+        env=env,
     )
     assert done.returncode == 0, done.stderr[-2000:]
-    assert done.stdout.startswith("100 rollouts, first joint from ")
+    assert done.stdout.startswith("8 rollouts, second joint from ")
     low, high = (float(v) for v in done.stdout.split("from ")[1].split(" to "))
     assert low < high  # the variants differ
