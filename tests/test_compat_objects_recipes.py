@@ -25,6 +25,7 @@ from mjcf_model import CustomMaterial, MjcfValueError
 from mjcf_model.compat import objects as ours
 from mjcf_model.tools.compare import model_differences
 from tests.conftest import PER_CLASS
+from tests.test_compat_objects_composite_body import _world as composite_world
 from tests.test_compat_objects_composite_body import assert_same_composite
 from tests.test_compat_objects_support import assert_same_object, assert_same_value, text_of
 
@@ -318,12 +319,10 @@ def test_scaled_recipes_are_robosuites(cls: str) -> None:
 
 
 def _world(objects: list[Any]) -> MujocoWorldBase:
-    world = MujocoWorldBase()
+    """The objects in one world, half a metre apart (``_world`` of the composite tests)."""
     for i, obj in enumerate(objects):
         obj.get_obj().set("pos", f"{0.5 * i} 0 0.3")
-        world.worldbody.append(obj.get_obj())
-        world.merge_assets(obj)
-    return world
+    return composite_world(objects)
 
 
 def test_a_world_of_all_nine_compiles_and_steps_as_robosuites() -> None:

@@ -27,6 +27,11 @@ from mjcf_model.compat.objects.recipes import (
 __all__ = ["PotWithHandlesObject"]
 
 
+def _colour(given: Any, default: list[float]) -> Any:
+    """A given colour as an array (robosuite's), or ``default`` for none (or an empty one)."""
+    return default if given is None or len(given) == 0 else np.array(given)
+
+
 class PotWithHandlesObject(CompositeObject):
     """robosuite's ``PotWithHandlesObject``: an open box with a handle on each side (y).
 
@@ -77,13 +82,9 @@ class PotWithHandlesObject(CompositeObject):
         self.handle_friction = handle_friction
         self.density = density
         self.use_texture = use_texture
-        self.rgba_body = RED if rgba_body is None or len(rgba_body) == 0 else np.array(rgba_body)
-        self.rgba_handle_0 = (
-            GREEN if rgba_handle_0 is None or len(rgba_handle_0) == 0 else np.array(rgba_handle_0)
-        )
-        self.rgba_handle_1 = (
-            BLUE if rgba_handle_1 is None or len(rgba_handle_1) == 0 else np.array(rgba_handle_1)
-        )
+        self.rgba_body = _colour(rgba_body, RED)
+        self.rgba_handle_0 = _colour(rgba_handle_0, GREEN)
+        self.rgba_handle_1 = _colour(rgba_handle_1, BLUE)
         self.solid_handle = solid_handle
         self._handles: tuple[list[str], list[str]] = ([], [])
         self.pot_base = ["base"]
