@@ -19,7 +19,7 @@ from collections.abc import Iterator, Sequence
 from typing import Any
 
 from mjcf_model.nodes.base import AnyElement, Comment, Node, attribute_items
-from mjcf_model.nodes.layout import Layout, LayoutDetail, detail
+from mjcf_model.nodes.layout import Layout, LayoutDetail, detail, place_key, same_place
 from mjcf_model.values import Value, format_value
 from serializers.building import LATER_FIELDS, recorded_values
 from serializers.canonical import (
@@ -160,7 +160,8 @@ def _open(
     count = len(sources)
     if same_text and len(children) == count:
         for child, source in zip(children, sources, strict=True):
-            if getattr(child, "layout", child) is not source:
+            token = getattr(child, "layout", child)
+            if token is not source and not same_place(token, source):
                 break
         else:
             out.append(start)
@@ -205,7 +206,7 @@ def _changed_content(
     gaps = cut.gaps
     sources = cut.sources
     count = len(sources)
-    slots = {id(source): index for index, source in enumerate(sources)}
+    slots = {place_key(source): index for index, source in enumerate(sources)}
     comments = cut.comments
     added = _added_gap(gaps, count, indent, style)
     pieces: list[Any] = []  # a gap, then each child and the gap after it
@@ -213,7 +214,7 @@ def _changed_content(
     last = -1
     for child in children:
         token = getattr(child, "layout", child)
-        index = slots.get(id(token), -1) if token is not None else -1
+        index = slots.get(place_key(token), -1) if token is not None else -1
         if index > last:
             if last < 0 or index == last + 1:
                 at = 0 if last < 0 else index

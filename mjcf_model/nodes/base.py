@@ -139,6 +139,19 @@ class Element(Node):
     #: form); ``None`` for an element built in code.
     layout: Layout | None = attrs.field(default=None, eq=False, repr=False)
 
+    def __getstate__(self) -> dict[str, Any]:
+        """The fields to pickle: the layout first, so that it cuts the text its children share.
+
+        A pickled element carries the piece of its file's text it stands in (see
+        :meth:`Layout.__reduce__ <mjcf_model.nodes.layout.Layout.__reduce__>`), and of the
+        children it was read with only what the writer needs when they were replaced.
+        """
+        state = self.__dict__
+        layout = state.get("layout")
+        if layout is None:
+            return state
+        return {"layout": layout.without_old_children(self.children), **state}
+
     def _of_type(self, cls: type[_T]) -> tuple[_T, ...]:
         return tuple(c for c in self.children if isinstance(c, cls))
 

@@ -107,6 +107,10 @@ def fill_node(
             data.pop(name, None)
         else:
             data[name] = value
+    if "children" in values and "layout" not in values:
+        layout = data.get("layout")
+        if layout is not None:  # the nodes it replaced are not kept alive by the layout
+            data["layout"] = layout.without_old_children(data.get("children", ()))
     if base is None and info.required and not info.required <= data.keys():
         raise TypeError(f"{cls.__name__} needs {', '.join(sorted(info.required - data.keys()))}")
     _set_dict(node, "__dict__", data)

@@ -20,10 +20,21 @@ element's own, and each child with the child that stood there.
 
 from __future__ import annotations
 
+import contextlib
+import weakref
 from collections.abc import Callable, Set
 from typing import Any, NamedTuple
+from xml.parsers import expat
 
-__all__ = ["DocumentText", "Layout", "LayoutDetail", "SourceText", "detail"]
+__all__ = [
+    "DocumentText",
+    "Layout",
+    "LayoutDetail",
+    "SourceText",
+    "detail",
+    "place_key",
+    "same_place",
+]
 
 
 class SourceText:
@@ -37,9 +48,21 @@ class SourceText:
 
     """
 
-    __slots__ = ("details", "document", "filename", "raw", "root_begin", "text", "values")
+    __slots__ = (
+        "__weakref__",
+        "details",
+        "document",
+        "filename",
+        "first_line",
+        "pieces",
+        "raw",
+        "read_attributes",
+        "root_begin",
+        "text",
+        "values",
+    )
 
-    def __init__(self, raw: bytes, filename: str | None = None) -> None:
+    def __init__(self, raw: bytes, filename: str | None = None, first_line: int = 0) -> None:
         #: The file the text was read from, as the reader was given it (``"<string>"`` for
         #: text), or ``None``: where errors about its elements point.
         self.filename = filename
@@ -55,17 +78,85 @@ class SourceText:
         #: Per typed class, each ``(name, text)`` attribute the reader read, as the
         #: field and value it gave the node (shared with the reader while it reads).
         self.values: dict[type, dict[tuple[str, str], tuple[str, Any]]] = {}
+        #: How many lines of the file stand before the text (for a piece of a file's text).
+        self.first_line = first_line
+        #: The pieces of the text being pickled now: ``(piece, begin, after)``, the piece
+        #: held weakly (the pickler's memo holds it while it pickles; see :meth:`piece`).
+        self.pieces: list[tuple[weakref.ref[SourceText], int, int]] = []
+        #: For an unpickled piece, each element's attribute list by its offset, read again
+        #: from the text when first asked for (see :meth:`attributes_at`).
+        self.read_attributes: dict[int, list[str]] | None = None
 
     def __getstate__(self) -> dict[str, Any]:
-        """Pickle without the details (they may hold getters): they are worked out again."""
-        state = {name: getattr(self, name) for name in self.__slots__}
-        state["details"] = {}
+        """Pickle the text, not the caches (details may hold getters): they are worked out again."""
+        state = {name: getattr(self, name) for name in self.__slots__ if name != "__weakref__"}
+        state["details"], state["values"], state["pieces"] = {}, {}, []
+        state["read_attributes"] = None
         return state
 
     def __setstate__(self, state: dict[str, Any]) -> None:
-        self.filename = None  # pickled before files were recorded
+        self.filename, self.first_line = None, 0  # pickled before they were recorded
+        self.pieces, self.read_attributes = [], None
         for name, value in state.items():
             setattr(self, name, value)
+
+    def piece(self, begin: int, after: int) -> tuple[SourceText, int]:
+        r"""The text from ``begin`` to ``after`` as a text of its own, and where it begins here.
+
+        What a pickled element carries instead of its whole file: the piece cut for the
+        outermost element being pickled serves every element inside it, as long as the
+        pickler holds it (an element pickles its layout before its children). The
+        root element's piece is the whole text, with what stands around the root.
+
+        Example:
+            >>> text = SourceText(b"<a>\n  <b/>\n</a>", "a.xml")
+            >>> piece, base = text.piece(6, 10)
+            >>> piece.slice(0, 4), base, piece.line(0), text.piece(7, 9)[0] is piece
+            ('<b/>', 6, 2, True)
+
+        """
+        for held, start, stop in self.pieces:
+            cut = held()
+            if cut is not None and start <= begin and after <= stop:
+                return cut, start
+        self.pieces = [entry for entry in self.pieces if entry[0]() is not None]
+        if begin == self.root_begin:
+            cut, begin, after = SourceText(b"", self.filename, self.first_line), 0, -1
+            cut.raw, cut.text = self.raw, self.text
+            cut.document, cut.root_begin = self.document, self.root_begin
+        else:
+            raw = self.raw[begin:after] if self.raw else self.text[begin:after].encode("ascii")
+            lines = self.line(begin) - 1
+            cut = SourceText(raw, self.filename, lines)
+        self.pieces.append((weakref.ref(cut), begin, after if after >= 0 else 1 << 62))
+        return cut, begin
+
+    def attributes_at(self, offset: int) -> list[str]:
+        r"""The attribute names and texts of the start tag at byte ``offset``, as expat reads them.
+
+        A pickled layout leaves them out (they repeat its text); the first one unpickled
+        reads the whole piece once.
+
+        Example:
+            >>> SourceText(b'<a x="1">\n  <b y="&lt;2"/></a>').attributes_at(12)
+            ['y', '<2']
+
+        """
+        if self.read_attributes is None:
+            found: dict[int, list[str]] = {}
+            parser = expat.ParserCreate(encoding="utf-8")
+            parser.ordered_attributes = True
+
+            def start(name: str, attributes: list[str]) -> None:
+                found[parser.CurrentByteIndex + begin] = attributes
+
+            parser.StartElementHandler = start
+            begin = max(self.root_begin, 0)
+            whole = self.raw or self.text.encode("ascii")
+            with contextlib.suppress(expat.ExpatError):  # after a root: MuJoCo ignores it too
+                parser.Parse(whole[begin:], True)
+            self.read_attributes = found
+        return self.read_attributes[offset]
 
     def slice(self, begin: int, after: int) -> str:
         """The text between two byte offsets."""
@@ -84,8 +175,8 @@ class SourceText:
 
         """
         if self.raw:
-            return self.raw.count(b"\n", 0, offset) + 1
-        return self.text.count("\n", 0, offset) + 1
+            return self.first_line + self.raw.count(b"\n", 0, offset) + 1
+        return self.first_line + self.text.count("\n", 0, offset) + 1
 
     def end_tag_begin(self, begin: int, after: int) -> int:
         """Where the end tag of the element between two offsets begins."""
@@ -174,6 +265,98 @@ class Layout(NamedTuple):
 
     def __repr__(self) -> str:
         return f"Layout({self.whole()[:40]!r}, ...)"
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickle with the piece of the file's text the element stands in, not the whole file.
+
+        Example:
+            >>> import pickle
+            >>> origin = SourceText(b"<a>" + b" " * 1000 + b"<b/></a>")
+            >>> b = Layout(origin, "b", 1003, 1007, 1007, [], (), None)
+            >>> copy = pickle.loads(pickle.dumps(b))
+            >>> copy.whole(), len(copy.origin.text)
+            ('<b/>', 4)
+
+        """
+        piece, base = self.origin.piece(self.begin, self.after)
+        comments = self.comments
+        if comments is not None and base:
+            comments = {index: (a - base, b - base) for index, (a, b) in comments.items()}
+        rest = (self.children, self.text, comments)
+        return (
+            _unpickled,
+            (piece, self.tag, self.begin - base, self.stop - base, self.after - base, *rest),
+        )
+
+    def without_old_children(self, children: tuple[Any, ...]) -> Layout:
+        """The layout for an element that now holds ``children``: keeps no replaced child.
+
+        The writer needs of the children an element was read with only their layouts
+        (and comments): an element that holds other children now keeps those in their
+        place, so that neither memory nor a pickle keeps the nodes it replaced.
+
+        Example:
+            >>> from mjcf_model import Geom
+            >>> geom = Geom(layout=Layout(SourceText(b"<geom/>"), "geom", 0, 7, 7, [], (), None))
+            >>> layout = Layout(SourceText(b"<a><geom/></a>"), "a", 0, 3, 14, [], (geom,), None)
+            >>> layout.without_old_children(()).children == (geom.layout,)
+            True
+
+        """
+        if children is self.children:
+            return self
+        return self._replace(children=tuple([_place(child) for child in self.children]))
+
+
+def _unpickled(
+    origin: SourceText,
+    tag: str,
+    begin: int,
+    stop: int,
+    after: int,
+    children: tuple[Any, ...],
+    text: str | None,
+    comments: dict[int, tuple[int, int]] | None,
+) -> Layout:
+    """A layout as :meth:`Layout.__reduce__` pickled it: its attributes read again."""
+    attributes = origin.attributes_at(begin)
+    return Layout(origin, tag, begin, stop, after, attributes, children, text, comments)
+
+
+def _place(child: Any) -> Any:
+    """What a child slot needs of ``child``: its layout without its own children, or the comment."""
+    source = getattr(child, "layout", child)
+    if type(source) is Layout and source.children:
+        return source._replace(children=())
+    return source
+
+
+def place_key(source: Any) -> object:
+    """What tells one child slot's source from another: an element's place in its text.
+
+    A layout made again for the same element (with :meth:`Layout.without_old_children`)
+    stands in the same place; a comment node is its own key.
+
+    Example:
+        >>> origin = SourceText(b"<a><b/></a>")
+        >>> b = Layout(origin, "b", 3, 7, 7, [], (), None)
+        >>> place_key(b) == place_key(b.without_old_children(("changed",)))
+        True
+
+    """
+    if type(source) is Layout:
+        return (id(source.origin), source.begin)
+    return id(source)
+
+
+def same_place(token: Any, source: Any) -> bool:
+    """Whether ``token`` (a child's layout, or a comment) stands where ``source`` stood."""
+    return (
+        type(token) is Layout
+        and type(source) is Layout
+        and token.origin is source.origin
+        and token.begin == source.begin
+    )
 
 
 def detail(layout: Layout) -> LayoutDetail:
