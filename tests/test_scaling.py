@@ -15,6 +15,7 @@ from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.strategies import models
+from mjcf_model.tools.compare import model_differences
 from mjcf_model.transforms.scaling.pieces import NO_LENGTHS
 from mjcf_model.transforms.scaling.rules import RULES, UNSCALED_BY_DECISION
 from mjcf_model.transforms.scaling.scaled import scaled
@@ -154,6 +155,29 @@ def test_site_without_size_gets_mujocos_default_scaled() -> None:
     model = loads('<mujoco><worldbody><site name="s"/></worldbody></mujoco>')
     changed = mujoco.MjModel.from_xml_string(dumps(scaled(model, 2)))
     assert np.allclose(changed.site_size[0], [0.01, 0.01, 0.01])
+
+
+_UNIFORM = """<mujoco><worldbody><body pos="0 0 {pos}">
+<geom type="sphere" size="{radius}" friction="1 {torsion} {rolling}"/>
+<camera name="c" ipd="{ipd}"/><site name="s" size="{site} {site} {site}"/>
+</body></worldbody></mujoco>"""
+
+
+@pytest.mark.parametrize("factor", [0.8, 0.7, 1.17, 0.1])
+def test_a_uniform_factor_scales_lengths_without_a_direction_by_exactly_itself(
+    factor: float,
+) -> None:
+    """A radius, an ipd, a torsional friction: times the factor, not times the mean of three.
+
+    ``(0.8 + 0.8 + 0.8) / 3`` is ``0.8000000000000002``; MuJoCo compiles the products
+    a user writes by hand.
+    """
+    values = {"pos": 1.0, "radius": 0.05, "torsion": 0.005, "rolling": 0.0001, "ipd": 0.068}
+    values["site"] = 0.005
+    model = loads(_UNIFORM.format(**values))
+    by_hand = _UNIFORM.format(**{name: repr(value * factor) for name, value in values.items()})
+    expected = mujoco.MjModel.from_xml_string(by_hand)
+    assert model_differences(compiled(scaled(model, factor, mass="volume")), expected) == []
 
 
 def test_keyframe_qpos_scales_only_its_lengths() -> None:
