@@ -16,6 +16,7 @@ from pathlib import Path
 
 from benchmarks.harness import Case, Row, run_case
 from benchmarks.inputs import compiling_corpus
+from benchmarks.sizes import sizes
 from benchmarks.targets import targets
 
 _RESULTS = Path(__file__).with_name("RESULTS.md")
@@ -97,6 +98,8 @@ def main(argv: list[str] | None = None) -> int:
         case_rows = run_case(case, repeat)
         rows.extend(case_rows)
         print(_table(case_rows).split("\n", 2)[2], flush=True)
+    measured_sizes = sizes(compiling_corpus(), args.tiny)
+    print(measured_sizes, flush=True)
     command = "python -m benchmarks " + " ".join(argv if argv is not None else sys.argv[1:])
     took = time.perf_counter() - started
     text = (
@@ -104,7 +107,8 @@ def main(argv: list[str] | None = None) -> int:
         f"Machine: {_machine()}.\n\n"
         f"Command: `{command.strip()}` ({repeat} run(s) per contender; the median is "
         f"shown; ratio = contender's median / mjcf-model's). Took {took:.0f} s.\n\n"
-        "## Targets\n\n" + targets(rows) + "\n\n## All cases\n\n" + _table(rows) + "\n"
+        "## Targets\n\n" + targets(rows) + "\n\n## Sizes\n\n" + measured_sizes + "\n\n"
+        "## All cases\n\n" + _table(rows) + "\n"
     )
     args.output.write_text(text, encoding="utf-8")
     print(f"written to {args.output}")

@@ -6,6 +6,8 @@ seeded draws (checked before timing: both compile to the same model):
 * physical: every geom gets a random ``rgba`` and sliding friction, every body
   with an explicit inertial a random mass (times 0.8 to 1.2); made and compiled,
   and made and patched into the compiled model (:func:`mjcf_model.patched`);
+* scaled: every length times a factor drawn from 0.8 to 1.2, masses by volume
+  (:func:`mjcf_model.scaled`; the spec side scales every length itself);
 * compiling: ``compiled(load(path))`` against MuJoCo loading the file.
 
 ``MjSpec`` parses the file once and copies the spec per variant (``spec.copy()``);
@@ -18,6 +20,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
+import mujoco
 import numpy as np
 
 from benchmarks.harness import OURS, Case, Contender
@@ -28,8 +31,12 @@ __all__ = [
     "compile_cases",
     "rollout",
     "sweep_cases",
+    "length_coordinates",
     "our_physical_variant",
+    "scaled_differences",
     "spec_physical_variant",
+    "spec_scaled_variant",
+    "spec_with_skins_inline",
     "variant_cases",
 ]
 
@@ -135,6 +142,127 @@ def our_physical_variant(model: Any, rng: np.random.Generator) -> Any:
     return with_children(model, [rebuilt(c) if c is worldbody else c for c in model.children])
 
 
+def spec_with_skins_inline(spec: Any) -> Any:
+    """``spec`` with each skin read from a file written inline, as compiled once.
+
+    A skin file's vertices and bind positions are lengths; a spec cannot scale what it
+    has not read, so the loop's setup (done once, not timed) writes them into the spec,
+    as :func:`mjcf_model.scaled` writes a loaded model's skin files inline.
+    """
+    spec = spec.copy()
+    model = spec.compile()
+    for index, skin in enumerate(spec.skins):
+        if not skin.file:
+            continue
+        vert, face = model.skin_vertadr[index], model.skin_faceadr[index]
+        skin.file = ""
+        skin.vert = model.skin_vert[vert : vert + model.skin_vertnum[index]].ravel().tolist()
+        skin.face = model.skin_face[face : face + model.skin_facenum[index]].ravel().tolist()
+        texcoord = model.skin_texcoordadr[index]
+        if texcoord >= 0:
+            count = model.skin_vertnum[index]
+            skin.texcoord = model.skin_texcoord[texcoord : texcoord + count].ravel().tolist()
+        first, count = model.skin_boneadr[index], model.skin_bonenum[index]
+        bones = range(first, first + count)
+        body_ids = model.skin_bonebodyid[first : first + count]
+        skin.bodyname = [mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_BODY, b) for b in body_ids]
+        skin.bindpos = model.skin_bonebindpos[bones].ravel().tolist()
+        skin.bindquat = model.skin_bonebindquat[bones].ravel().tolist()
+        ids, weights = [], []
+        for bone in bones:
+            at, n = model.skin_bonevertadr[bone], model.skin_bonevertnum[bone]
+            ids.append(model.skin_bonevertid[at : at + n].tolist())
+            weights.append(model.skin_bonevertweight[at : at + n].tolist())
+        skin.vertid, skin.vertweight = ids, weights
+    return spec
+
+
+def length_coordinates(model: Any) -> tuple[int, ...]:
+    """Where ``qpos`` holds lengths: free joints' positions and slide joints."""
+    found: list[int] = []
+    for joint in range(model.njnt):
+        at, kind = int(model.jnt_qposadr[joint]), model.jnt_type[joint]
+        if kind == mujoco.mjtJoint.mjJNT_FREE:
+            found += (at, at + 1, at + 2)
+        elif kind == mujoco.mjtJoint.mjJNT_SLIDE:
+            found.append(at)
+    return tuple(found)
+
+
+def spec_scaled_variant(spec: Any, factor: float, lengths: tuple[int, ...] = ()) -> Any:
+    """A copy of ``spec`` with every length times ``factor`` and masses by volume.
+
+    As careful as :func:`mjcf_model.scaled`: positions of every kind of element and
+    inertial, geom and site sizes and ``fromto``, mesh ``scale``, skin vertices, camera
+    ``ipd``, light ``range`` and ``bulbradius``, slide joints' ranges, references and
+    margins, the torsional and rolling friction of geoms (lengths in MuJoCo), contact
+    margins and gaps, spatial tendons, explicit masses and inertias, equality anchors,
+    keyframe mocap positions and the ``qpos`` coordinates at ``lengths`` (see
+    :func:`length_coordinates`), the statistics. ``MjSpec`` gives every element its
+    default classes' values when it parses, so no class needs scaling.
+    """
+    variant = spec.copy()
+    cube = factor * factor * factor  # the volume, as the library multiplies it
+    square = factor * factor
+    inertia = cube * (square + square) / 2
+    for body in variant.bodies:
+        body.pos = body.pos * factor
+        if body.explicitinertial:
+            body.ipos, body.mass = body.ipos * factor, body.mass * cube
+            body.inertia, body.fullinertia = body.inertia * inertia, body.fullinertia * inertia
+    for frame in variant.frames:
+        frame.pos = frame.pos * factor
+    for geom in variant.geoms:
+        geom.pos, geom.size, geom.fromto = (
+            geom.pos * factor,
+            geom.size * factor,
+            geom.fromto * factor,
+        )
+        geom.friction = geom.friction * [1.0, factor, factor]
+        geom.margin, geom.gap = geom.margin * factor, geom.gap * factor
+        if geom.mass > 0:
+            geom.mass = geom.mass * cube
+    for site in variant.sites:
+        site.pos, site.size, site.fromto = (
+            site.pos * factor,
+            site.size * factor,
+            site.fromto * factor,
+        )
+    for joint in variant.joints:
+        joint.pos = joint.pos * factor
+        if joint.type == mujoco.mjtJoint.mjJNT_SLIDE:
+            joint.range, joint.ref = joint.range * factor, joint.ref * factor
+            joint.springref, joint.margin = joint.springref * factor, joint.margin * factor
+    for camera in variant.cameras:
+        camera.pos, camera.ipd = camera.pos * factor, camera.ipd * factor
+    for light in variant.lights:
+        light.pos, light.range = light.pos * factor, light.range * factor
+        light.bulbradius = light.bulbradius * factor
+    for mesh in variant.meshes:
+        mesh.scale = mesh.scale * factor
+    for skin in variant.skins:
+        skin.vert = np.multiply(skin.vert, factor).tolist()
+        skin.bindpos = np.multiply(skin.bindpos, factor).tolist()
+    for tendon in variant.tendons:
+        if all(wrap.type != mujoco.mjtWrap.mjWRAP_JOINT for wrap in tendon.path):
+            tendon.range, tendon.width = tendon.range * factor, tendon.width * factor
+    for key in variant.keys:
+        key.mpos = np.multiply(key.mpos, factor).tolist()
+        if len(key.qpos) and lengths:
+            qpos = np.array(key.qpos)
+            qpos[list(lengths)] *= factor
+            key.qpos = qpos.tolist()
+    stat = variant.stat
+    stat.center, stat.extent, stat.meansize = (
+        stat.center * factor,
+        stat.extent * factor,
+        (stat.meansize * factor),
+    )
+    stat.meanmass, stat.meaninertia = stat.meanmass * cube, stat.meaninertia * inertia
+    variant.option.o_margin = variant.option.o_margin * factor
+    return variant
+
+
 #: The models of the variant loop: robosuite's mesh robots, dm_control's mesh-heavy dog
 #: and mesh-free humanoid.
 VARIANT_MODELS = (
@@ -198,15 +326,74 @@ def _variant_case(path: Path) -> Case:
     )
 
 
+def scaled_differences(ours: Any, theirs: Any) -> list[str]:
+    """The fields two scaled variants differ in, float32 arrays compared to float32 precision.
+
+    A spec holds some values in float32 (a light's ``bulbradius``; a skin file's data,
+    which the spec side takes from a compiled model, where MuJoCo normalised the bone
+    weights once already): scaled there, they round differently from the library's
+    float64 product of the file's text, in the last float32 bits (within 4 ulps
+    here). Every float64 array is compared exactly.
+    """
+    from mjcf_model.tools.compare import model_differences, path_fields
+
+    def close(name: str) -> bool:
+        left, right = getattr(ours, name, None), getattr(theirs, name, None)
+        if not isinstance(left, np.ndarray) or left.dtype != np.float32:
+            return False
+        return bool(np.allclose(left, right, rtol=4 * np.finfo(np.float32).eps, atol=0))
+
+    differences = model_differences(ours, theirs, ignore=path_fields())
+    return [name for name in differences if not close(name)]
+
+
+def _scaled_case(path: Path) -> Case:
+    from mjcf_model import compiled, scaled
+    from serializers import load
+
+    model = load(path, inline_includes=True)
+    spec = spec_with_skins_inline(mujoco.MjSpec.from_file(str(path)))
+    lengths = length_coordinates(spec.compile())
+    mine = compiled(scaled(model, 1.1, mass="volume"))
+    differences = scaled_differences(mine, spec_scaled_variant(spec, 1.1, lengths).compile())
+    if differences:
+        raise AssertionError(f"{path.name}: the two scaled variants differ in {differences}")
+
+    def ours() -> None:
+        for factor in np.random.default_rng(1).uniform(0.8, 1.2, VARIANTS):
+            compiled(scaled(model, float(factor), mass="volume"))
+
+    def mjspec() -> None:
+        for factor in np.random.default_rng(1).uniform(0.8, 1.2, VARIANTS):
+            spec_scaled_variant(spec, float(factor), lengths).compile()
+
+    return Case(
+        f"scaled variants: {path.parent.name}/{path.name}",
+        [
+            Contender(
+                OURS,
+                _from_an_empty_cache(ours),
+                note='scaled(model, factor, mass="volume"), then compiled()',
+            ),
+            Contender(
+                "MjSpec",
+                _from_an_empty_cache(mjspec),
+                note="spec.copy(), every length scaled, compile()",
+            ),
+        ],
+        f"{VARIANTS} variants (uniform factor 0.8 to 1.2, masses by volume)",
+    )
+
+
 def variant_cases(tiny: bool = False) -> list[Case]:
-    """One physical-variant case per model of :data:`VARIANT_MODELS` (``tiny``: the last)."""
+    """Per model of :data:`VARIANT_MODELS` (``tiny``: the last), the physical and scaled loops."""
     from benchmarks.inputs import package_dir
 
     cases = []
     for package, relative in VARIANT_MODELS[-1:] if tiny else VARIANT_MODELS:
         folder = package_dir(package)
         if folder is not None:
-            cases.append(_variant_case(folder / relative))
+            cases += (_variant_case(folder / relative), _scaled_case(folder / relative))
     return cases
 
 

@@ -11,7 +11,15 @@ import mujoco
 import numpy as np
 import pytest
 
-from benchmarks.cases_variants import VARIANT_MODELS, our_physical_variant, spec_physical_variant
+from benchmarks.cases_variants import (
+    VARIANT_MODELS,
+    length_coordinates,
+    our_physical_variant,
+    scaled_differences,
+    spec_physical_variant,
+    spec_scaled_variant,
+    spec_with_skins_inline,
+)
 from benchmarks.etree_path import etree_inlined, robosuite_scaled
 from benchmarks.harness import OURS, Case, Contender, Row, run_case
 from benchmarks.inputs import package_dir, synthetic_xml
@@ -98,10 +106,28 @@ def test_tiny_run_writes_every_case_with_every_contender(tiny_results: str) -> N
 
 def test_every_target_finds_its_rows(tiny_results: str) -> None:
     """Each target line of the tiny run is measured: its case and contender names exist."""
-    table = tiny_results.split("## Targets")[1].split("## All cases")[0]
+    table = tiny_results.split("## Targets")[1].split("## Sizes")[0]
     lines = [line for line in table.splitlines() if line.startswith("| ") and "---" not in line]
     assert len(lines) > 15 and "not measured" not in table, table
     assert all(line.endswith(("| met |", "| MISSED |")) for line in lines[1:]), table
+
+
+def test_every_size_is_measured_against_its_target(tiny_results: str) -> None:
+    """The size table: the pickled subtrees, the prefixed models' memory, the big number list."""
+    table = tiny_results.split("## Sizes")[1].split("## All cases")[0]
+    lines = [line for line in table.splitlines() if line.startswith("| ") and "---" not in line]
+    measures = [line.split(" | ")[0] for line in lines[1:]]
+    assert [m.split(":")[0] for m in measures] == [
+        "| pickled Panda geom",
+        "| pickled Panda body",
+        "| pickled Panda model",
+        "| pickled corpus elements within 2x their text + 1,024 bytes",
+        "| 20 loaded-then-prefixed corpus models",
+        "| load a 1 MB number list",
+        "| load a 1 MB number list",
+    ], table
+    ends = ("| met |", "| MISSED |", "| measured |")
+    assert all(line.endswith(ends) for line in lines[1:]), table
 
 
 @pytest.mark.parametrize(("case", "peer"), _ISSUE_12_ROWS)
@@ -188,3 +214,20 @@ def test_both_physical_variant_rows_make_the_same_variants(model: tuple[str, str
     changed = set(model_differences(theirs, original))
     assert {"geom_rgba", "geom_friction"} <= changed
     assert ("body_mass" in changed) == any(body.explicitinertial for body in spec.bodies)
+
+
+@pytest.mark.parametrize("model", VARIANT_MODELS, ids=lambda m: m[1].rsplit("/", 2)[-2])
+def test_both_scaled_variant_rows_make_the_same_variants(model: tuple[str, str]) -> None:
+    """The spec side scales every length ``scaled`` does: both compile to the same model."""
+    package, relative = model
+    folder = package_dir(package)
+    assert folder is not None
+    path = folder / relative
+    spec = spec_with_skins_inline(mujoco.MjSpec.from_file(str(path)))
+    original = spec.compile()
+    loaded = load(path, inline_includes=True)
+    for factor in (0.8, 1.17):
+        theirs = spec_scaled_variant(spec, factor, length_coordinates(original)).compile()
+        assert scaled_differences(compiled(scaled(loaded, factor, mass="volume")), theirs) == []
+    changed = set(model_differences(theirs, original, ignore=path_fields()))
+    assert {"body_pos", "geom_size", "body_subtreemass"} <= changed
