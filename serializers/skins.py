@@ -25,6 +25,7 @@ weights (float32).
 
 from __future__ import annotations
 
+import decimal
 import os
 from collections.abc import Sequence
 from pathlib import Path
@@ -36,12 +37,19 @@ from numpy.typing import NDArray
 from mjcf_model.errors import MjcfAssetError, MjcfSyntaxError
 from mjcf_model.files.provenance import file_references, file_stem
 from mjcf_model.nodes.asset import Bone, Skin
-from mjcf_model.nodes.base import AnyElement, get_attribute, with_attributes
+from mjcf_model.nodes.base import AnyElement, Comment, get_attribute, with_attributes
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tree.traversal import SKIN_KEYS, map_elements
+from mjcf_model.values import format_float
 
-__all__ = ["inline_skin_files", "read_skin", "skin_bone_names", "with_file_skins_inline"]
+__all__ = [
+    "inline_skin_files",
+    "read_skin",
+    "skin_bone_names",
+    "skin_file_bytes",
+    "with_file_skins_inline",
+]
 
 _NAME_BYTES = 40
 
@@ -139,6 +147,79 @@ def _read_skin(path: str | os.PathLike[str]) -> Skin:
         face=_ints(face) or None,
         children=bones,
     )
+
+
+def float32_as_written(values: Sequence[float]) -> NDArray[np.float32]:
+    """``values`` in float32 as MuJoCo reads their written text: the decimal rounded once.
+
+    Rounding a double to float32 rounds twice (text to double, double to float32);
+    MuJoCo rounds the text itself. The two differ where the double lies exactly
+    halfway between two float32 values and its shortest text does not: that text
+    is on one side of the midpoint, and decides.
+
+    Example:
+        >>> halfway = 0.31089024245738983  # between two float32 values, exactly
+        >>> float(np.float32(halfway)), float(float32_as_written([halfway])[0])
+        (0.310890257358551, 0.31089022755622864)
+
+    """
+    doubles = np.asarray(values, dtype=float)
+    rounded = doubles.astype(np.float32)
+    back = rounded.astype(float)
+    toward = np.where(doubles > back, np.float32(np.inf), np.float32(-np.inf))
+    other = np.nextafter(rounded, toward)
+    halfway = np.nonzero((doubles != back) & (doubles == (back + other.astype(float)) / 2))[0]
+    for index in halfway.tolist():
+        exact = decimal.Decimal(float(doubles[index]))
+        text = decimal.Decimal(format_float(float(doubles[index])))
+        if text != exact:  # the text's side of the midpoint, not the even neighbour
+            below, above = sorted((rounded[index], other[index]))
+            rounded[index] = above if text > exact else below
+    return rounded
+
+
+def skin_file_bytes(skin: Skin) -> bytes | None:
+    """An inline skin's vertices, faces and bones as a binary skin file (mirrors :func:`read_skin`).
+
+    ``None`` when the file cannot hold the skin exactly: a bone name of 40 bytes or
+    more, a bone without its four arrays, children other than bones and comments,
+    or counts that do not fit the format.
+
+    Example:
+        >>> from mjcf_model.nodes.asset import Bone, Skin
+        >>> bone = Bone(body="torso", bindpos=[0, 0, 0], bindquat=[1, 0, 0, 0],
+        ...             vertid=[0], vertweight=[1])
+        >>> data = skin_file_bytes(Skin(vertex=[0.5, 0, 0], children=[bone]))
+        >>> len(data), skin_file_bytes(Skin(vertex=[0.5, 0], children=[bone]))
+        (108, None)
+
+    """
+    vertex, texcoord, face = skin.vertex or (), skin.texcoord or (), skin.face or ()
+    if len(vertex) % 3 or len(face) % 3 or len(texcoord) not in (0, 2 * len(vertex) // 3):
+        return None
+    bones = [child for child in skin.children if not isinstance(child, Comment)]
+    header = np.array([len(vertex) // 3, len(texcoord) // 2, len(face) // 3, len(bones)], "<i4")
+    parts = [header.tobytes()]
+    parts += (_written(vertex), _written(texcoord))
+    parts.append(np.asarray(face, "<i4").tobytes())
+    for bone in bones:
+        if not isinstance(bone, Bone) or bone.extra or bone.children or bone.text:
+            return None
+        bindpos, bindquat = bone.bindpos or (), bone.bindquat or ()
+        vertid, vertweight = bone.vertid or (), bone.vertweight or ()
+        name = (bone.body or "").encode()
+        if len(name) >= _NAME_BYTES or b"\0" in name or len(bindpos) != 3 or len(bindquat) != 4:
+            return None
+        if not vertid or len(vertid) != len(vertweight):
+            return None
+        parts += (name.ljust(_NAME_BYTES, b"\0"), _written((*bindpos, *bindquat)))
+        parts += (np.array([len(vertid)], "<i4").tobytes(), np.asarray(vertid, "<i4").tobytes())
+        parts.append(_written(vertweight))
+    return b"".join(parts)
+
+
+def _written(values: Sequence[float]) -> bytes:
+    return float32_as_written(values).astype("<f4").tobytes()
 
 
 def skin_bone_names(path: str | os.PathLike[str]) -> tuple[str, ...]:

@@ -11,17 +11,23 @@ MuJoCo's asset dictionary.
 
 from __future__ import annotations
 
+import itertools
 from pathlib import Path
 
 import mujoco
 import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
-from mjcf_model import MjcfAssetError, compiled
+from benchmarks.inputs import package_dir
+from mjcf_model import MjcfAssetError, compiled, scaled
 from mjcf_model.files import compiling
 from mjcf_model.files.png import png_bytes
 from mjcf_model.tools.compare import model_differences, path_fields
-from serializers import load, loads
+from mjcf_model.values import format_float
+from serializers import dumps, load, loads
+from serializers.skins import float32_as_written
 
 
 def _tetrahedron(size: float) -> bytes:
@@ -177,3 +183,56 @@ def test_a_model_built_in_code_takes_its_files_from_assets_or_the_working_folder
     from_folder = compiled(model)
     expected = mujoco.MjModel.from_xml_string(text)
     assert model_differences(from_folder, expected, ignore=path_fields()) == []
+
+
+def _skin_model(vertices: list[float], name: str | None = "skin") -> str:
+    count = len(vertices) // 3
+    named = f' name="{name}"' if name else ""
+    numbers = " ".join(format_float(v) for v in vertices)
+    ids = " ".join(str(i) for i in range(count))
+    return (
+        '<mujoco><worldbody><body name="b"><geom size="0.1"/></body></worldbody><asset>'
+        f'<skin{named} vertex="{numbers}" face="0 1 2">'
+        f'<bone body="b" bindpos="0.1 0.2 0.3" bindquat="1 0 0 0" vertid="{ids}" '
+        f'vertweight="{" ".join(["1"] * count)}"/></skin></asset></mujoco>'
+    )
+
+
+#: Numbers MuJoCo reads as float32 on every release (3.9 refuses text that underflows it).
+_SKIN_NUMBERS = st.floats(-10, 10).filter(lambda v: v == 0 or abs(v) > 1e-30)
+
+
+@given(st.lists(_SKIN_NUMBERS, min_size=9, max_size=60))
+def test_float32_as_written_is_what_mujoco_reads_from_the_text(values: list[float]) -> None:
+    """MuJoCo rounds a skin's written numbers to float32 once; so does the skin file writer."""
+    values = values[: len(values) - len(values) % 3]
+    halfway = [(float(a) + float(b)) / 2 for a, b in itertools.pairwise(np.float32(values))]
+    vertices = (values + halfway)[: 3 * ((len(values) + len(halfway)) // 3)]
+    read = mujoco.MjModel.from_xml_string(_skin_model(vertices)).skin_vert.ravel()
+    assert read.tobytes() == float32_as_written(vertices).tobytes()
+
+
+@pytest.mark.parametrize("factor", [0.8, 1.1, 1.17])
+def test_a_big_inline_skin_compiles_from_a_file_to_the_model_its_text_compiles_to(
+    factor: float,
+) -> None:
+    """dm_control's dog, scaled: its skin goes to MuJoCo as a binary file, and nothing changes."""
+    path = package_dir("dm_control") / "suite/dog.xml"
+    model = scaled(load(path, inline_includes=True), factor, mass="volume")
+    bundle = compiling.bundled(model)
+    given, files = compiling._skins_as_files(bundle.model, bundle.files)
+    assert [name for name in files if name.endswith(".skn")] == ["mjcf-model-skin-0.skn"]
+    assert "skin_vert" not in dumps(given) and len(dumps(given)) < len(dumps(bundle.model)) / 10
+    from_text = mujoco.MjModel.from_xml_string(dumps(bundle.model), bundle.files)
+    assert model_differences(compiled(model), from_text, ignore=path_fields()) == []
+
+
+def test_an_unnamed_or_small_skin_stays_inline() -> None:
+    """MuJoCo would name an unnamed skin after its file; a small one is not worth a file."""
+    vertices = [float(i) / 7 for i in range(9000)]
+    for model in (loads(_skin_model(vertices, name=None)), loads(_skin_model(vertices[:30]))):
+        assert compiling._skins_as_files(model, {}) == (model, {})
+    named = loads(_skin_model(vertices))
+    assert compiling._skins_as_files(named, {})[0] != named
+    text = mujoco.MjModel.from_xml_string(_skin_model(vertices))
+    assert model_differences(compiled(named), text, ignore=path_fields()) == []

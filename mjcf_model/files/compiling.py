@@ -15,6 +15,7 @@ and asset ``<model>`` files are bundled with their own files.
 
 from __future__ import annotations
 
+import itertools
 import os
 from collections.abc import Mapping
 from pathlib import Path, PurePosixPath
@@ -25,8 +26,11 @@ import attrs
 from mjcf_model.errors import MjcfAssetError, MjcfIncludeError
 from mjcf_model.files.compile_errors import compile_error
 from mjcf_model.files.provenance import FileReference, Folders, with_folders, with_paths
+from mjcf_model.nodes.asset import Skin
+from mjcf_model.nodes.base import Element, Node
+from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.tree.traversal import keyed_walk
+from mjcf_model.tree.traversal import keyed_walk, with_children
 
 if TYPE_CHECKING:
     import mujoco
@@ -194,6 +198,47 @@ def _submodel_text(
     return dumps(bundled_sub).encode()
 
 
+#: The fewest numbers an inline skin holds for :func:`compiled` to hand it over as a file.
+_SKIN_FILE_NUMBERS = 3000
+
+
+def _skins_as_files(model: Mujoco, files: dict[str, bytes]) -> tuple[Mujoco, dict[str, bytes]]:
+    """``model`` with each big named inline skin given as a binary skin file in ``files``.
+
+    MuJoCo reads a skin's float32 arrays from a file in a fraction of the time it
+    parses them as text (a scaled copy of dm_control's dog writes 4.6 MB of skin
+    numbers), and compiles the same model: the file holds the values MuJoCo would
+    have rounded the text to (only ``paths`` records the file's name,
+    ``mjcf-model-skin-0.skn``). An unnamed skin stays inline (MuJoCo would name it
+    after the file), and so does one the format cannot hold (see
+    :func:`serializers.skins.skin_file_bytes`).
+    """
+    from serializers.skins import skin_file_bytes
+
+    added = dict(files)
+    made = iter(f"mjcf-model-skin-{n}.skn" for n in itertools.count())
+
+    def as_file(element: Node) -> Node:
+        if not isinstance(element, Skin) or element.name is None or element.file is not None:
+            return element
+        data = None if len(element.vertex or ()) < _SKIN_FILE_NUMBERS else skin_file_bytes(element)
+        if data is None:
+            return element
+        name = next(name for name in made if name not in added)
+        added[name] = data
+        changes = {"file": name, "vertex": None, "texcoord": None, "face": None}
+        return build_node(Skin, {**changes, "children": ()}, element)
+
+    sections = [  # skins stand only in these top-level sections
+        with_children(section, [as_file(child) for child in section.children])
+        if isinstance(section, Element) and getattr(section, "tag", "") in ("asset", "deformable")
+        else section
+        for section in model.children
+    ]
+    changed = with_children(model, sections)
+    return (model, files) if changed is model else (changed, added)
+
+
 def compiled(model: Mujoco, *, assets: Mapping[str, bytes] | None = None) -> mujoco.MjModel:
     r"""Compile ``model`` with MuJoCo in memory: nothing is written.
 
@@ -235,8 +280,9 @@ def compiled(model: Mujoco, *, assets: Mapping[str, bytes] | None = None) -> muj
     from serializers import dumps
 
     bundle = _bundled(model, dict(assets or {}), "", on_disk=True)
-    text = dumps(bundle.model)
+    given, files = _skins_as_files(bundle.model, bundle.files)
+    text = dumps(given)
     try:
-        return mujoco.MjModel.from_xml_string(text, bundle.files)
+        return mujoco.MjModel.from_xml_string(text, files)
     except ValueError as error:
         raise compile_error(str(error), model, bundle, text) from None
