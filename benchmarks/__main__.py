@@ -65,6 +65,10 @@ def _table(rows: list[Row]) -> str:
     return "\n".join(lines)
 
 
+#: How many corpus files a tiny run uses (enough for three with meshes).
+_TINY_CORPUS = 12
+
+
 def _cases(tiny: bool) -> list[Case]:
     from benchmarks.cases_corpus import corpus_cases
     from benchmarks.cases_imports import import_cases
@@ -72,7 +76,7 @@ def _cases(tiny: bool) -> list[Case]:
     from benchmarks.cases_synthetic import synthetic_cases
     from benchmarks.cases_variants import compile_cases, sweep_cases, variant_cases
 
-    corpus = compiling_corpus()
+    corpus = compiling_corpus(_TINY_CORPUS if tiny else None)
     return [
         *corpus_cases(corpus[:3] if tiny else corpus),
         *synthetic_cases(50 if tiny else 5000),
@@ -98,7 +102,7 @@ def main(argv: list[str] | None = None) -> int:
         case_rows = run_case(case, repeat)
         rows.extend(case_rows)
         print(_table(case_rows).split("\n", 2)[2], flush=True)
-    measured_sizes = sizes(compiling_corpus(), args.tiny)
+    measured_sizes = sizes(compiling_corpus(_TINY_CORPUS if args.tiny else None), args.tiny)
     print(measured_sizes, flush=True)
     command = "python -m benchmarks " + " ".join(argv if argv is not None else sys.argv[1:])
     took = time.perf_counter() - started

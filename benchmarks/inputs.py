@@ -18,8 +18,11 @@ def package_dir(name: str) -> Path | None:
 
 
 @functools.cache
-def compiling_corpus() -> tuple[Path, ...]:
-    """The XML files of the installed robosuite and dm_control wheels that MuJoCo compiles."""
+def compiling_corpus(most: int | None = None) -> tuple[Path, ...]:
+    """The XML files of the installed robosuite and dm_control wheels that MuJoCo compiles.
+
+    ``most``: only the first that many (a tiny run need not compile the whole corpus).
+    """
     import mujoco
 
     files: list[Path] = []
@@ -27,8 +30,10 @@ def compiling_corpus() -> tuple[Path, ...]:
         folder = package_dir(package)
         if folder is not None:
             files.extend(sorted(folder.rglob("*.xml")))
-    compiling = []
+    compiling: list[Path] = []
     for path in files:
+        if len(compiling) == most:
+            break
         try:
             mujoco.MjModel.from_xml_path(str(path))
         except ValueError:

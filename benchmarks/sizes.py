@@ -38,12 +38,14 @@ def _pickled_line(label: str, size: int, own: int) -> str:
 
 def _pickled(files: tuple[Path, ...], most: int | None) -> list[str]:
     """Robosuite's Panda: a geom, its biggest body, the model; every element of ``most`` files."""
+    from benchmarks.inputs import package_dir
     from mjcf_model import Body, Geom, walk
     from serializers import load
 
     lines = []
-    panda = next((p for p in files if p.parts[-2:] == ("panda", "robot.xml")), None)
-    if panda is not None:
+    robosuite = package_dir("robosuite")
+    if robosuite is not None:
+        panda = robosuite / "models/assets/robots/panda/robot.xml"
         model = load(panda)
         elements = [e for _, e in walk(model)]
         geom = next(e for e in elements if isinstance(e, Geom))

@@ -29,6 +29,9 @@ settings.register_profile(
 settings.register_profile(
     "dev", max_examples=50, deadline=None, suppress_health_check=[HealthCheck.too_slow]
 )
+settings.register_profile(  # the second environment: MuJoCo 3.9 compatibility, not search
+    "compat", max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
 settings.register_profile(
     "mutation",
     max_examples=30,
