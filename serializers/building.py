@@ -147,6 +147,13 @@ def build_element(
 #: Per typed class, each ``(name, text)`` attribute read in one document, as its field
 #: and converted, validated value (see :func:`read_typed`).
 ReadMemo = dict[type, dict[tuple[str, str], tuple[str, Any]]]
+
+#: Attribute text longer than this is converted after the whole file is parsed (see
+#: :func:`read_typed`'s ``deferred``).
+DEFERRED_TEXT = 1 << 20
+
+#: An attribute whose value is converted later: its field, name, text and reader.
+Deferred = tuple[str, str, str, Callable[[str], Any]]
 _new = object.__new__
 _set_dict = object.__setattr__
 
@@ -158,6 +165,7 @@ def read_typed(
     layout: Layout,
     memo: ReadMemo,
     names: dict[tuple[str, ...], tuple[str, ...]],
+    deferred: list[Deferred] | None = None,
 ) -> TypedElement | None:
     """The typed node of an element read from text, or ``None`` if :func:`build_element` must.
 
@@ -175,6 +183,10 @@ def read_typed(
         layout: Where the element was read.
         memo: One per document.
         names: One per document: each tuple of attribute names, shared.
+        deferred: Where to put the attributes of over :data:`DEFERRED_TEXT` characters
+            instead of converting them: the node holds their text until the caller
+            converts them (a 50 MB number list becomes floats once expat has let go
+            of its own copies of the text, which halves the peak memory of reading).
 
     Example:
         >>> from mjcf_model import Geom
@@ -203,6 +215,10 @@ def read_typed(
             reading = readers.get(name)
             if reading is None:
                 return None  # an attribute without a field
+            if deferred is not None and len(text) > DEFERRED_TEXT:
+                deferred.append((reading[0], name, text, reading[1]))
+                data[reading[0]] = text
+                continue
             try:
                 value = reading[1](text)
             except MjcfValueError:

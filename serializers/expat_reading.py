@@ -18,11 +18,25 @@ from __future__ import annotations
 from typing import Any, NoReturn
 from xml.parsers import expat
 
-from mjcf_model.errors import MjcfError, MjcfIncludeError, MjcfSecurityError, MjcfSyntaxError
+from mjcf_model.errors import (
+    MjcfError,
+    MjcfIncludeError,
+    MjcfSecurityError,
+    MjcfSyntaxError,
+    MjcfValueError,
+)
 from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, Node, TypedElement
 from mjcf_model.nodes.layout import DocumentText, Layout, SourceText
 from mjcf_model.nodes.root import Include
-from serializers.building import ReadMemo, build_element, element_step, element_text, read_typed
+from mjcf_model.values import Unparsed
+from serializers.building import (
+    Deferred,
+    ReadMemo,
+    build_element,
+    element_step,
+    element_text,
+    read_typed,
+)
 from serializers.includes import PendingInclude, Session
 from serializers.open_element import STEPS, OpenElement, step_of
 from serializers.repairs import (
@@ -80,6 +94,9 @@ class Reader:
         self.root_begin = self.root_end = 0
         #: The element being closed, for :meth:`locate`.
         self.closing: OpenElement | None = None
+        #: Each long attribute left to convert after parsing: its node, and where it
+        #: stands, with what :func:`~serializers.building.read_typed` deferred.
+        self.deferred: list[tuple[TypedElement, int, str, Deferred]] = []
         # MuJoCo reads the bytes as UTF-8 whatever the XML declaration says; so do we.
         self.parser = expat.ParserCreate(encoding="utf-8")
         self.parser.ordered_attributes = True
@@ -216,7 +233,13 @@ class Reader:
         typed = item.typed
         node: AnyElement | None = None
         if typed is not None and text is None:
-            node = read_typed(typed, item.attributes, children, layout, self.known, self.names)
+            later: list[Deferred] = []
+            node = read_typed(
+                typed, item.attributes, children, layout, self.known, self.names, later
+            )
+            if node is not None and later:
+                path = self.path_to(item)
+                self.deferred += [(node, item.line, path, attribute) for attribute in later]
         if node is None:
             self.closing = item
             try:
@@ -281,6 +304,32 @@ class Reader:
 
     def parse(self, data: str | bytes) -> list[Node]:
         """Read one document; text MuJoCo's lenient parser reads is repaired first."""
+        top = self.read(data)
+        self.convert_deferred()
+        return top
+
+    def convert_deferred(self) -> None:
+        """Convert the long attributes read left as text, now that expat let go of its copies.
+
+        The nodes are not yet handed out, so they get their values in place; a text
+        the field cannot read is kept as :class:`~mjcf_model.values.Unparsed`, as
+        :func:`~serializers.building.build_element` keeps it.
+        """
+        deferred, self.deferred = self.deferred, []
+        for node, line, path, (field, name, text, convert) in deferred:
+            try:
+                value = convert(text)
+            except MjcfValueError as error:
+                problem = MjcfValueError(f"attribute {name!r}: {error.detail}")
+                located = problem.located(file=self.filename, line=line, path=path)
+                assert isinstance(located, MjcfValueError)
+                value = Unparsed(text, located)
+            else:
+                self.known.setdefault(type(node), {})[(name, text)] = (field, value)
+            node.__dict__[field] = value
+
+    def read(self, data: str | bytes) -> list[Node]:
+        """:meth:`parse`, but for the long attributes :meth:`convert_deferred` converts."""
         raw = data.encode("utf-8", "surrogatepass") if isinstance(data, str) else data
         if raw[:4] in _UTF32_BOMS:
             raise MjcfSyntaxError(
@@ -347,6 +396,7 @@ class Reader:
         parser.StartDoctypeDeclHandler = parser.EntityDeclHandler = None
         parser.ExternalEntityRefHandler = None
         self.raw, self.ascii, self.closing = b"", None, None
+        del self.parser  # and its buffers: a long attribute is converted after this
 
     def record_document(self, stop: int) -> None:
         """Give the root's layout the text around the root, up to byte ``stop``."""
