@@ -14,6 +14,7 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from mjcf_model.errors import MjcfError, MjcfValueError
+from mjcf_model.nodes import layout as layouts
 from mjcf_model.nodes.base import (
     AnyElement,
     GenericElement,
@@ -23,7 +24,7 @@ from mjcf_model.nodes.base import (
     field_table,
 )
 from mjcf_model.nodes.declaring import NodeInfo, tuple_getter
-from mjcf_model.nodes.layout import Layout, LayoutDetail
+from mjcf_model.nodes.layout import Layout, LayoutDetail, detail
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.values import Unparsed
 
@@ -294,6 +295,90 @@ def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout)
     return values
 
 
+def holds_what_was_read(element: AnyElement, layout: Layout, cut: LayoutDetail) -> bool:
+    """Whether ``element`` stores exactly the fields, and values, it was read with.
+
+    The writer's fast check for an unchanged start tag (children and text aside),
+    and what lets a pickled element be read again from its text (:func:`reread`).
+    """
+    values = recorded_values(cut, type(element), layout)
+    getter = cut.getter
+    stored = element.__dict__.keys()
+    return (
+        getter is not None
+        and (stored == cut.stored or stored - LATER_FIELDS == cut.stored)
+        and getter(element) == values
+    )
+
+
+def reduced_as_read(element: AnyElement) -> tuple[Any, ...] | None:
+    """How to pickle a typed element read from text: its class, layout, children and changes.
+
+    Its values are read again from its layout's attributes when unpickled (they
+    repeat its text, which the layout carries), and the fields changed since reading
+    are set over them, so a pickled subtree weighs little more than its text. ``None``
+    for an element with character data or an attribute without a field, or not read
+    from text: pickled field by field.
+    """
+    layout = element.layout
+    if (
+        layout is None
+        or not isinstance(element, TypedElement)
+        or element.text is not None
+        or element.tag != layout.tag
+        or layout.text is not None
+    ):
+        return None
+    cut = detail(layout)
+    values = recorded_values(cut, type(element), layout)
+    if cut.getter is None:
+        return None
+    table = type(element).__node_info__.table
+    read = dict(zip([table[name] for name in cut.names], values, strict=True))
+    read["attribute_order"] = cut.names
+    held = element.__dict__
+    changed = {
+        name: value
+        for name, value in held.items()
+        if name not in _NOT_READ and (name not in read or not _same(read[name], value))
+    }
+    removed = tuple(name for name in read if name not in held)
+    kept = layout.without_old_children(element.children)
+    return (reread, (type(element), kept, element.children, changed, removed))
+
+
+#: The fields :func:`reduced_as_read` passes apart from the values read.
+_NOT_READ = frozenset({"layout", "children"})
+
+
+def _same(read: Any, held: Any) -> bool:
+    return read is held or read == held
+
+
+def reread(
+    cls: type[TypedElement],
+    layout: Layout,
+    children: tuple[Node, ...],
+    changed: dict[str, Any],
+    removed: tuple[str, ...],
+) -> TypedElement:
+    """An element pickled by :func:`reduced_as_read`, read again from its layout.
+
+    Raises:
+        MjcfValueError: the text no longer reads as the class reads it (a pickle from
+            another version of the library).
+
+    """
+    node = read_typed(cls, layout.attributes, children, layout, layout.origin.values, {})
+    if node is None:
+        raise MjcfValueError(f"a pickled <{layout.tag}> no longer reads as {cls.__name__}")
+    held = node.__dict__
+    held.update(changed)
+    for name in removed:
+        del held[name]
+    return node
+
+
 def _fast_check(
     info: NodeInfo, names: tuple[str, ...], children: bool, text: bool
 ) -> tuple[Callable[[Any], tuple[Any, ...]], frozenset[str]] | None:
@@ -319,3 +404,6 @@ _FAST_CHECKS: dict[
 ] = {}
 #: Past this many, the checks are forgotten (hostile text could make any number).
 _MAX_FAST_CHECKS = 4096
+
+
+layouts.REDUCE_AS_READ = reduced_as_read  # the node layer pickles what was read through this

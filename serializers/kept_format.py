@@ -21,7 +21,7 @@ from typing import Any
 from mjcf_model.nodes.base import AnyElement, Comment, Node, attribute_items
 from mjcf_model.nodes.layout import Layout, LayoutDetail, detail, place_key, same_place
 from mjcf_model.values import Value, format_value
-from serializers.building import LATER_FIELDS, recorded_values
+from serializers.building import holds_what_was_read, recorded_values
 from serializers.canonical import (
     ATTRIBUTE_ESCAPES,
     TEXT_ESCAPES,
@@ -263,15 +263,9 @@ def _added_gap(gaps: Sequence[str], count: int, indent: str, style: _Style) -> s
 
 def _start_tag(element: AnyElement, layout: Layout, cut: LayoutDetail) -> str:
     """The recorded start tag, with the attributes changed since edited in place."""
-    values = recorded_values(cut, type(element), layout)
-    getter = cut.getter
-    stored = element.__dict__.keys()
-    if (
-        getter is not None
-        and (stored == cut.stored or stored - LATER_FIELDS == cut.stored)
-        and getter(element) == values
-    ):
+    if holds_what_was_read(element, layout, cut):
         return cut.start  # the fields stored and their values are the ones read
+    values = recorded_values(cut, type(element), layout)
     items = attribute_items(element)
     names = cut.names
     if len(items) == len(names):

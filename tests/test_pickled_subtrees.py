@@ -11,12 +11,13 @@ from __future__ import annotations
 import gc
 import pickle
 import weakref
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 
-from mjcf_model import Body, Element, Geom, prefixed, walk
-from mjcf_model.nodes.base import AnyElement
+from mjcf_model import Body, Element, Geom, map_elements, prefixed, scaled, walk
+from mjcf_model.nodes.base import AnyElement, with_attributes
 from mjcf_model.nodes.layout import Layout
 from mjcf_model.tree.traversal import map_tree, with_children
 from serializers import dumps, load, loads
@@ -78,6 +79,32 @@ def test_an_unpickled_model_prefixes_to_the_same_text(path: Path) -> None:
     """The format survives pickling for an edit too: every element changed by prefixing."""
     model = load(path, inline_includes=True)
     assert dumps(prefixed(_copy(model), "p/")) == dumps(prefixed(model, "p/"))
+
+
+def _unnamed_and_red(element: AnyElement, key: str | None, _: object) -> AnyElement:
+    if isinstance(element, Geom):
+        return with_attributes(element, {"name": None, "rgba": (1.0, 0.0, 0.0, 1.0)})
+    return element
+
+
+_EDITS = {
+    "prefixed": lambda model: prefixed(model, "p/"),
+    "scaled": lambda model: scaled(model, 1.3, mass="volume"),
+    "geoms unnamed and red": lambda model: map_elements(_unnamed_and_red, model),
+}
+
+
+@pytest.mark.parametrize("edit", _EDITS.values(), ids=_EDITS.keys())
+@pytest.mark.parametrize("path", compiling_corpus()[1::6], ids=corpus_id)
+def test_an_edited_model_pickles_to_an_equal_one_that_writes_the_same(
+    path: Path, edit: Callable[[AnyElement], AnyElement]
+) -> None:
+    """Values changed, added and removed since reading survive the pickle read again."""
+    edited = edit(load(path, inline_includes=True))
+    copied = _copy(edited)
+    assert copied == edited and dumps(copied) == dumps(edited)
+    for (_, before), (_, after) in zip(walk(edited), walk(copied), strict=True):
+        assert before.__dict__.keys() - {"layout"} == after.__dict__.keys() - {"layout"}
 
 
 _SPACED = """<mujoco model="spaced">

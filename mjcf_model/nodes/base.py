@@ -17,11 +17,12 @@ equality: two elements that differ only in attribute order are equal).
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from typing import TYPE_CHECKING, Any, ClassVar, TypeVar
+from typing import TYPE_CHECKING, Any, ClassVar, SupportsIndex, TypeVar
 
 import attrs
 
 from mjcf_model.errors import MjcfValueError
+from mjcf_model.nodes import layout as layouts
 from mjcf_model.nodes.attribute_map import EMPTY_ATTRIBUTES, AttributeMap, to_attribute_map
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.comparing import Subtree, forest_hash, forests_equal
@@ -138,6 +139,19 @@ class Element(Node):
     #: How the element was written in its file (ignored by ``==``, ``hash`` and the dict
     #: form); ``None`` for an element built in code.
     layout: Layout | None = attrs.field(default=None, eq=False, repr=False)
+
+    def __reduce_ex__(self, protocol: SupportsIndex) -> str | tuple[Any, ...]:
+        """Pickle an element read from text as its class, layout and children, if it can be.
+
+        An element that still holds the values it was read with is read again from
+        its text when unpickled (see :data:`~mjcf_model.nodes.layout.REDUCE_AS_READ`);
+        any other is pickled field by field (:meth:`__getstate__`).
+        """
+        if self.layout is not None and layouts.REDUCE_AS_READ is not None:
+            reduced = layouts.REDUCE_AS_READ(self)
+            if reduced is not None:
+                return reduced
+        return super().__reduce_ex__(protocol)
 
     def __getstate__(self) -> dict[str, Any]:
         """The fields to pickle: the layout first, so that it cuts the text its children share.

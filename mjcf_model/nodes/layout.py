@@ -185,6 +185,12 @@ class SourceText:
         return self.text.rindex("</", begin, after)
 
 
+#: How to pickle an element that holds what it was read with (its class, layout and
+#: children; set by the reader, :func:`serializers.building.reduced_as_read`), or
+#: ``None`` for any other: an element has a layout only once the reader is imported.
+REDUCE_AS_READ: Callable[[Any], tuple[Any, ...] | None] | None = None
+
+
 class DocumentText:
     r"""The text of a file around its root element: XML declaration, comments, line breaks.
 
