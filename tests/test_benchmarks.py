@@ -224,7 +224,7 @@ def test_both_scaled_variant_rows_make_the_same_variants(model: tuple[str, str])
     assert folder is not None
     path = folder / relative
     spec = spec_with_skins_inline(mujoco.MjSpec.from_file(str(path)))
-    original = spec.compile()
+    original = spec.copy().compile()  # the spec itself stays uncompiled (see the function)
     loaded = load(path, inline_includes=True)
     for factor in (0.8, 1.17):
         theirs = spec_scaled_variant(spec, factor, length_coordinates(original)).compile()
