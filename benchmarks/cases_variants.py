@@ -282,7 +282,9 @@ def _variant_case(path: Path) -> Case:
     from mjcf_model.tools.compare import model_differences, path_fields
     from serializers import load
 
-    model, spec = load(path), mujoco.MjSpec.from_file(str(path))
+    # Includes read once, as MjSpec.from_file reads them: a model that keeps its <include>
+    # elements has them inlined again by every compiled() call.
+    model, spec = load(path, inline_includes=True), mujoco.MjSpec.from_file(str(path))
     mine = compiled(our_physical_variant(model, np.random.default_rng(0)))
     theirs = spec_physical_variant(spec, np.random.default_rng(0)).compile()
     differences = model_differences(mine, theirs, ignore=path_fields())

@@ -205,7 +205,7 @@ def test_both_physical_variant_rows_make_the_same_variants(model: tuple[str, str
     folder = package_dir(package)
     assert folder is not None
     path = folder / relative
-    spec, loaded = mujoco.MjSpec.from_file(str(path)), load(path)
+    spec, loaded = mujoco.MjSpec.from_file(str(path)), load(path, inline_includes=True)
     original = spec.compile()
     for seed in (0, 1):
         theirs = spec_physical_variant(spec, np.random.default_rng(seed)).compile()
