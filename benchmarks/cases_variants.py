@@ -214,22 +214,14 @@ def spec_scaled_variant(spec: Any, factor: float, lengths: tuple[int, ...] = ())
             body.inertia, body.fullinertia = body.inertia * inertia, body.fullinertia * inertia
     for frame in variant.frames:
         frame.pos = frame.pos * factor
+    for placed in (*variant.geoms, *variant.sites):
+        placed.pos, placed.size = placed.pos * factor, placed.size * factor
+        placed.fromto = placed.fromto * factor
     for geom in variant.geoms:
-        geom.pos, geom.size, geom.fromto = (
-            geom.pos * factor,
-            geom.size * factor,
-            geom.fromto * factor,
-        )
         geom.friction = geom.friction * [1.0, factor, factor]
         geom.margin, geom.gap = geom.margin * factor, geom.gap * factor
         if geom.mass > 0:
             geom.mass = geom.mass * cube
-    for site in variant.sites:
-        site.pos, site.size, site.fromto = (
-            site.pos * factor,
-            site.size * factor,
-            site.fromto * factor,
-        )
     for joint in variant.joints:
         joint.pos = joint.pos * factor
         if joint.type == mujoco.mjtJoint.mjJNT_SLIDE:

@@ -116,17 +116,7 @@ def _variants(rows: list[Row]) -> list[str]:
         )
     physical = _per_case(rows, "physical variants: ", "MjSpec")
     if physical:
-        mean = float(np.exp(np.mean(np.log(list(physical.values())))))
-        worst = max(physical, key=physical.__getitem__)
-        lines.append(
-            _line(
-                f"physical variants + compile: mjcf-model time / MjSpec time, geometric mean "
-                f"of {len(physical)} (worst: {worst} {physical[worst]:.2f})",
-                mean,
-                1.0,
-                at_most=True,
-            )
-        )
+        lines.append(_geometric_mean_line("physical variants + compile", physical))
         # mjcf-model/patched over mjcf-model/MjSpec: MjSpec's time over patched()'s.
         patched = _per_case(rows, "physical variants: ", PATCHED)
         faster = {case: ratio / physical[case] for case, ratio in patched.items()}
@@ -143,17 +133,20 @@ def _variants(rows: list[Row]) -> list[str]:
             )
     scaled = _per_case(rows, "scaled variants: ", "MjSpec")
     if scaled:
-        worst = max(scaled, key=scaled.__getitem__)
-        lines.append(
-            _line(
-                f"scaled variants + compile: mjcf-model time / MjSpec time, geometric mean "
-                f"of {len(scaled)} (worst: {worst} {scaled[worst]:.2f})",
-                float(np.exp(np.mean(np.log(list(scaled.values()))))),
-                1.0,
-                at_most=True,
-            )
-        )
+        lines.append(_geometric_mean_line("scaled variants + compile", scaled))
     return lines
+
+
+def _geometric_mean_line(label: str, ratios: dict[str, float]) -> str:
+    """mjcf-model's time over MjSpec's, geometric mean over models: met when at most 1."""
+    worst = max(ratios, key=ratios.__getitem__)
+    return _line(
+        f"{label}: mjcf-model time / MjSpec time, geometric mean of {len(ratios)} "
+        f"(worst: {worst} {ratios[worst]:.2f})",
+        float(np.exp(np.mean(np.log(list(ratios.values()))))),
+        1.0,
+        at_most=True,
+    )
 
 
 def targets(rows: list[Row]) -> str:

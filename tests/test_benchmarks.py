@@ -198,13 +198,17 @@ def test_ratios_are_relative_to_this_library() -> None:
     assert rows["absent"].median is None and rows["absent"].note == "not installed"
 
 
-@pytest.mark.parametrize("model", VARIANT_MODELS, ids=lambda m: m[1].rsplit("/", 2)[-2])
-def test_both_physical_variant_rows_make_the_same_variants(model: tuple[str, str]) -> None:
-    """The physical variants of both rows compile to the same model, changed where drawn."""
+def _variant_model(model: tuple[str, str]) -> Path:
     package, relative = model
     folder = package_dir(package)
     assert folder is not None
-    path = folder / relative
+    return folder / relative
+
+
+@pytest.mark.parametrize("model", VARIANT_MODELS, ids=lambda m: m[1].rsplit("/", 2)[-2])
+def test_both_physical_variant_rows_make_the_same_variants(model: tuple[str, str]) -> None:
+    """The physical variants of both rows compile to the same model, changed where drawn."""
+    path = _variant_model(model)
     spec, loaded = mujoco.MjSpec.from_file(str(path)), load(path, inline_includes=True)
     original = spec.compile()
     for seed in (0, 1):
@@ -219,10 +223,7 @@ def test_both_physical_variant_rows_make_the_same_variants(model: tuple[str, str
 @pytest.mark.parametrize("model", VARIANT_MODELS, ids=lambda m: m[1].rsplit("/", 2)[-2])
 def test_both_scaled_variant_rows_make_the_same_variants(model: tuple[str, str]) -> None:
     """The spec side scales every length ``scaled`` does: both compile to the same model."""
-    package, relative = model
-    folder = package_dir(package)
-    assert folder is not None
-    path = folder / relative
+    path = _variant_model(model)
     spec = spec_with_skins_inline(mujoco.MjSpec.from_file(str(path)))
     original = spec.copy().compile()  # the spec itself stays uncompiled (see the function)
     loaded = load(path, inline_includes=True)
