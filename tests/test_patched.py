@@ -8,6 +8,7 @@ cannot map falls back to a full compile and says so.
 
 from __future__ import annotations
 
+import copy
 import warnings
 from pathlib import Path
 from typing import Any
@@ -19,7 +20,7 @@ from hypothesis import strategies as st
 
 from mjcf_model import MjcfRecompiledWarning, compiled, map_elements, patched, with_attributes
 from mjcf_model.files.patching import FIELDS
-from mjcf_model.nodes.base import AnyElement, attribute_items
+from mjcf_model.nodes.base import AnyElement, attribute_items, get_attribute
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.strategies import models
 from mjcf_model.tools.compare import model_differences
@@ -89,6 +90,47 @@ def test_patched_corpus_variants_are_compiled_variants(path: Path) -> None:
     assert model_differences(result, expected) == []
     allowed = ("the compiler's", "a springdamper", *(("MuJoCo before 4.0",) if OLD else ()))
     assert all(any(why in reason for why in allowed) for reason in reasons), reasons
+
+
+def _recoloured(model: Mujoco, seed: int) -> Mujoco:
+    """``model`` with only its geoms' written colours drawn again."""
+    rng = np.random.default_rng(seed)
+
+    def recolour(element: AnyElement, key: str | None, ancestors: Any) -> AnyElement:
+        if key != "body/geom" or get_attribute(element, "rgba") is None:
+            return element
+        return with_attributes(element, {"rgba": _changed_value("rgba", (0,) * 4, rng)})
+
+    return map_elements(recolour, model)
+
+
+def _patched_in_turn(before: Mujoco, seed: int) -> None:
+    """Every value changed, then only colours, then nothing: each patched into one scratch model."""
+    model = compiled(before)
+    scratch = copy.copy(model)
+    for after in (variant(before, seed)[0], _recoloured(before, seed + 1), before):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", MjcfRecompiledWarning)
+            result = patched(model, before, after, into=scratch)
+        recompiled = any(issubclass(w.category, MjcfRecompiledWarning) for w in caught)
+        assert (result is scratch) != recompiled
+        assert model_differences(result, compiled(after)) == []
+    assert model_differences(model, compiled(before)) == []
+
+
+@settings(PER_CLASS, suppress_health_check=[HealthCheck.too_slow])
+@given(model=models(), seed=st.integers(0, 2**32 - 1))
+def test_variants_patched_in_turn_into_one_model_are_compiled_variants(
+    model: Mujoco, seed: int
+) -> None:
+    """``into``: what a variant wrote and derived is gone when the next is patched in."""
+    _patched_in_turn(model, seed)
+
+
+@pytest.mark.parametrize("path", compiling_corpus()[::5], ids=corpus_id)
+def test_corpus_variants_patched_in_turn_into_one_model_are_compiled_variants(path: Path) -> None:
+    """The same on the corpus: every mapped value, then colours alone, then the model itself."""
+    _patched_in_turn(load(path, inline_includes=True), 7)
 
 
 def test_a_change_without_an_array_compiles_again_and_says_which() -> None:

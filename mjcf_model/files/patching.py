@@ -91,6 +91,9 @@ _BEFORE_4 = frozenset(
     {"geom_rgba", "geom_friction", "geom_solref", "geom_solimp", "dof_damping", "dof_frictionloss"}
 )
 
+#: Every array :func:`patched` writes.
+_PATCHED = frozenset(array for arrays in FIELDS.values() for array in arrays.values())
+
 #: Fields of a geom's contacts and looks: changing only these needs no ``mj_setConst``.
 _LOCAL = frozenset(FIELDS["body/geom"].values()) | {"dof_damping", "dof_frictionloss"}
 
@@ -100,13 +103,25 @@ _INERTIA_SETTINGS = (
 )  # fmt: skip
 
 
-def patched(model: mujoco.MjModel, before: Mujoco, after: Mujoco) -> mujoco.MjModel:
+def patched(
+    model: mujoco.MjModel,
+    before: Mujoco,
+    after: Mujoco,
+    *,
+    into: mujoco.MjModel | None = None,
+) -> mujoco.MjModel:
     """A copy of ``model`` (compiled from ``before``) changed as ``after`` differs from it.
 
     Args:
         model: ``before`` compiled (:func:`mjcf_model.compiled`); it is not changed.
         before: The model ``model`` was compiled from.
         after: A variant of ``before``: the same elements, some values changed.
+        into: A copy of ``model`` to write the variant into instead of a new copy (a
+            variant loop makes one, ``copy.copy(model)``, and patches it each time; a
+            copy of a mesh-heavy model costs more than the patch). Whatever an earlier
+            variant wrote there is first set back to ``model``'s values. When the
+            variant must be compiled, a new model is returned and ``into`` is left as
+            it was.
 
     Returns:
         What ``compiled(after)`` returns, array for array: patched when every change
@@ -114,6 +129,21 @@ def patched(model: mujoco.MjModel, before: Mujoco, after: Mujoco) -> mujoco.MjMo
         numbers of ``rgba``, three of ``friction``...) or with as many numbers as
         ``before`` wrote, else compiled in full (with a
         :class:`~mjcf_model.MjcfRecompiledWarning`).
+
+    Example:
+        >>> import copy
+        >>> from mjcf_model import compiled, map_elements, with_attributes
+        >>> from serializers import loads
+        >>> robot = loads('<mujoco><worldbody><geom size="0.1"/></worldbody></mujoco>')
+        >>> base = compiled(robot)
+        >>> scratch = copy.copy(base)
+        >>> def red(element, key, ancestors):
+        ...     is_geom = key == "body/geom"
+        ...     return with_attributes(element, {"rgba": (1, 0, 0, 1)}) if is_geom else element
+        >>> patched(base, robot, map_elements(red, robot), into=scratch) is scratch
+        True
+        >>> scratch.geom_rgba.tolist(), base.geom_rgba.tolist()
+        ([[1.0, 0.0, 0.0, 1.0]], [[0.5, 0.5, 0.5, 1.0]])
 
     """
     import mujoco
@@ -129,16 +159,23 @@ def patched(model: mujoco.MjModel, before: Mujoco, after: Mujoco) -> mujoco.MjMo
             stacklevel=2,
         )
         return compiled(after)
-    result = copy.copy(model)
+    if into is None:
+        result = copy.copy(model)
+    else:
+        result = into
+        for field in _PATCHED:  # what an earlier variant wrote goes back to the model's
+            getattr(result, field)[...] = getattr(model, field)
     for field, _, row, numbers in changes:
         array = getattr(result, field)
         if array.ndim == 1:
             array[row] = numbers[0]
         else:
             array[row, : len(numbers)] = numbers
-    if any(field in ("geom_margin", "geom_gap") for field, _, _, _ in changes):
+    # A model patched before may hold what an earlier variant derived: derive it all again.
+    again = into is not None
+    if again or any(field in ("geom_margin", "geom_gap") for field, _, _, _ in changes):
         _body_margins(result)
-    if any(field not in _LOCAL for field, _, _, _ in changes):
+    if again or any(field not in _LOCAL for field, _, _, _ in changes):
         mujoco.mj_setConst(result, mujoco.MjData(result))
         _restate(result, before)
     return result
