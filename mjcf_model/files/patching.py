@@ -377,8 +377,8 @@ def _labelled(
     key = (
         child_key(context, element.tag) if context is not None or element.tag == "mujoco" else None
     )
-    if key is None or key.startswith("default"):
-        return element
+    if key is None or key.startswith("default") or element.tag == "replicate":
+        return element  # a replicate's copies would share a label (and are compiled again)
     elements = iter(_elements(element))
     inertial = None
     children: list[Any] = []
