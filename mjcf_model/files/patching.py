@@ -171,8 +171,9 @@ def patched(
             array[row] = numbers[0]
         else:
             array[row, : len(numbers)] = numbers
-    # A model patched before may hold what an earlier variant derived: derive it all again.
-    again = into is not None
+    # A model patched before may hold what an earlier variant derived: derive it all again
+    # (before MuJoCo 4.0 only fields that derive nothing are patched).
+    again = into is not None and int(mujoco.__version__.split(".")[0]) >= 4
     if again or any(field in ("geom_margin", "geom_gap") for field, _, _, _ in changes):
         _body_margins(result)
     if again or any(field not in _LOCAL for field, _, _, _ in changes):
