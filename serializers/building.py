@@ -298,8 +298,7 @@ def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout)
 def holds_what_was_read(element: AnyElement, layout: Layout, cut: LayoutDetail) -> bool:
     """Whether ``element`` stores exactly the fields, and values, it was read with.
 
-    The writer's fast check for an unchanged start tag (children and text aside),
-    and what lets a pickled element be read again from its text (:func:`reread`).
+    The writer's fast check for an unchanged start tag (children and text aside).
     """
     values = recorded_values(cut, type(element), layout)
     getter = cut.getter
@@ -311,7 +310,7 @@ def holds_what_was_read(element: AnyElement, layout: Layout, cut: LayoutDetail) 
     )
 
 
-def reduced_as_read(element: AnyElement) -> tuple[Any, ...] | None:
+def reduced_from_text(element: AnyElement) -> tuple[Any, ...] | None:
     """How to pickle a typed element read from text: its class, layout, children and changes.
 
     Its values are read again from its layout's attributes when unpickled (they
@@ -347,7 +346,7 @@ def reduced_as_read(element: AnyElement) -> tuple[Any, ...] | None:
     return (reread, (type(element), kept, element.children, changed, removed))
 
 
-#: The fields :func:`reduced_as_read` passes apart from the values read.
+#: The fields :func:`reduced_from_text` passes apart from the values read.
 _NOT_READ = frozenset({"layout", "children"})
 
 
@@ -362,7 +361,7 @@ def reread(
     changed: dict[str, Any],
     removed: tuple[str, ...],
 ) -> TypedElement:
-    """An element pickled by :func:`reduced_as_read`, read again from its layout.
+    """An element pickled by :func:`reduced_from_text`, read again from its layout.
 
     Raises:
         MjcfValueError: the text no longer reads as the class reads it (a pickle from
@@ -406,4 +405,4 @@ _FAST_CHECKS: dict[
 _MAX_FAST_CHECKS = 4096
 
 
-layouts.REDUCE_AS_READ = reduced_as_read  # the node layer pickles what was read through this
+layouts.REDUCE_FROM_TEXT = reduced_from_text  # the node layer pickles what was read through this

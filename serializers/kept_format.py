@@ -19,7 +19,7 @@ from collections.abc import Iterator, Sequence
 from typing import Any
 
 from mjcf_model.nodes.base import AnyElement, Comment, Node, attribute_items
-from mjcf_model.nodes.layout import Layout, LayoutDetail, detail, place_key, same_place
+from mjcf_model.nodes.layout import Layout, LayoutDetail, detail, place_key
 from mjcf_model.values import Value, format_value
 from serializers.building import holds_what_was_read, recorded_values
 from serializers.canonical import (
@@ -161,7 +161,7 @@ def _open(
     if same_text and len(children) == count:
         for child, source in zip(children, sources, strict=True):
             token = getattr(child, "layout", child)
-            if token is not source and not same_place(token, source):
+            if token is not source and place_key(token) != place_key(source):
                 break
         else:
             out.append(start)

@@ -141,14 +141,14 @@ class Element(Node):
     layout: Layout | None = attrs.field(default=None, eq=False, repr=False)
 
     def __reduce_ex__(self, protocol: SupportsIndex) -> str | tuple[Any, ...]:
-        """Pickle an element read from text as its class, layout and children, if it can be.
+        """Pickle an element read from text as its class, layout, children and changes.
 
-        An element that still holds the values it was read with is read again from
-        its text when unpickled (see :data:`~mjcf_model.nodes.layout.REDUCE_AS_READ`);
-        any other is pickled field by field (:meth:`__getstate__`).
+        Its values are read again from its text when unpickled (see
+        :data:`~mjcf_model.nodes.layout.REDUCE_FROM_TEXT`); any other element is
+        pickled field by field (:meth:`__getstate__`).
         """
-        if self.layout is not None and layouts.REDUCE_AS_READ is not None:
-            reduced = layouts.REDUCE_AS_READ(self)
+        if self.layout is not None and layouts.REDUCE_FROM_TEXT is not None:
+            reduced = layouts.REDUCE_FROM_TEXT(self)
             if reduced is not None:
                 return reduced
         return super().__reduce_ex__(protocol)

@@ -33,7 +33,6 @@ __all__ = [
     "SourceText",
     "detail",
     "place_key",
-    "same_place",
 ]
 
 
@@ -185,10 +184,10 @@ class SourceText:
         return self.text.rindex("</", begin, after)
 
 
-#: How to pickle an element that holds what it was read with (its class, layout and
-#: children; set by the reader, :func:`serializers.building.reduced_as_read`), or
+#: How to pickle an element read from text (its class, layout, children and the fields
+#: changed since; set by the reader, :func:`serializers.building.reduced_from_text`), or
 #: ``None`` for any other: an element has a layout only once the reader is imported.
-REDUCE_AS_READ: Callable[[Any], tuple[Any, ...] | None] | None = None
+REDUCE_FROM_TEXT: Callable[[Any], tuple[Any, ...] | None] | None = None
 
 
 class DocumentText:
@@ -353,16 +352,6 @@ def place_key(source: Any) -> object:
     if type(source) is Layout:
         return (id(source.origin), source.begin)
     return id(source)
-
-
-def same_place(token: Any, source: Any) -> bool:
-    """Whether ``token`` (a child's layout, or a comment) stands where ``source`` stood."""
-    return (
-        type(token) is Layout
-        and type(source) is Layout
-        and token.origin is source.origin
-        and token.begin == source.begin
-    )
 
 
 def detail(layout: Layout) -> LayoutDetail:
