@@ -36,10 +36,10 @@ from mjcf_model.nodes.base import (
     get_attribute,
     with_attributes,
 )
-from mjcf_model.transforms.composition.attach import attach, attach_all
+from mjcf_model.transforms.composition.attaching import attach, attach_all
 from mjcf_model.transforms.composition.inlining import inlined_attachments
 from mjcf_model.transforms.naming.renaming import declared_names, prefix_map, prefixed, renamed
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.queries import find, find_all, parent_of
 from mjcf_model.tree.traversal import map_elements, map_tree, walk
 from mjcf_model.values import Unparsed

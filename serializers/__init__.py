@@ -11,7 +11,7 @@ True
 
 from serializers.dicts import from_dict, to_dict
 from serializers.etree_reading import from_etree
-from serializers.export import export
+from serializers.exporting import export
 from serializers.reader import load, loads
 from serializers.writer import dump, dumps, to_etree
 

@@ -5,7 +5,7 @@ A child attached without a prefix has its top-level settings made a class
 parent's top-level settings become ``parent_main``, or ``parent_main_2``
 when it already has a class of that name, and a child declaring the class
 name given to the parent's settings is a name clash
-(the attach docstring in mjcf_model/transforms/composition/attach.py). MuJoCo
+(the attach docstring in mjcf_model/transforms/composition/attaching.py). MuJoCo
 compiling each part alone says what each geom must get from its defaults.
 """
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import mujoco
 
 from mjcf_model import compiled
-from mjcf_model.transforms.composition.attach import attach_in_frame
+from mjcf_model.transforms.composition.attaching import attach_in_frame
 from serializers import loads
 from tests.composition_oracle import PlacedPart, composition_problems
 

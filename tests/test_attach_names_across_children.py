@@ -1,7 +1,7 @@
 """Names across the children of one attach_all: later children meet the earlier ones' names.
 
 An asset that two children both declare as the same element is kept once (the
-module docstring of mjcf_model/transforms/composition/attach.py); any other
+module docstring of mjcf_model/transforms/composition/attaching.py); any other
 name a later child shares with an earlier one is a clash, as if it were the
 parent's. MuJoCo compiling each part alone says what the scene's objects hold.
 """

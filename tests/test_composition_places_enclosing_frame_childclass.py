@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from mjcf_model import find_all, get_attribute
-from mjcf_model.transforms.composition.attach import attach
+from mjcf_model.transforms.composition.attaching import attach
 from serializers import dumps, loads
 
 #: Class ``red`` colours geoms; the frame ``outer`` gives it to what it holds.

@@ -13,7 +13,7 @@ import mujoco
 import pytest
 
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.transforms.composition.attach import attach
+from mjcf_model.transforms.composition.attaching import attach
 from serializers import loads
 
 #: A parent with two bodies, a frame and a site named ``mount`` and one more site.

@@ -15,7 +15,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from mjcf_model import compiled, find, get_attribute
-from mjcf_model.transforms.composition.attach import attach
+from mjcf_model.transforms.composition.attaching import attach
 from serializers import loads
 
 #: The compiled quaternions compared, one per kind of element that takes ``euler``.

@@ -13,9 +13,9 @@ from hypothesis import strategies as st
 from mjcf_model import Body, Geom, Mujoco, compiled
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.strategies import models, names
-from mjcf_model.transforms.composition.attach import attach
+from mjcf_model.transforms.composition.attaching import attach
 from mjcf_model.transforms.naming.renaming import declared_names, prefix_map, prefixed, renamed
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, load, loads, to_dict
 from serializers.skins import inline_skin_files
 from tests.conftest import compiling_corpus, corpus_id

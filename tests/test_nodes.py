@@ -118,6 +118,19 @@ def test_with_attributes_sets_typed_and_extra_attributes() -> None:
     ]
 
 
+def test_with_attributes_takes_keywords_as_evolve_does() -> None:
+    """Keywords set attributes as the mapping does; both forms combine; a clash is refused."""
+    site = Site(name="s", pos=(0, 0, 0))
+    by_keyword = with_attributes(site, name="p_s", pos=[1, 2, 3], halo="1", size=None)
+    by_mapping = with_attributes(site, {"name": "p_s", "pos": [1, 2, 3], "halo": "1"})
+    assert by_keyword == by_mapping and attribute_items(by_keyword) == attribute_items(by_mapping)
+    both = with_attributes(site, {"class": "c"}, rgba=(1, 0, 0, 1))
+    assert both.dclass == "c" and both.rgba == (1.0, 0.0, 0.0, 1.0)
+    assert with_attributes(site) is site
+    with pytest.raises(TypeError, match="pos both in changes and as keywords"):
+        with_attributes(site, {"pos": (1, 1, 1)}, pos=(2, 2, 2))
+
+
 def test_generic_with_attributes_formats_values() -> None:
     """Typed values given to a generic element are written as MJCF text."""
     element = GenericElement(tag="thing", attributes={"a": "1"})

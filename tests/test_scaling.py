@@ -18,7 +18,7 @@ from mjcf_model.strategies import models
 from mjcf_model.tools.compare import model_differences
 from mjcf_model.transforms.scaling.pieces import NO_LENGTHS
 from mjcf_model.transforms.scaling.rules import RULES, UNSCALED_BY_DECISION
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import map_tree
 from serializers import dumps, load, loads, to_dict
 from tests.conftest import compiling_corpus, corpus_id

@@ -11,7 +11,7 @@ from __future__ import annotations
 import mujoco
 
 from mjcf_model.nodes.base import AnyElement, get_attribute
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.queries import find
 from serializers import dumps, loads
 from tests.scaling_oracle import scaled_model_problems

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from mjcf_model.nodes.base import get_attribute
-from mjcf_model.transforms.scaling.scaled import MassPolicy, scaled
+from mjcf_model.transforms.scaling.transform import MassPolicy, scaled
 from serializers import dumps, loads
 from tests.scaling_oracle import scaled_model_problems
 

@@ -14,7 +14,7 @@ import numpy as np
 
 from mjcf_model.transforms.scaling.context import ScaleContext
 from mjcf_model.transforms.scaling.rules import RULES
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import with_children
 from serializers import dumps, loads
 from tests.scaling_oracle import scaled_model_problems

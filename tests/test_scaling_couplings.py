@@ -12,7 +12,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, loads
 from tests.scaling_oracle import scaled_model_problems
 

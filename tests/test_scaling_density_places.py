@@ -14,7 +14,7 @@ import mujoco
 
 from mjcf_model import Geom
 from mjcf_model.nodes.base import AnyElement, get_attribute
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.queries import find
 from serializers import dumps, from_etree, loads
 from tests.scaling_oracle import scaled_model_problems

@@ -13,7 +13,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, loads
 
 _DISC = """<mujoco><worldbody><body name="b"><flexcomp name="d" type="disc" count="4 4 1"

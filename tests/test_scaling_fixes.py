@@ -22,7 +22,7 @@ from mjcf_model.strategies import elements
 from mjcf_model.tools.check import check_file
 from mjcf_model.tools.compare import compile_text_beside
 from mjcf_model.transforms.scaling.plugins import SDF_LENGTHS
-from mjcf_model.transforms.scaling.scaled import MassPolicy, scaled
+from mjcf_model.transforms.scaling.transform import MassPolicy, scaled
 from serializers import dumps, from_etree, load, loads
 from tests.conftest import PER_CLASS
 from tests.oracles import friction_problems, scaled_problems

@@ -13,7 +13,7 @@ import pytest
 
 from mjcf_model import Body, Geom, Mujoco, Worldbody
 from mjcf_model.nodes.base import AnyElement
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, loads
 from tests.oracles import friction_problems
 from tests.scaling_oracle import scaled_model_problems

@@ -12,7 +12,7 @@ import mujoco
 
 from mjcf_model import Default, Geom
 from mjcf_model.nodes.base import get_attribute
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, loads
 from tests.scaling_oracle import scaled_model_problems
 

@@ -14,7 +14,7 @@ import pytest
 
 from mjcf_model.transforms.scaling.context import ScaleContext
 from mjcf_model.transforms.scaling.mass import is_shell
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.defaults import DefaultClasses
 from mjcf_model.tree.traversal import keyed_walk
 from serializers import dumps, loads

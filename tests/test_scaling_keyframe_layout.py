@@ -19,7 +19,7 @@ import pytest
 from mjcf_model.nodes.base import AnyElement, with_attributes
 from mjcf_model.transforms.scaling.context import ScaleContext
 from mjcf_model.transforms.scaling.rules import RULES
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import map_elements
 from serializers import dumps, loads
 from tests.scaling_oracle import scaled_model_problems

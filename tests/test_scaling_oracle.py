@@ -10,7 +10,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, loads
 from tests.compiled_fields import FLOAT_FIELDS, float_fields
 from tests.scaling_oracle import scaled_model_problems

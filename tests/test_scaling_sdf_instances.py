@@ -20,7 +20,7 @@ from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.plugin import Plugin
 from mjcf_model.transforms.scaling.context import ScaleContext
 from mjcf_model.transforms.scaling.plugins import sdf_config, with_sdf_settings
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import with_children
 from serializers import dumps, loads
 from tests.scaling_oracle import scaled_model_problems

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from mjcf_model import Body, Joint
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 
 
 def test_a_hinge_at_the_origin_is_shared() -> None:

@@ -11,7 +11,7 @@ import mujoco
 import numpy as np
 
 from mjcf_model.nodes.base import AnyElement, GenericElement, attribute_items
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import keyed_walk, map_elements
 from mjcf_model.values import format_value
 from serializers import dumps, loads

@@ -18,7 +18,7 @@ from mjcf_model.nodes.base import AnyElement, attribute_items
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.transforms.scaling.pieces import NO_LENGTHS
 from mjcf_model.transforms.scaling.rules import RULES
-from mjcf_model.transforms.scaling.scaled import scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import keyed_walk
 from serializers import loads
 from tests.scale_cases import UNCHECKED, scale_cases

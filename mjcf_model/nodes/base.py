@@ -369,18 +369,34 @@ def attribute_text(element: AnyElement, name: str) -> str | None:
     return None if value is None else format_value(value)
 
 
-def with_attributes(element: _E, changes: Mapping[str, Value | None]) -> _E:
+def with_attributes(
+    element: _E, changes: Mapping[str, Value | None] | None = None, /, **attributes: Value | None
+) -> _E:
     """Return a copy with MJCF attributes set (``None`` removes one).
 
+    The attributes come as keywords, as :func:`attrs.evolve` takes them, or as a
+    mapping for names that are not Python identifiers (``"class"``); both may be
+    given. Keys are MJCF attribute names (``"class"``, not the field ``dclass``).
     Typed fields receive typed values (converted as usual); other attributes go
     to ``extra`` as text. The source order is kept; new attributes go last.
 
+    Raises:
+        TypeError: The same attribute is given both in ``changes`` and as a keyword.
+
     Example:
         >>> from mjcf_model import Site
-        >>> with_attributes(Site(name="s"), {"name": "p_s", "class": "c"}).dclass
+        >>> with_attributes(Site(name="s"), pos=(0, 0, 1)).pos
+        (0.0, 0.0, 1.0)
+        >>> with_attributes(Site(name="s"), {"class": "c"}, name="p_s").dclass
         'c'
 
     """
+    if attributes:
+        twice = sorted(set(changes or ()) & attributes.keys())
+        if twice:
+            given = ", ".join(twice)
+            raise TypeError(f"with_attributes() got {given} both in changes and as keywords")
+        changes = {**(changes or {}), **attributes}
     if not changes:
         return element
     if isinstance(element, GenericElement):

@@ -27,8 +27,15 @@ Example:
 
 """
 
-from mjcf_model.strategies.elements import element_values, elements, geoms, joints, materials, sites
-from mjcf_model.strategies.models import bodies, models
+from mjcf_model.strategies.drawn_elements import (
+    element_values,
+    elements,
+    geoms,
+    joints,
+    materials,
+    sites,
+)
+from mjcf_model.strategies.drawn_models import bodies, models
 from mjcf_model.strategies.primitives import comments, names
 
 __all__ = [

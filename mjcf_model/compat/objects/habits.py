@@ -39,7 +39,7 @@ from mjcf_model.compat.mjcf_utils.text import array_to_string, text_of
 from mjcf_model.compat.objects.document import Memo, as_node, is_element
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, with_attributes
-from mjcf_model.transforms.scaling.scaled import three_factors
+from mjcf_model.transforms.scaling.transform import three_factors
 from mjcf_model.tree.ancestry import fold_ancestors
 from mjcf_model.tree.defaults import MAIN, DefaultClasses
 from mjcf_model.tree.traversal import Path, map_elements, map_tree, with_children

@@ -83,7 +83,7 @@ def _checked(model: AnyElement) -> Mujoco:
 
 
 def _compose(arguments: argparse.Namespace) -> int:
-    from mjcf_model.transforms.composition.attach import attach_all
+    from mjcf_model.transforms.composition.attaching import attach_all
     from mjcf_model.transforms.naming.renaming import prefixed
 
     if (
@@ -129,7 +129,7 @@ def _prefix(arguments: argparse.Namespace) -> int:
 
 
 def _scale(arguments: argparse.Namespace) -> int:
-    from mjcf_model.transforms.scaling.scaled import scaled
+    from mjcf_model.transforms.scaling.transform import scaled
 
     factor = arguments.factor[0] if len(arguments.factor) == 1 else arguments.factor
     model = scaled(read_model(arguments.file), factor, mass=arguments.mass)

@@ -22,7 +22,7 @@ contents; neither: everything in ``m``'s world). Measured on MuJoCo 3.9 and 4.0:
   are not copied.
 
 :func:`attached_part` is that copy as a model of its own, ready for
-:func:`mjcf_model.transforms.composition.attach.attach_in_frame`; keyframes are
+:func:`mjcf_model.transforms.composition.attaching.attach_in_frame`; keyframes are
 left out (MuJoCo fills each with the whole model's initial state, see
 :mod:`mjcf_model.transforms.composition.inlining`).
 

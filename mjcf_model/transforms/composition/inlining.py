@@ -75,8 +75,8 @@ from mjcf_model.nodes.body import Frame
 from mjcf_model.nodes.compiler import Compiler
 from mjcf_model.nodes.keyframe import Key, Keyframe
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.transforms.composition.attach import attach_in_frame
 from mjcf_model.transforms.composition.attached_parts import attached_part
+from mjcf_model.transforms.composition.attaching import attach_in_frame
 from mjcf_model.transforms.composition.compiler_settings import compiler_settings
 from mjcf_model.transforms.composition.conventions import in_conventions
 from mjcf_model.transforms.composition.keyframes import keys_of

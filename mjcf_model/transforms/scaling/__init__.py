@@ -1,6 +1,6 @@
 """Scaling a model: every length multiplied, angles and unitless values untouched.
 
-:mod:`~mjcf_model.transforms.scaling.scaled` is the transform;
+:mod:`~mjcf_model.transforms.scaling.transform` is the transform;
 :mod:`~mjcf_model.transforms.scaling.rules` holds the rule of every schema key,
 built from the pieces in :mod:`~mjcf_model.transforms.scaling.pieces`, which
 read :mod:`~mjcf_model.transforms.scaling.context`.
@@ -10,6 +10,6 @@ read :mod:`~mjcf_model.transforms.scaling.context`.
 (0.2,)
 """
 
-from mjcf_model.transforms.scaling.scaled import MassPolicy, scaled
+from mjcf_model.transforms.scaling.transform import MassPolicy, scaled
 
 __all__ = ["MassPolicy", "scaled"]

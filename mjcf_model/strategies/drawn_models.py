@@ -28,7 +28,7 @@ from mjcf_model.nodes import (
 from mjcf_model.nodes import Frame as FrameNode
 from mjcf_model.nodes import Joint as JointNode
 from mjcf_model.nodes.base import Node
-from mjcf_model.strategies.elements import geoms, joints, materials, meshes, sites
+from mjcf_model.strategies.drawn_elements import geoms, joints, materials, meshes, sites
 from mjcf_model.strategies.primitives import (
     _Draw,
     _euler,
