@@ -370,7 +370,10 @@ def attribute_text(element: AnyElement, name: str) -> str | None:
 
 
 def with_attributes(
-    element: _E, changes: Mapping[str, Value | None] | None = None, /, **attributes: Value | None
+    element: _E,
+    changes: Mapping[str, Value | None] | None = None,
+    /,
+    **keyword_changes: Value | None,
 ) -> _E:
     """Return a copy with MJCF attributes set (``None`` removes one).
 
@@ -391,12 +394,12 @@ def with_attributes(
         'c'
 
     """
-    if attributes:
-        twice = sorted(set(changes or ()) & attributes.keys())
+    if keyword_changes:
+        twice = sorted(set(changes or ()) & keyword_changes.keys())
         if twice:
             given = ", ".join(twice)
             raise TypeError(f"with_attributes() got {given} both in changes and as keywords")
-        changes = {**(changes or {}), **attributes}
+        changes = {**(changes or {}), **keyword_changes}
     if not changes:
         return element
     if isinstance(element, GenericElement):
