@@ -33,6 +33,9 @@ __all__ = [
     "MjcfCompileError",
     "MjcfDroppedSettingWarning",
     "MjcfError",
+    "MjcfFileError",
+    "MjcfFileNotFoundError",
+    "MjcfIncludeCycleError",
     "MjcfIncludeError",
     "MjcfLookupError",
     "MjcfRecompiledWarning",
@@ -40,6 +43,7 @@ __all__ = [
     "MjcfSecurityError",
     "MjcfSyntaxError",
     "MjcfValueError",
+    "unreadable_file",
 ]
 
 
@@ -115,22 +119,53 @@ class MjcfLookupError(MjcfError, KeyError):
         return self._render()
 
 
-class MjcfIncludeError(MjcfError, OSError):
-    """An ``<include>`` names a file that cannot be read, or files include each other."""
+class MjcfFileError(MjcfError, OSError):
+    """A file cannot be read or written; ``errno``, ``strerror`` and ``filename`` say why.
+
+    :class:`MjcfIncludeError` and :class:`MjcfAssetError` narrow it down to the
+    files a model names.
+    """
 
     def __str__(self) -> str:
         return self._render()
 
 
-class MjcfAssetError(MjcfError, OSError):
+class MjcfFileNotFoundError(MjcfFileError, FileNotFoundError):
+    """The file to read does not exist (``except FileNotFoundError`` catches it too)."""
+
+
+class MjcfIncludeError(MjcfFileError):
+    """An ``<include>`` names a file that cannot be found or read."""
+
+
+class MjcfIncludeCycleError(MjcfError, ValueError):
+    """Files include (or, through asset ``<model>`` elements, attach) each other."""
+
+
+class MjcfAssetError(MjcfFileError):
     """A file the model names cannot be read, or an exported file cannot be written.
 
     The files a model names are meshes, textures, height fields, skins and
     asset ``<model>`` files.
     """
 
-    def __str__(self) -> str:
-        return self._render()
+
+def unreadable_file(path: object, error: OSError) -> MjcfFileError:
+    """The error for a file given to read that cannot be: ``error``'s reason, and its kind.
+
+    Example:
+        >>> try:
+        ...     open("/no/such/model.xml")
+        ... except OSError as error:
+        ...     problem = unreadable_file("/no/such/model.xml", error)
+        >>> isinstance(problem, FileNotFoundError), str(problem)
+        (True, "cannot read '/no/such/model.xml': No such file or directory")
+
+    """
+    kind = MjcfFileNotFoundError if isinstance(error, FileNotFoundError) else MjcfFileError
+    problem = kind(f"cannot read {str(path)!r}: {error.strerror or error}")
+    problem.errno, problem.strerror, problem.filename = error.errno, error.strerror, str(path)
+    return problem
 
 
 class MjcfCompileError(MjcfError, ValueError):

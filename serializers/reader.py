@@ -16,7 +16,11 @@ import os
 from pathlib import Path
 from typing import IO
 
-from mjcf_model.errors import MjcfIncludeError, MjcfSyntaxError
+from mjcf_model.errors import (
+    MjcfIncludeCycleError,
+    MjcfSyntaxError,
+    unreadable_file,
+)
 from mjcf_model.files.provenance import with_included_paths
 from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, TypedElement
 from mjcf_model.nodes.building import build_node
@@ -88,7 +92,7 @@ def _read_documents(data: str | bytes, filename: str, session: Session) -> Mujoc
             if path in reading:
                 chain = [*session.include_chain, *(Path(d.filename) for d in stack[1:]), path]
                 cycle = " -> ".join(str(p) for p in chain[chain.index(path) :])
-                raise MjcfIncludeError(
+                raise MjcfIncludeCycleError(
                     f"include cycle: {cycle}",
                     file=pending.filename,
                     line=pending.line,
@@ -193,7 +197,7 @@ def load(
         try:
             data = path.read_bytes()
         except OSError as error:
-            raise MjcfIncludeError(f"cannot read {str(path)!r}: {error.strerror}") from None
+            raise unreadable_file(path, error) from None
         session = Session(
             inline_includes=inline_includes,
             # the folder MuJoCo resolves from: the link's own, when the path is a link

@@ -16,7 +16,11 @@ import numpy as np
 import pytest
 
 from mjcf_model import attach, compiled, inlined_attachments, prefixed, scaled
-from mjcf_model.errors import MjcfIncludeError, MjcfLookupError, MjcfValueError
+from mjcf_model.errors import (
+    MjcfIncludeCycleError,
+    MjcfLookupError,
+    MjcfValueError,
+)
 from mjcf_model.tools.compare import compiled_names, model_differences, path_fields
 from mjcf_model.tree.queries import find, find_all, parent_of
 from mjcf_model.tree.traversal import walk
@@ -262,7 +266,7 @@ def test_models_attaching_each_other_are_refused(tmp_path: Path) -> None:
             + '<attach model="one" body="b" prefix="o_"/></body></worldbody></mujoco>',
         },
     )
-    with pytest.raises(MjcfIncludeError, match=r"two\.xml -> .*one\.xml -> .*two\.xml"):
+    with pytest.raises(MjcfIncludeCycleError, match=r"two\.xml -> .*one\.xml -> .*two\.xml"):
         load(path, inline_attachments=True)
 
 

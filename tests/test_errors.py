@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import errno
 import os
 from pathlib import Path
 
@@ -12,6 +13,9 @@ from mjcf_model import (
     Geom,
     MjcfAssetError,
     MjcfError,
+    MjcfFileError,
+    MjcfFileNotFoundError,
+    MjcfIncludeCycleError,
     MjcfIncludeError,
     MjcfSecurityError,
     MjcfSyntaxError,
@@ -113,9 +117,10 @@ def test_include_cycle(tmp_path: Path) -> None:
     """Files that include each other are reported with the whole cycle."""
     _write(tmp_path / "a.xml", "<mujoco>\n<include file='b.xml'/>\n</mujoco>")
     _write(tmp_path / "b.xml", "<mujoco>\n\n<include file='a.xml'/>\n</mujoco>")
-    with pytest.raises(MjcfIncludeError) as caught:
+    with pytest.raises(MjcfIncludeCycleError) as caught:
         load(tmp_path / "a.xml", inline_includes=True)
     error = caught.value
+    assert isinstance(error, ValueError) and not isinstance(error, OSError)  # as MuJoCo's
     assert error.file == str(tmp_path / "b.xml") and error.line == 3
     assert "include cycle" in str(error)
     assert str(tmp_path / "a.xml") in str(error) and str(tmp_path / "b.xml") in str(error)
@@ -243,3 +248,57 @@ def test_from_etree_error_names_the_element_path() -> None:
         pos[0]
     assert caught.value.path == "/mujoco/worldbody/body[@name='b']/geom[2]"
     assert "attribute 'pos': expected 3 numbers, found 2" in str(caught.value)
+
+
+def test_a_missing_main_file_is_a_file_not_found_error(tmp_path: Path) -> None:
+    """``load`` and ``format_file`` of a missing file raise what ``open`` would, located."""
+    from mjcf_model.tools.formatting import format_file
+
+    missing = tmp_path / "no_such_model.xml"
+    for read in (load, format_file):
+        with pytest.raises(FileNotFoundError) as caught:
+            read(missing)
+        error = caught.value
+        assert isinstance(error, MjcfFileNotFoundError) and isinstance(error, MjcfError)
+        assert error.errno == errno.ENOENT and error.filename == str(missing)
+        assert str(error) == f"cannot read {str(missing)!r}: No such file or directory"
+    with pytest.raises(MjcfFileError) as folder:
+        load(tmp_path)
+    assert isinstance(folder.value, OSError) and folder.value.errno == errno.EISDIR
+
+
+#: Each error class and the builtin exception it also is: what ``except`` clauses
+#: written for the standard library catch.
+ERROR_BUILTINS = {
+    "MjcfSyntaxError": ValueError,
+    "MjcfValueError": ValueError,
+    "MjcfLookupError": KeyError,
+    "MjcfFileError": OSError,
+    "MjcfFileNotFoundError": FileNotFoundError,
+    "MjcfIncludeError": OSError,
+    "MjcfIncludeCycleError": ValueError,
+    "MjcfAssetError": OSError,
+    "MjcfCompileError": ValueError,
+    "MjcfRenderError": RuntimeError,
+    "MjcfSecurityError": ValueError,
+}
+
+
+def test_every_error_class_is_one_builtin_error() -> None:
+    """Every ``MjcfError`` subclass derives from the builtin listed for it, and no other one."""
+    import mjcf_model.errors as errors
+
+    classes = {
+        name: value
+        for name in errors.__all__
+        if isinstance(value := getattr(errors, name), type) and issubclass(value, MjcfError)
+    }
+    assert set(classes) - {"MjcfError"} == set(ERROR_BUILTINS)
+    builtins = (ValueError, KeyError, OSError, RuntimeError)
+    for name, builtin in ERROR_BUILTINS.items():
+        cls = classes[name]
+        assert issubclass(cls, builtin)
+        others = [b for b in builtins if issubclass(cls, b) and not issubclass(builtin, b)]
+        assert others == [], f"{name} is also {others}"
+        # the message is the location and detail, never repr()-quoted (as KeyError would)
+        assert str(cls("detail", file="m.xml", line=2)) == "m.xml:2: detail"

@@ -43,6 +43,7 @@ from mjcf_model import (
     Joint,
     Key,
     Keyframe,
+    MjcfIncludeCycleError,
     MjcfIncludeError,
     Model,
     Mujoco,
@@ -650,9 +651,9 @@ def test_include_cycle_raises(tmp_path: Path) -> None:
     b = tmp_path / "b.xml"
     a.write_text('<mujoco>\n  <include file="b.xml"/>\n</mujoco>\n')
     b.write_text('<mujoco>\n  <include file="a.xml"/>\n</mujoco>\n')
-    with pytest.raises(MjcfIncludeError, match="cycle") as info:
+    with pytest.raises(MjcfIncludeCycleError, match="cycle") as info:
         load(a, inline_includes=True)
-    assert isinstance(info.value, OSError)
+    assert isinstance(info.value, ValueError)
     assert f"{b.resolve()}:2" in str(info.value)
     with pytest.raises(ValueError, match="already included"):
         mujoco.MjModel.from_xml_path(str(a))
@@ -664,5 +665,5 @@ def test_self_include_raises(tmp_path: Path) -> None:
     a.write_text(
         '<mujoco>\n  <worldbody>\n    <include file="self.xml"/>\n  </worldbody>\n</mujoco>\n'
     )
-    with pytest.raises(MjcfIncludeError, match="cycle"):
+    with pytest.raises(MjcfIncludeCycleError, match="cycle"):
         load(a, inline_includes=True)

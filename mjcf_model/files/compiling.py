@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING
 
 import attrs
 
-from mjcf_model.errors import MjcfAssetError, MjcfIncludeError
+from mjcf_model.errors import MjcfAssetError, MjcfIncludeCycleError
 from mjcf_model.files.compile_errors import compile_error
 from mjcf_model.files.provenance import FileReference, Folders, with_folders, with_paths
 from mjcf_model.nodes.asset import Skin
@@ -190,7 +190,7 @@ def _submodel_text(
 
     if reference.path in chain:
         cycle = " -> ".join(str(p) for p in (*chain, reference.path))
-        raise MjcfIncludeError(f"asset <model> files refer to each other: {cycle}")
+        raise MjcfIncludeCycleError(f"asset <model> files refer to each other: {cycle}")
     sub = loads(
         _read(reference, assets), base_dir=reference.path.parent, filename=str(reference.path)
     )

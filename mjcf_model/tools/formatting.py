@@ -34,7 +34,7 @@ from typing import Any, Literal
 
 import attrs
 
-from mjcf_model.errors import MjcfCompileError, MjcfIncludeError
+from mjcf_model.errors import MjcfCompileError, unreadable_file
 from mjcf_model.tools.check import standing_path, text_folder, written_differences
 from mjcf_model.tools.diff import changes_between
 
@@ -93,7 +93,7 @@ def format_file(path: str | os.PathLike[str]) -> Formatted:
     try:
         data = source.read_bytes()
     except OSError as error:
-        raise MjcfIncludeError(f"cannot read {str(source)!r}: {error.strerror}") from None
+        raise unreadable_file(source, error) from None
     return _formatted(data, str(source), lambda: mujoco.MjModel.from_xml_path(str(source)))
 
 

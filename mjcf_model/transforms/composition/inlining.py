@@ -61,7 +61,11 @@ from typing import TYPE_CHECKING
 import attrs
 import numpy as np
 
-from mjcf_model.errors import MjcfIncludeError, MjcfLookupError, MjcfValueError
+from mjcf_model.errors import (
+    MjcfIncludeCycleError,
+    MjcfLookupError,
+    MjcfValueError,
+)
 from mjcf_model.files.compiling import inlined
 from mjcf_model.nodes.base import (
     AnyElement,
@@ -180,7 +184,7 @@ class _Expansion:
         path = files[name]
         if path in chain:
             cycle = " -> ".join(str(p) for p in (*chain, path))
-            raise MjcfIncludeError(f"asset <model> files attach each other: {cycle}")
+            raise MjcfIncludeCycleError(f"asset <model> files attach each other: {cycle}")
         if path not in self.models:
             from serializers import load
 
