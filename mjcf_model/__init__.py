@@ -33,6 +33,7 @@ from mjcf_model.nodes.base import (
     Node,
     TypedElement,
     attribute_items,
+    full_repr,
     get_attribute,
     with_attributes,
 )
@@ -62,6 +63,7 @@ __all__ = [
     "declared_names",
     "find",
     "find_all",
+    "full_repr",
     "get_attribute",
     "inlined_attachments",
     "map_elements",

@@ -34,6 +34,7 @@ from mjcf_model import (
     Node,
     Unparsed,
     attach,
+    full_repr,
     prefixed,
     scaled,
 )
@@ -182,7 +183,7 @@ OPERATIONS: dict[str, Callable[[Mujoco], object]] = {
     "ElementTree": lambda m: from_etree(to_etree(m)) == m,
     "prefixed": lambda m: len(dumps(prefixed(m, "p_"))) > 0,
     "scaled": lambda m: len(dumps(scaled(m, 2.0))) > 0,
-    "repr": lambda m: repr(m).count("Body(") >= 495 or repr(m).count("Default(") >= 495,
+    "repr": lambda m: full_repr(m).count("Body(") >= 495 or full_repr(m).count("Default(") >= 495,
     "deepcopy": lambda m: copy.deepcopy(m) == m,
 }
 

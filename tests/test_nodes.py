@@ -166,3 +166,26 @@ def test_comment_text_is_checked() -> None:
 def test_repr_shows_only_written_attributes() -> None:
     """The repr of a node lists what is set, not the 40 fields that are not."""
     assert repr(Geom(name="g", size=[1])) == "Geom(name='g', size=(1.0,))"
+
+
+def test_a_large_subtree_shows_as_one_line() -> None:
+    """``repr`` of a model or large subtree is a line: class, name, count, file and line."""
+    import importlib.resources
+
+    from mjcf_model import full_repr, walk
+    from mjcf_model.nodes.base import FULL_REPR_ELEMENTS
+    from serializers import load
+
+    path = importlib.resources.files("robosuite") / "models/assets/robots/panda/robot.xml"
+    model = load(str(path))
+    count = sum(1 for _ in walk(model))
+    text = repr(model)
+    assert "\n" not in text and len(text) < 200 + len(str(path))
+    assert text == f"<Mujoco model='panda': {count:,} elements from {str(path)!r}, line 2>"
+    base = model.worldbody.bodies[0]
+    assert repr(base).startswith("<Body name='base': ") and "line " in repr(base)
+    assert len(full_repr(model)) > 10_000 and full_repr(model).startswith("Mujoco(model='panda'")
+    small = Body(name="b", children=[Geom(name=f"g{i}") for i in range(FULL_REPR_ELEMENTS - 1)])
+    assert repr(small) == full_repr(small) and repr(small).startswith("Body(name='b', children=")
+    large = Body(name="b", children=[Geom(name=f"g{i}") for i in range(FULL_REPR_ELEMENTS)])
+    assert repr(large) == f"<Body name='b': {FULL_REPR_ELEMENTS + 1} elements>"

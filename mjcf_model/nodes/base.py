@@ -42,6 +42,7 @@ __all__ = [
     "attribute_text",
     "build_node",
     "field_table",
+    "full_repr",
     "get_attribute",
     "ordered_node",
     "to_attribute_map",
@@ -198,8 +199,11 @@ class TypedElement(Element):
     attribute_order: tuple[str, ...] = attrs.field(default=(), eq=False, repr=False)
 
     def __repr__(self) -> str:
-        """Show only the attributes that are written, then extras and children."""
-        return _tree_repr(self)
+        """Show only the attributes that are written, then extras and children.
+
+        A large subtree shows as one line (see :func:`full_repr` for all of it).
+        """
+        return _short_or_full_repr(self)
 
     def _repr_frame(self) -> tuple[str, str]:
         table = field_table(type(self))
@@ -245,13 +249,62 @@ class GenericElement(Element):
     attributes: AttributeMap = attrs.field(default=EMPTY_ATTRIBUTES, converter=to_attribute_map)
 
     def __repr__(self) -> str:
-        return _tree_repr(self)
+        return _short_or_full_repr(self)
 
     def _repr_frame(self) -> tuple[str, str]:
         rest = f"text={self.text!r}, tag={self.tag!r}, attributes={self.attributes!r})"
         if not self.children:
             return f"GenericElement(children=(), {rest}", ""
         return "GenericElement(children=(", f"), {rest}"
+
+
+#: A subtree of more elements than this shows as one line in ``repr``.
+FULL_REPR_ELEMENTS = 20
+
+
+def _short_or_full_repr(node: TypedElement | GenericElement) -> str:
+    """The full repr of a small subtree, the one-line summary of a larger one."""
+    count = 0
+    stack: list[Node] = [node]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, Element):
+            count += 1
+            stack.extend(item.children)
+    if count <= FULL_REPR_ELEMENTS:
+        return _tree_repr(node)
+    named = [
+        f"{key}={value!r}"
+        for key in ("model", "name")
+        if isinstance(value := getattr(node, key, None), str)
+    ]
+    label = node.tag if isinstance(node, GenericElement) else type(node).__name__
+    where = ""
+    layout = node.layout
+    if layout is not None and layout.origin.filename is not None:
+        line = layout.origin.line(layout.begin)
+        where = f" from {layout.origin.filename!r}, line {line}"
+    return f"<{' '.join([label, *named])}: {count:,} elements{where}>"
+
+
+def full_repr(node: Node) -> str:
+    """The whole repr of ``node``, every element and field, whatever its size.
+
+    ``repr`` shows a subtree of more than :data:`FULL_REPR_ELEMENTS` elements as
+    one line: its class, name, element count and the file it was read from.
+
+    Example:
+        >>> from mjcf_model import Body, Geom
+        >>> body = Body(name="arm", children=[Geom(name=f"g{i}") for i in range(20)])
+        >>> repr(body)
+        "<Body name='arm': 21 elements>"
+        >>> full_repr(body)[:44]
+        "Body(name='arm', children=(Geom(name='g0'), "
+
+    """
+    if isinstance(node, (TypedElement, GenericElement)):
+        return _tree_repr(node)
+    return repr(node)
 
 
 def _tree_repr(node: TypedElement | GenericElement) -> str:
