@@ -28,7 +28,10 @@ MuJoCo may read what mjcf-model cannot)
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 __all__ = [
+    "Advice",
     "MjcfAssetError",
     "MjcfCompileError",
     "MjcfDroppedSettingWarning",
@@ -65,24 +68,42 @@ class MjcfError(Exception):
         file: str | None = None,
         line: int | None = None,
         path: str | None = None,
+        advice: Advice | None = None,
     ) -> None:
         self.detail = detail
         self.file = file
         self.line = line
         self.path = path
+        #: What to do about it, said for Python and for the command line; ``None`` if nothing.
+        self.advice = advice
         super().__init__(self._render())
 
-    def _render(self) -> str:
+    def _render(self, command_line: bool = False) -> str:
         where = ""
         if self.file is not None:
             where = self.file if self.line is None else f"{self.file}:{self.line}"
         elif self.line is not None:
             where = f"line {self.line}"
         parts = [p for p in (where, self.path) if p]
-        return ": ".join([*parts, self.detail])
+        detail = self.detail
+        if self.advice is not None:
+            said = self.advice.command_line if command_line else self.advice.python
+            detail = f"{detail}: {said}"
+        return ": ".join([*parts, detail])
 
     def __str__(self) -> str:
         return self._render()
+
+    def for_command_line(self) -> str:
+        """The message, its advice speaking of files and options instead of Python arguments.
+
+        Example:
+            >>> error = MjcfValueError("no file", advice=Advice("pass assets=", "copy it here"))
+            >>> str(error), error.for_command_line()
+            ('no file: pass assets=', 'no file: copy it here')
+
+        """
+        return self._render(command_line=True)
 
     def located(
         self, *, file: str | None = None, line: int | None = None, path: str | None = None
@@ -100,7 +121,17 @@ class MjcfError(Exception):
             file=self.file if self.file is not None else file,
             line=self.line if self.line is not None else line,
             path=self.path if self.path is not None else path,
+            advice=self.advice,
         )
+
+
+class Advice(NamedTuple):
+    """What to do about an error, said twice: to a Python caller and on the command line."""
+
+    #: Advice naming functions and their arguments (``inline_includes=True``).
+    python: str
+    #: The same advice in terms of files and command-line options.
+    command_line: str
 
 
 class MjcfSyntaxError(MjcfError, ValueError):

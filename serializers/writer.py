@@ -28,7 +28,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import IO
 
-from mjcf_model.errors import MjcfAssetError, MjcfValueError
+from mjcf_model.errors import Advice, MjcfAssetError, MjcfValueError
 from mjcf_model.files.compiling import inlined
 from mjcf_model.files.provenance import Folders, file_references, relocated
 from mjcf_model.nodes.base import AnyElement, Comment, Element, Node
@@ -38,6 +38,12 @@ from serializers.canonical import attribute_texts, write_canonical
 from serializers.kept_format import write_kept
 
 __all__ = ["attribute_texts", "dump", "dumps", "relocated_for", "to_etree", "write_atomically"]
+
+#: What to do with a model whose included files would name other files written elsewhere.
+WRITTEN_ELSEWHERE = Advice(
+    "load it with inline_includes=True, or export it",
+    "write it into the model's own folder, or use 'mjcf-model export' to gather its files",
+)
 
 
 def dumps(node: Node, *, indent: str = "  ", canonical: bool = False) -> str:
@@ -214,12 +220,13 @@ def _relocated(model: Mujoco, folder: Path) -> Mujoco:
             raise MjcfValueError(
                 f"an included file names {reference.text!r}, found under the model's folder "
                 f"({str(path)!r}); written elsewhere the model would look for "
-                f"{str(reference.path)!r}: load it with inline_includes=True, or export it"
+                f"{str(reference.path)!r}",
+                advice=WRITTEN_ELSEWHERE,
             )
     if len(after) != len(before):
         raise MjcfValueError(
-            "written elsewhere, the model's included files would name other files: load it "
-            "with inline_includes=True, or export it"
+            "written elsewhere, the model's included files would name other files",
+            advice=WRITTEN_ELSEWHERE,
         )
     return moved
 

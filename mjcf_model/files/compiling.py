@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING
 
 import attrs
 
-from mjcf_model.errors import MjcfAssetError, MjcfIncludeCycleError
+from mjcf_model.errors import Advice, MjcfAssetError, MjcfIncludeCycleError
 from mjcf_model.files.compile_errors import compile_error
 from mjcf_model.files.provenance import FileReference, Folders, with_folders, with_paths
 from mjcf_model.nodes.asset import Skin
@@ -109,8 +109,13 @@ def _read(reference: FileReference, assets: Mapping[str, bytes]) -> bytes:
         name = reference.element.tag
         raise MjcfAssetError(
             f"<{name} {reference.attribute}={reference.text!r}>: cannot read "
-            f"{str(reference.path)!r}: {error.strerror or error}; load the model from its "
-            "file (so it knows its folder) or pass the file's bytes in assets="
+            f"{str(reference.path)!r}: {error.strerror or error}",
+            advice=Advice(
+                "load the model from its file (so it knows its folder) or pass the file's "
+                "bytes in assets=",
+                "put the file where the model names it (beside the model, or under its "
+                "meshdir/texturedir), or run the command on the model where its files are",
+            ),
         ) from None
 
 

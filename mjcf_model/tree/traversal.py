@@ -20,7 +20,7 @@ import operator
 from collections.abc import Callable, Collection, Iterator, Sequence
 from typing import TypeVar
 
-from mjcf_model.errors import MjcfValueError
+from mjcf_model.errors import Advice, MjcfValueError
 from mjcf_model.nodes.base import (
     AnyElement,
     Element,
@@ -59,6 +59,12 @@ ElementVisitor = Callable[[AnyElement, str | None, Sequence[AnyElement]], AnyEle
 _E = TypeVar("_E", bound=Element)
 _N = TypeVar("_N", bound=Node)
 _A = TypeVar("_A", bound=TypedElement | GenericElement)
+
+#: What to do with a model whose ``<include>`` elements were kept as they are.
+INCLUDES_NOT_READ = Advice(
+    "load it with inline_includes=True",
+    "run the command on the main file (the command line reads included files in)",
+)
 
 
 class _Guess:
@@ -261,7 +267,8 @@ their files are not part of the tree; load it with inline_includes=True
     if key == "include":
         raise MjcfValueError(
             f"cannot {action} a model with <include> elements: their files are not part "
-            "of the tree; load it with inline_includes=True"
+            "of the tree",
+            advice=INCLUDES_NOT_READ,
         )
     if key is None and element.tag == "composite":
         raise MjcfValueError(

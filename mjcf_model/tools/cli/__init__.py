@@ -13,6 +13,8 @@ Example:
 from __future__ import annotations
 
 import argparse
+import os
+import sys
 from collections.abc import Sequence
 
 from mjcf_model.tools.cli import check as check
@@ -51,5 +53,26 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     """
     arguments = parser().parse_args(argv)
-    status: int = arguments.run(arguments)
+    try:
+        status: int = arguments.run(arguments)
+        sys.stdout.flush()
+    except BrokenPipeError:
+        return _reader_gone()
     return status
+
+
+#: The exit status of a command whose reader went away, as a shell reports a
+#: program ended by SIGPIPE (``git log | head`` ends so).
+BROKEN_PIPE_STATUS = 128 + 13
+
+
+def _reader_gone() -> int:
+    """End quietly when standard output's reader has gone (``mjcf-model diff a b | head``).
+
+    What is still buffered for it goes nowhere, so that Python's own flush at exit
+    does not report the broken pipe again.
+    """
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, sys.stdout.fileno())
+    os.close(devnull)
+    return BROKEN_PIPE_STATUS

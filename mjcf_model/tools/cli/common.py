@@ -27,6 +27,7 @@ __all__ = [
     "progress",
     "read_model",
     "read_stdin",
+    "said",
     "write_model",
     "write_text",
 ]
@@ -148,10 +149,29 @@ def guarded(run: Callable[[argparse.Namespace], int]) -> Callable[[argparse.Name
             return run(arguments)
         except Failed as failure:
             return _report(arguments, str(failure), failure.status)
+        except BrokenPipeError:  # the reader went away: main() ends quietly
+            raise
         except (MjcfError, OSError) as error:
-            return _report(arguments, str(error), 2)
+            return _report(arguments, said(error), 2)
 
     return verb
+
+
+def said(error: Exception) -> str:
+    """``error`` as the command line says it: advice in terms of files and options.
+
+    Example:
+        >>> said(FileNotFoundError(2, "No such file or directory", "m.xml"))
+        "cannot read 'm.xml': No such file or directory"
+
+    """
+    if isinstance(error, MjcfError):
+        return error.for_command_line()
+    if isinstance(error, OSError) and error.strerror:
+        if error.filename is None:
+            return error.strerror
+        return f"cannot read {str(error.filename)!r}: {error.strerror}"
+    return str(error)
 
 
 def _report(arguments: argparse.Namespace, message: str, status: int) -> int:

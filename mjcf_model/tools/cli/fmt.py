@@ -27,7 +27,7 @@ import sys
 from typing import Any
 
 from mjcf_model.errors import MjcfError
-from mjcf_model.tools.cli.common import STDIO, progress, read_stdin, write_text
+from mjcf_model.tools.cli.common import STDIO, progress, read_stdin, said, write_text
 from mjcf_model.tools.formatting import Formatted, format_file, format_text
 
 __all__ = ["add_parsers"]
@@ -58,7 +58,7 @@ def _fmt(arguments: argparse.Namespace) -> int:
         try:
             result = _formatted(path)
         except MjcfError as error:
-            _say(arguments, f"error: {error}")
+            _say(arguments, f"error: {said(error)}")
             counts["failed"] += 1
             continue
         if not result.safe:

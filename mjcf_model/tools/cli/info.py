@@ -57,7 +57,7 @@ def _compiles(model: Mujoco) -> str:
     try:
         compiled(model)
     except (MjcfCompileError, MjcfAssetError) as error:
-        return f"no: {error}"
+        return f"no: {error.for_command_line()}"
     return "yes"
 
 

@@ -78,7 +78,7 @@ def _checked(model: AnyElement) -> Mujoco:
     try:
         compiled(_model(model))
     except MjcfCompileError as error:
-        raise Failed(f"{error}; the result is not written") from None
+        raise Failed(f"{error.for_command_line()}; the result is not written") from None
     return _model(model)
 
 
