@@ -33,10 +33,10 @@ def test_module_entry_point() -> None:
 
 
 def test_errors_and_rejections(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    """A file MuJoCo rejects is reported; missing files and our errors fail the run."""
+    """A file MuJoCo rejects fails the run (``--strict`` is still taken); so do missing files."""
     rejected = tmp_path / "rejected.xml"
     rejected.write_text("<mujoco><worldbody><geom type='box'/></worldbody></mujoco>")
-    assert main(["check", str(rejected)]) == 0
+    assert main(["check", str(rejected)]) == 1
     assert main(["check", "--strict", str(rejected)]) == 1
     assert main(["check", str(tmp_path / "missing.xml")]) == 1
     out = capsys.readouterr().out
@@ -50,7 +50,7 @@ def test_a_difference_fails_the_run(
     """When the compiled models differ the fields are listed and the exit status is 1."""
     import mjcf_model.tools.cli.check as cli
 
-    def differing(path: str, *, inline_includes: bool = False) -> CheckResult:
+    def differing(path: str, *, inline_includes: bool = False, part: bool = False) -> CheckResult:
         return CheckResult(path=str(path), status="different", differences=("geom_size",))
 
     monkeypatch.setattr(cli, "check_file", differing)

@@ -10,7 +10,9 @@
 
 from __future__ import annotations
 
+import functools
 import os
+import re
 from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
@@ -28,6 +30,7 @@ __all__ = [
     "CheckResult",
     "check_file",
     "check_text",
+    "includers_of",
     "standing_path",
     "text_folder",
     "written_differences",
@@ -35,8 +38,10 @@ __all__ = [
 
 #: ``identical``: both compile to the same model; ``different``: they compile to
 #: different models; ``not-compiled``: MuJoCo rejects the original itself;
-#: ``error``: mjcf-model could not read or write it, or the round trip does not compile.
-Status = Literal["identical", "different", "not-compiled", "error"]
+#: ``part``: a file for ``<include>``, not a model alone: it reads back to the same
+#: elements, and the files that include it compile; ``error``: mjcf-model could not
+#: read or write it, or the round trip does not compile.
+Status = Literal["identical", "different", "not-compiled", "part", "error"]
 
 
 @attrs.frozen(kw_only=True)
@@ -54,17 +59,23 @@ class CheckResult:
 
     @property
     def ok(self) -> bool:
-        """Whether the round trip compiled to the identical model."""
-        return self.status == "identical"
+        """Whether the round trip compiled to the identical model (or a part read back the same)."""
+        return self.status in ("identical", "part")
 
 
-def check_file(path: str | os.PathLike[str], *, inline_includes: bool = False) -> CheckResult:
+def check_file(
+    path: str | os.PathLike[str], *, inline_includes: bool = False, part: bool = False
+) -> CheckResult:
     """Round-trip one MJCF file and compare the compiled models.
 
     Loads the file, writes it back to text, compiles the original and, in
     memory (:func:`mjcf_model.compiled`), the written text read as if it stood
     in the original's folder, and compares every field of the two ``MjModel``
     objects but the recorded file paths (:func:`mjcf_model.tools.compare.path_fields`).
+
+    A file MuJoCo rejects that other files include (:func:`includers_of`), or any
+    file when ``part`` is true, is checked as a part for ``<include>``: it must read
+    back to the same elements, and every file found including it must compile.
 
     Example:
         >>> check_file("/no/such/file.xml").status
@@ -78,11 +89,96 @@ def check_file(path: str | os.PathLike[str], *, inline_includes: bool = False) -
     name = str(path)
     if not Path(path).is_file():
         return CheckResult(path=name, status="error", message="no such file")
-    return _checked(
+    if part:
+        return _checked_part(Path(path), includers_of(Path(path)))
+    result = _checked(
         name,
         lambda: mujoco.MjModel.from_xml_path(name),
         lambda: load(path, inline_includes=inline_includes),
     )
+    if result.status == "not-compiled":
+        includers = includers_of(Path(path))
+        if includers:
+            return _checked_part(Path(path), includers)
+    return result
+
+
+#: How far up from a file :func:`includers_of` looks for the files that include it.
+INCLUDER_LEVELS = 2
+#: Files larger than this are not read when looking for includers.
+_INCLUDER_SIZE = 4 << 20
+_INCLUDE = re.compile(rb"""<include\s[^>]*?file\s*=\s*(["'])(.*?)\1""", re.DOTALL)
+
+
+def includers_of(path: Path) -> list[Path]:
+    """The XML files that ``<include>`` ``path``: in its folder and up to two above it.
+
+    An include's file is looked for as MuJoCo looks: beside the including file
+    (which, for the main model, is where MuJoCo looks first).
+
+    Example:
+        >>> import pathlib, tempfile
+        >>> folder = pathlib.Path(tempfile.mkdtemp())
+        >>> _ = (folder / "parts").mkdir(), (folder / "parts" / "arm.xml").write_text("<mujoco/>")
+        >>> scene = '<mujoco><include file="parts/arm.xml"/></mujoco>'
+        >>> _ = (folder / "scene.xml").write_text(scene)
+        >>> [p.name for p in includers_of(folder / "parts" / "arm.xml")]
+        ['scene.xml']
+
+    """
+    target = path.resolve()
+    found: list[Path] = []
+    folder = target.parent
+    for _ in range(INCLUDER_LEVELS + 1):
+        for candidate in sorted(folder.glob("*.xml")):
+            if candidate.resolve() == target or not candidate.is_file():
+                continue
+            try:
+                if candidate.stat().st_size > _INCLUDER_SIZE:
+                    continue
+                data = candidate.read_bytes()
+            except OSError:
+                continue
+            for match in _INCLUDE.finditer(data):
+                named = match.group(2).decode("utf-8", errors="replace")
+                if (candidate.parent / named).resolve() == target:
+                    found.append(candidate)
+                    break
+        if folder.parent == folder:
+            break
+        folder = folder.parent
+    return found
+
+
+def _checked_part(path: Path, includers: list[Path]) -> CheckResult:
+    """A part for ``<include>``: it reads back the same, and the files including it compile."""
+    import mujoco
+
+    from mjcf_model.tools.diff import changes_between
+    from serializers import dumps, load, loads
+
+    name = str(path)
+    try:
+        model = load(path)
+        changes = changes_between(model, loads(dumps(model), base_dir=path.parent, filename=name))
+    except MjcfError as error:
+        return CheckResult(path=name, status="error", message=str(error))
+    if changes:
+        differences = tuple(map(str, changes))
+        return CheckResult(path=name, status="different", differences=differences)
+    for includer in includers:
+        try:
+            mujoco.MjModel.from_xml_path(str(includer))
+        except ValueError as error:
+            message = _rejection(str(error), functools.partial(load, includer))
+            return CheckResult(
+                path=name, status="not-compiled", message=f"included by {includer}: {message}"
+            )
+    if not includers:
+        message = "a part for <include>: it reads back the same; no file including it was found"
+    else:
+        message = "a part for <include>, included by " + ", ".join(map(str, includers))
+    return CheckResult(path=name, status="part", message=message)
 
 
 def check_text(text: str, *, filename: str = "<stdin>") -> CheckResult:

@@ -2,8 +2,9 @@
 
 ``mjcf-model check FILE...`` loads each file, writes it back, compiles the
 original and the written model with MuJoCo and reports whether the two are
-identical field by field. It exits with status 1 when any file differs or
-fails, 0 otherwise. ``mjcf-model check --example`` runs it on the example
+identical field by field. It exits with status 1 when any file differs, fails
+or is rejected by MuJoCo, 0 otherwise; a part for ``<include>`` is checked as
+such (see :func:`mjcf_model.tools.check.check_file`). ``mjcf-model check --example`` runs it on the example
 model that ships with the package.
 
 Example:
@@ -43,6 +44,9 @@ def _report(result: CheckResult, out: TextIO, verbose: bool) -> None:
     elif result.status == "different":
         fields = ", ".join(result.differences)
         out.write(f"DIFFERENT     {result.path}\n              fields: {fields}\n")
+    elif result.status == "part":
+        if verbose:
+            out.write(f"part          {result.path}\n              {result.message}\n")
     elif result.status == "not-compiled":
         out.write(f"not compiled  {result.path}\n              {result.message}\n")
     else:
@@ -50,7 +54,7 @@ def _report(result: CheckResult, out: TextIO, verbose: bool) -> None:
 
 
 def _summary(results: Iterable[CheckResult]) -> dict[str, int]:
-    counts = {"identical": 0, "different": 0, "not-compiled": 0, "error": 0}
+    counts = {"identical": 0, "part": 0, "different": 0, "not-compiled": 0, "error": 0}
     for result in results:
         counts[result.status] += 1
     return counts
@@ -68,7 +72,9 @@ def _check(arguments: argparse.Namespace) -> int:
         if path == STDIO:
             result = _check_stdin()
         else:
-            result = check_file(path, inline_includes=arguments.inline_includes)
+            result = check_file(
+                path, inline_includes=arguments.inline_includes, part=arguments.part
+            )
         results.append(result)
         if not arguments.quiet:
             _report(result, sys.stdout, verbose=True)
@@ -76,9 +82,7 @@ def _check(arguments: argparse.Namespace) -> int:
     if not arguments.quiet:
         parts = ", ".join(f"{n} {status}" for status, n in counts.items() if n)
         sys.stdout.write(f"{len(results)} files: {parts}\n")
-    failed = counts["different"] + counts["error"]
-    if arguments.strict:
-        failed += counts["not-compiled"]
+    failed = counts["different"] + counts["error"] + counts["not-compiled"]
     return 1 if failed else 0
 
 
@@ -89,8 +93,11 @@ def add_parsers(commands: Any) -> None:
         help="round-trip MJCF files and compare the compiled models",
         description=(
             "Load each file, write it back, compile the original and the written "
-            "model with MuJoCo and compare every field. Exit status 1 if any file "
-            "differs or fails."
+            "model with MuJoCo and compare every field. A file MuJoCo rejects that "
+            "another file in its folder (or up to two above) includes is checked as a "
+            "part: it must read back the same, and the files including it must compile. "
+            "Exit status 1 if any file differs, fails or is rejected by MuJoCo (the "
+            "message names the file, line and element)."
         ),
     )
     check.add_argument("files", nargs="*", help="MJCF files to check (- for stdin)")
@@ -99,7 +106,12 @@ def add_parsers(commands: Any) -> None:
         "--inline-includes", action="store_true", help="inline <include> files before writing"
     )
     check.add_argument(
-        "--strict", action="store_true", help="count files MuJoCo itself rejects as failures"
+        "--part",
+        action="store_true",
+        help="the files are parts for <include>: check that they read back the same, "
+        "and that the files found including them compile",
     )
+    # Rejected files fail by default now; --strict stays accepted for old CI jobs.
+    check.add_argument("--strict", action="store_true", help=argparse.SUPPRESS)
     check.add_argument("-q", "--quiet", action="store_true", help="print nothing; exit status only")
     check.set_defaults(run=_check)
