@@ -85,7 +85,7 @@ def test_fmt_diff_and_stdin(tmp_path: Path) -> None:
     shown = run("fmt", "--diff", str(path))
     assert shown.returncode == 1
     assert shown.stdout.startswith(f"--- {path}\n+++ {path}\n@@")
-    assert '+      <geom name="upper" size="0.1 0.2" type="capsule"/>' in shown.stdout
+    assert '+      <geom name="upper" size="0.10 0.2" type="capsule"/>' in shown.stdout
     assert path.read_text() == UNTIDY
     piped = run("fmt", "-", stdin=UNTIDY)
     assert piped.returncode == 0, piped.stderr

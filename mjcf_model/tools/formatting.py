@@ -1,9 +1,12 @@
-"""The canonical form of an MJCF file, and the proof that it compiles to the same model.
+"""The tidy form of an MJCF file, and the proof that it compiles to the same model.
 
-:func:`format_text` rewrites MJCF text in the form the writer produces for a model
-built in code (``dumps(model, canonical=True)``: two-space indentation, one element
-a line, numbers in their shortest form, comments kept). A rewrite is only offered
-with a proof that nothing changed:
+:func:`format_text` rewrites MJCF text in its tidy form (:mod:`serializers.tidy`):
+one element a line, indented by depth, long start tags wrapped one attribute a
+line; comments, blank lines between elements, attribute order and the spelling of
+every number kept (``normalize_numbers`` writes the shortest form instead). The
+settings come from :class:`FormatOptions`, which ``mjcf-model fmt`` reads from
+``[tool.mjcf-model]`` in ``pyproject.toml`` (:func:`options_from_pyproject`). A
+rewrite is only offered with a proof that nothing changed:
 
 * ``"compiled"``: MuJoCo compiles the original and the rewrite to the identical
   model (every ``MjModel`` field but the recorded file paths);
@@ -18,15 +21,21 @@ the rewrite must not be written.
 >>> print(result.text, end="")
 <mujoco>
   <worldbody>
-    <geom size="0.1"/>
+    <geom size="0.10"/>
   </worldbody>
 </mujoco>
 >>> result.changed, result.proof, result.differences
 (True, 'compiled', ())
+>>> print(format_text("<mujoco><option timestep='0.0020'/></mujoco>",
+...                   options=FormatOptions(normalize_numbers=True)).text, end="")
+<mujoco>
+  <option timestep="0.002"/>
+</mujoco>
 """
 
 from __future__ import annotations
 
+import functools
 import os
 from collections.abc import Callable
 from pathlib import Path
@@ -34,14 +43,94 @@ from typing import Any, Literal
 
 import attrs
 
-from mjcf_model.errors import MjcfCompileError, unreadable_file
+from mjcf_model.errors import MjcfCompileError, MjcfValueError, unreadable_file
 from mjcf_model.tools.check import standing_path, text_folder, written_differences
 from mjcf_model.tools.diff import changes_between
+from serializers.tidy import DEFAULT_WIDTH
 
-__all__ = ["Formatted", "Proof", "format_file", "format_text"]
+__all__ = [
+    "FormatOptions",
+    "Formatted",
+    "Proof",
+    "format_file",
+    "format_text",
+    "options_from_pyproject",
+]
 
 #: How a rewrite was shown to change nothing (``"unchanged"``: it is the same text).
 Proof = Literal["unchanged", "compiled", "elements"]
+
+
+@attrs.frozen(kw_only=True)
+class FormatOptions:
+    """How :func:`format_text` lays a file out.
+
+    Example:
+        >>> FormatOptions(width=120, indent=4)
+        FormatOptions(width=120, indent=4, normalize_numbers=False)
+
+    """
+
+    #: Wrap a start tag whose line is longer than this, one attribute a line.
+    width: int = attrs.field(default=DEFAULT_WIDTH, validator=attrs.validators.ge(20))
+    #: Spaces per level of indentation.
+    indent: int = attrs.field(default=2, validator=[attrs.validators.ge(0), attrs.validators.le(8)])
+    #: Write every number in its shortest form instead of keeping its spelling.
+    normalize_numbers: bool = False
+
+
+#: The keys ``[tool.mjcf-model]`` in ``pyproject.toml`` may set, and the type of each.
+_SETTINGS = {"width": int, "indent": int, "normalize-numbers": bool}
+
+
+def options_from_pyproject(start: str | os.PathLike[str]) -> tuple[FormatOptions, Path | None]:
+    r"""The options ``[tool.mjcf-model]`` sets in the ``pyproject.toml`` nearest ``start``.
+
+    Looked for in ``start`` (a folder or file) and each folder above it, as ruff and
+    black look; the defaults (and ``None``) when there is none.
+
+    Raises:
+        MjcfValueError: The table sets a key it may not, or a value of the wrong type
+            (the message names the file).
+
+    Example:
+        >>> import pathlib, tempfile
+        >>> folder = pathlib.Path(tempfile.mkdtemp())
+        >>> _ = (folder / "pyproject.toml").write_text("[tool.mjcf-model]\nwidth = 120\n")
+        >>> options_from_pyproject(folder)[0].width
+        120
+
+    """
+    import tomllib
+
+    here = Path(start).resolve()
+    for folder in [here, *here.parents]:
+        candidate = folder / "pyproject.toml"
+        if not candidate.is_file():
+            continue
+        try:
+            table = tomllib.loads(candidate.read_text("utf-8")).get("tool", {}).get("mjcf-model")
+        except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as error:
+            raise MjcfValueError(
+                f"cannot read the settings: {error}", file=str(candidate)
+            ) from None
+        if table is None:
+            continue
+        settings: dict[str, Any] = {}
+        for key, value in table.items():
+            kind = _SETTINGS.get(key)
+            if kind is None or type(value) is not kind:
+                expected = ", ".join(f"{k} ({t.__name__})" for k, t in _SETTINGS.items())
+                raise MjcfValueError(
+                    f"[tool.mjcf-model] {key} = {value!r}: the settings are {expected}",
+                    file=str(candidate),
+                )
+            settings[key.replace("-", "_")] = value
+        try:
+            return FormatOptions(**settings), candidate
+        except ValueError as error:
+            raise MjcfValueError(f"[tool.mjcf-model]: {error}", file=str(candidate)) from None
+    return FormatOptions(), None
 
 
 @attrs.frozen(kw_only=True)
@@ -52,7 +141,7 @@ class Formatted:
     path: str
     #: The text as it was.
     original: str
-    #: The text in canonical form.
+    #: The text in tidy form.
     text: str
     #: How the rewrite was shown to change nothing.
     proof: Proof
@@ -61,7 +150,7 @@ class Formatted:
 
     @property
     def changed(self) -> bool:
-        """Whether the canonical form differs from the text as it was."""
+        """Whether the tidy form differs from the text as it was."""
         return self.text != self.original
 
     @property
@@ -70,8 +159,8 @@ class Formatted:
         return not self.differences
 
 
-def format_file(path: str | os.PathLike[str]) -> Formatted:
-    r"""The canonical form of the MJCF file ``path``, checked against the original.
+def format_file(path: str | os.PathLike[str], *, options: FormatOptions | None = None) -> Formatted:
+    r"""The tidy form of the MJCF file ``path``, checked against the original.
 
     Relative files (meshes, includes) resolve from the file's folder, as MuJoCo
     resolves them; the file itself is not written.
@@ -94,11 +183,14 @@ def format_file(path: str | os.PathLike[str]) -> Formatted:
         data = source.read_bytes()
     except OSError as error:
         raise unreadable_file(source, error) from None
-    return _formatted(data, str(source), lambda: mujoco.MjModel.from_xml_path(str(source)))
+    compile_original = functools.partial(mujoco.MjModel.from_xml_path, str(source))
+    return _formatted(data, str(source), compile_original, options or FormatOptions())
 
 
-def format_text(text: str | bytes, *, filename: str = "<string>") -> Formatted:
-    r"""The canonical form of MJCF ``text``, read as if it were the file ``filename``.
+def format_text(
+    text: str | bytes, *, filename: str = "<string>", options: FormatOptions | None = None
+) -> Formatted:
+    r"""The tidy form of MJCF ``text``, read as if it were the file ``filename``.
 
     Relative files resolve from the folder of ``filename`` (the working folder for
     ``"<string>"`` or ``"<stdin>"``).
@@ -113,17 +205,29 @@ def format_text(text: str | bytes, *, filename: str = "<string>") -> Formatted:
 
     """
     decoded = text if isinstance(text, str) else text.decode("utf-8", errors="replace")
-    return _formatted(text, filename, lambda: _compiled_text(decoded, standing_path(filename)))
+    compile_original = functools.partial(_compiled_text, decoded, standing_path(filename))
+    return _formatted(text, filename, compile_original, options or FormatOptions())
 
 
-def _formatted(data: str | bytes, filename: str, compile_original: Callable[[], Any]) -> Formatted:
-    """The canonical form of ``data`` read as ``filename``, and its proof."""
-    from serializers import dumps, loads
+def _formatted(
+    data: str | bytes,
+    filename: str,
+    compile_original: Callable[[], Any],
+    options: FormatOptions,
+) -> Formatted:
+    """The tidy form of ``data`` read as ``filename``, and its proof."""
+    from serializers import loads
+    from serializers.tidy import tidy_text
 
     text = data if isinstance(data, str) else data.decode("utf-8", errors="replace")
     folder = text_folder(filename)
     model = loads(data, base_dir=folder, filename=filename)
-    canonical = dumps(model, canonical=True)
+    canonical = tidy_text(
+        model,
+        indent=" " * options.indent,
+        width=options.width,
+        normalize_numbers=options.normalize_numbers,
+    )
     unchanged = Formatted(path=filename, original=text, text=canonical, proof="unchanged")
     if canonical == text:
         return unchanged

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from typing import Any
 
 import numpy as np
@@ -16,21 +17,30 @@ __all__ = [
 ]
 
 
+#: An exponent as Python writes it (``e-07``, ``e+16``), its padding and plus sign to drop.
+_EXPONENT = re.compile(r"e\+?(-?)0*(\d)")
+
+
 def format_float(value: float) -> str:
     """Write a float as the shortest text that reads back to the same double.
 
-    Integral values drop the ``.0`` (``1.0`` becomes ``"1"``); ``-0.0`` keeps its sign.
+    The fewest digits that read back exactly (Python's ``repr``), with integral
+    values without ``.0`` (``1.0`` becomes ``"1"``) and exponents without padding
+    or plus sign (``1e-07`` becomes ``"1e-7"``); ``-0.0`` keeps its sign.
 
     Example:
-        >>> format_float(0.1), format_float(2.0), format_float(-0.0), format_float(1e-08)
-        ('0.1', '2', '-0', '1e-08')
+        >>> format_float(0.1), format_float(2.0), format_float(-0.0), format_float(8.2904e-07)
+        ('0.1', '2', '-0', '8.2904e-7')
+        >>> format_float(1e16), format_float(2.5e-300)
+        ('1e16', '2.5e-300')
 
     """
     if value.is_integer() and abs(value) < 1e16:
         if value == 0.0 and math.copysign(1.0, value) < 0:
             return "-0"
         return str(int(value))
-    return repr(value)
+    text = repr(value)
+    return _EXPONENT.sub(r"e\1\2", text) if "e" in text else text
 
 
 def format_value(value: Value) -> str:
@@ -62,7 +72,8 @@ def _format_items(values: Floats | Ints) -> str:
     if kinds == _ONLY_FLOATS:
         # What format_float does, in C: repr is the shortest text, and an integral
         # float below 1e16 is the only one whose repr ends in ".0", which goes.
-        return (" ".join(map(repr, values)) + " ").replace(".0 ", " ")[:-1]
+        text = (" ".join(map(repr, values)) + " ").replace(".0 ", " ")[:-1]
+        return _EXPONENT.sub(r"e\1\2", text) if "e" in text else text
     if kinds == _ONLY_INTS:
         return " ".join(map(str, values))
     return " ".join(format_float(v) if isinstance(v, float) else str(v) for v in values)

@@ -4,8 +4,8 @@
 original and the written model with MuJoCo and reports whether the two are
 identical field by field. It exits with status 1 when any file differs, fails
 or is rejected by MuJoCo, 0 otherwise; a part for ``<include>`` is checked as
-such (see :func:`mjcf_model.tools.check.check_file`). ``mjcf-model check --example`` runs it on the example
-model that ships with the package.
+such (see :func:`mjcf_model.tools.check.check_file`). ``mjcf-model check
+--example`` runs it on the example model that ships with the package.
 
 Example:
     >>> from mjcf_model.tools.cli import main

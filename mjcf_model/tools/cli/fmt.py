@@ -1,5 +1,9 @@
-"""``mjcf-model fmt``: rewrite MJCF files in canonical form, as ``ruff format`` does for code.
+"""``mjcf-model fmt``: lay MJCF files out tidily, as ``ruff format`` does for code.
 
+Indentation, one element a line and long start tags wrapped; comments, blank lines
+between elements and the spelling of numbers kept (:mod:`serializers.tidy`). The
+width and indentation come from ``[tool.mjcf-model]`` in the nearest
+``pyproject.toml`` (``width``, ``indent``, ``normalize-numbers``), or the options.
 A file is rewritten only with proof that MuJoCo compiles the rewrite to the same
 model (:mod:`mjcf_model.tools.formatting`); otherwise it is left alone and the
 command fails. ``--check`` and ``--diff`` write nothing.
@@ -23,20 +27,46 @@ from __future__ import annotations
 
 import argparse
 import difflib
+import os
 import sys
+from pathlib import Path
 from typing import Any
 
-from mjcf_model.errors import MjcfError
+import attrs
+
+from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.tools.cli.common import STDIO, progress, read_stdin, said, write_text
-from mjcf_model.tools.formatting import Formatted, format_file, format_text
+from mjcf_model.tools.formatting import (
+    FormatOptions,
+    Formatted,
+    format_file,
+    format_text,
+    options_from_pyproject,
+)
 
 __all__ = ["add_parsers"]
 
 
-def _formatted(path: str) -> Formatted:
+def _formatted(path: str, options: FormatOptions) -> Formatted:
     if path == STDIO:
-        return format_text(read_stdin(), filename="<stdin>")
-    return format_file(path)
+        return format_text(read_stdin(), filename="<stdin>", options=options)
+    return format_file(path, options=options)
+
+
+def _options(arguments: argparse.Namespace) -> FormatOptions:
+    """The settings of the nearest ``pyproject.toml``, with the command line's over them."""
+    files = [Path(f).resolve().parent for f in arguments.files if f != STDIO]
+    start = Path(os.path.commonpath(files)) if files else Path.cwd()
+    options, _ = options_from_pyproject(start)
+    given = {
+        "width": arguments.width,
+        "indent": arguments.indent,
+        "normalize_numbers": arguments.normalize_numbers or None,
+    }
+    try:
+        return attrs.evolve(options, **{k: v for k, v in given.items() if v is not None})
+    except ValueError as error:
+        raise MjcfValueError(f"--width or --indent: {error}") from None
 
 
 def _unified(result: Formatted) -> str:
@@ -54,9 +84,14 @@ def _fmt(arguments: argparse.Namespace) -> int:
     files: list[str] = arguments.files
     writing = not (arguments.check or arguments.diff)
     counts = {"reformatted": 0, "unchanged": 0, "failed": 0}
+    try:
+        options = _options(arguments)
+    except MjcfError as error:
+        _say(arguments, f"error: {said(error)}")
+        return 2
     for path in progress(files, arguments.quiet):
         try:
-            result = _formatted(path)
+            result = _formatted(path, options)
         except MjcfError as error:
             _say(arguments, f"error: {said(error)}")
             counts["failed"] += 1
@@ -106,10 +141,14 @@ def add_parsers(commands: Any) -> None:
     """Add ``fmt`` to the command line's verbs."""
     fmt = commands.add_parser(
         "fmt",
-        help="rewrite MJCF files in canonical form (the compiled model unchanged)",
+        help="lay MJCF files out tidily (the compiled model unchanged)",
         description=(
-            "Rewrite each file in the canonical form mjcf-model writes: two-space "
-            "indentation, shortest numbers, comments kept. A file is rewritten only when "
+            "Lay each file out tidily: one element a line, indented by depth, a start tag "
+            "longer than the width wrapped one attribute a line; comments, attribute order, "
+            "one blank line where the file had blank lines, and every number's spelling "
+            "kept (--normalize-numbers: the shortest form). Settings come from "
+            "[tool.mjcf-model] in the nearest pyproject.toml (width, indent, "
+            "normalize-numbers), then these options. A file is rewritten only when "
             "MuJoCo compiles the rewrite to the identical model (for a file MuJoCo rejects "
             "on its own, when the elements read back the same). '-' reads standard input "
             "and writes standard output. Exit status 1 when --check or --diff finds a file "
@@ -122,6 +161,15 @@ def add_parsers(commands: Any) -> None:
     )
     fmt.add_argument(
         "--diff", action="store_true", help="write nothing; print a unified diff of the changes"
+    )
+    fmt.add_argument(
+        "--width", type=int, metavar="N", help="wrap start tags longer than N (default 100)"
+    )
+    fmt.add_argument("--indent", type=int, metavar="N", help="spaces per level (default 2)")
+    fmt.add_argument(
+        "--normalize-numbers",
+        action="store_true",
+        help="write every number in its shortest form instead of as written",
     )
     fmt.add_argument("-q", "--quiet", action="store_true", help="print errors only")
     fmt.set_defaults(run=_fmt)
