@@ -55,6 +55,16 @@ def epilog_end(raw: bytes, index: int, limit: int) -> int:
             return index
 
 
+#: What to say of a byte that is not UTF-8. MuJoCo's parser passes such bytes
+#: through (a Latin-1 comment compiles), but a node holds text as Unicode: mjcf-model
+#: refuses the file rather than change bytes it would write back.
+NOT_UTF8_ADVICE = (
+    "MuJoCo passes such bytes through, but mjcf-model reads files as UTF-8 (as XML does) "
+    "and would not write them back as they were; save the file as UTF-8 "
+    "(for a Latin-1 file: iconv -f latin1 -t utf-8)"
+)
+
+
 def character_hint(found: bytes) -> str:
     """What to say about the bytes where expat stopped, when they are the cause."""
     try:
@@ -62,10 +72,7 @@ def character_hint(found: bytes) -> str:
     except UnicodeDecodeError as error:
         if error.start > 0:
             return ""
-        return (
-            f"; byte 0x{found[0]:02X} is not UTF-8: MuJoCo reads every file as UTF-8,"
-            " whatever its declaration says; save the file as UTF-8"
-        )
+        return f"; byte 0x{found[0]:02X} is not UTF-8: {NOT_UTF8_ADVICE}"
     if char and NOT_XML_CHARACTER.match(char):
         return (
             f"; U+{ord(char):04X} is a character XML cannot carry (MuJoCo's own parser"

@@ -281,6 +281,26 @@ def test_bytes_that_are_not_utf8_are_a_syntax_error() -> None:
     assert caught.value.line == 1
 
 
+def test_a_latin1_comment_is_refused_naming_byte_line_and_column(tmp_path: Path) -> None:
+    """MuJoCo compiles a file with a Latin-1 comment; mjcf-model refuses it, saying exactly where.
+
+    The decision (documented in the README): a node holds text as Unicode, so
+    the byte could not be written back as it was; the error names the byte, file,
+    line and column, and says how to convert the file.
+    """
+    path = tmp_path / "old.xml"
+    path.write_bytes(
+        b'<mujoco>\n  <!-- caf\xe9 -->\n  <worldbody><geom size="1"/></worldbody>\n</mujoco>\n'
+    )
+    assert mujoco.MjModel.from_xml_path(str(path)).ngeom == 1  # MuJoCo reads it
+    with pytest.raises(MjcfSyntaxError) as caught:
+        load(path)
+    error = caught.value
+    assert (error.file, error.line) == (str(path), 2)
+    assert "(column 11)" in str(error) and "byte 0xE9 is not UTF-8" in str(error)
+    assert "iconv -f latin1 -t utf-8" in str(error)
+
+
 @pytest.mark.parametrize(
     "text",
     [

@@ -24,6 +24,7 @@ from typing import Any, TextIO
 from mjcf_model.tools.check import CheckResult, check_file, check_text
 from mjcf_model.tools.cli.common import STDIO, progress, read_stdin
 from mjcf_model.tools.cli.examples import example_path
+from serializers.repairs import NOT_UTF8_ADVICE
 
 __all__ = ["add_parsers"]
 
@@ -33,7 +34,9 @@ def _check_stdin() -> CheckResult:
     try:
         return check_text(data.decode("utf-8"))
     except UnicodeDecodeError as error:
-        message = f"not UTF-8 (byte {error.start}); MuJoCo reads every file as UTF-8"
+        line = data.count(b"\n", 0, error.start) + 1
+        bad = data[error.start]
+        message = f"<stdin>:{line}: byte 0x{bad:02X} is not UTF-8: {NOT_UTF8_ADVICE}"
         return CheckResult(path="<stdin>", status="error", message=message)
 
 
