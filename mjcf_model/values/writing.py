@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-import re
 from typing import Any
 
 import numpy as np
@@ -17,8 +16,20 @@ __all__ = [
 ]
 
 
-#: An exponent as Python writes it (``e-07``, ``e+16``), its padding and plus sign to drop.
-_EXPONENT = re.compile(r"e\+?(-?)0*(\d)")
+def _unpadded_exponents(text: str) -> str:
+    """``text`` (numbers ``repr`` wrote) with each exponent's plus sign and zero padding gone.
+
+    Example:
+        >>> _unpadded_exponents("1e-05 2 3.5e+20")
+        '1e-5 2 3.5e20'
+
+    """
+    pieces = text.split("e")
+    for index in range(1, len(pieces)):
+        exponent, space, rest = pieces[index].partition(" ")
+        sign = "-" if exponent.startswith("-") else ""
+        pieces[index] = sign + (exponent.lstrip("+-").lstrip("0") or "0") + space + rest
+    return "e".join(pieces)
 
 
 def format_float(value: float) -> str:
@@ -40,7 +51,7 @@ def format_float(value: float) -> str:
             return "-0"
         return str(int(value))
     text = repr(value)
-    return _EXPONENT.sub(r"e\1\2", text) if "e" in text else text
+    return _unpadded_exponents(text) if "e" in text else text
 
 
 def format_value(value: Value) -> str:
@@ -73,7 +84,7 @@ def _format_items(values: Floats | Ints) -> str:
         # What format_float does, in C: repr is the shortest text, and an integral
         # float below 1e16 is the only one whose repr ends in ".0", which goes.
         text = (" ".join(map(repr, values)) + " ").replace(".0 ", " ")[:-1]
-        return _EXPONENT.sub(r"e\1\2", text) if "e" in text else text
+        return _unpadded_exponents(text) if "e" in text else text
     if kinds == _ONLY_INTS:
         return " ".join(map(str, values))
     return " ".join(format_float(v) if isinstance(v, float) else str(v) for v in values)
