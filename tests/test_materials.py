@@ -13,6 +13,7 @@ import attrs
 import mujoco
 import numpy as np
 import pytest
+from hypothesis import given, settings
 from PIL import Image
 from robosuite.utils import mjcf_utils
 
@@ -37,6 +38,8 @@ from mjcf_model.compat.materials import (
     with_material,
 )
 from mjcf_model.nodes.base import AnyElement, Element, get_attribute
+from mjcf_model.strategies import models
+from mjcf_model.tools.compare import model_differences
 from serializers import dumps, load, loads, to_etree
 from tests.conftest import corpus_id, loading_corpus
 
@@ -447,3 +450,34 @@ def test_recolored_matches_robosuite_on_the_corpus(path: Path) -> None:
 def test_robosuite_corpus_is_covered() -> None:
     """The corpus tests above include robosuite's own models."""
     assert len(ROBOSUITE_CORPUS) >= 50
+
+
+@settings(max_examples=30, deadline=None)
+@given(models())
+def test_recoloured_drawn_models_compile_with_only_collision_colours_changed(
+    model: Mujoco,
+) -> None:
+    """MuJoCo compiles every recoloured drawn model; only geoms' colours and materials change.
+
+    A spatial tendon's ``<geom geom="..."/>`` is a wrapping reference: painting it (as
+    robosuite's own function does) made models MuJoCo rejects ("unrecognized attribute
+    'rgba'"). The oracle: every geom MuJoCo puts in group 0 has the colour and no
+    material; any other geom keeps its colour and material or, when it takes them from a
+    default class whose geom the function painted (robosuite's convention, by the group
+    written on each ``geom`` element), has the colour and no material; every other
+    compiled array is unchanged.
+    """
+    rgba = (1.0, 0.0, 0.0, 1.0)
+    colour = np.float32(rgba)
+    before = mujoco.MjModel.from_xml_string(dumps(model))
+    after = mujoco.MjModel.from_xml_string(dumps(recolored_collision_geoms(model, rgba)))
+    for index, group in enumerate(before.geom_group):
+        painted = (after.geom_rgba[index] == colour).all() and after.geom_matid[index] == -1
+        if group == 0:
+            assert painted
+        else:
+            kept = (after.geom_rgba[index] == before.geom_rgba[index]).all() and (
+                after.geom_matid[index] == before.geom_matid[index]
+            )
+            assert kept or (after.geom_rgba[index] == colour).all()
+    assert model_differences(before, after, ignore={"geom_rgba", "geom_matid"}) == []

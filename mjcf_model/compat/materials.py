@@ -38,6 +38,7 @@ from mjcf_model.nodes.base import (
     ordered_node,
     with_attributes,
 )
+from mjcf_model.nodes.tendon import TendonGeom
 from mjcf_model.transforms.recolouring import with_collision_colour
 from mjcf_model.tree.queries import geom_role
 from mjcf_model.tree.traversal import map_tree
@@ -150,7 +151,7 @@ class CustomMaterial:
     Raises:
         MjcfValueError: ``texture`` is an unknown name or not four numbers.
 
-    Example:
+    Examples:
         >>> wood = CustomMaterial(
         ...     texture="WoodDark",
         ...     tex_name="dark_wood",
@@ -186,7 +187,7 @@ class CustomMaterial:
     def name(self) -> str:
         """The material name (robosuite's ``CustomMaterial.name``).
 
-        Example:
+        Examples:
             >>> CustomMaterial(texture=None, tex_name="t", mat_name="m").name
             'm'
 
@@ -200,7 +201,7 @@ class CustomMaterial:
         Raises:
             MjcfLookupError: The texture is a name and robosuite is not installed.
 
-        Example:
+        Examples:
             >>> flat = CustomMaterial(texture=(0.2, 0.4, 0.6, 1), tex_name="t", mat_name="m")
             >>> node = flat.texture_node
             >>> node.name, node.builtin, node.rgb1, node.width, node.height
@@ -234,7 +235,7 @@ class CustomMaterial:
         ``(1, 1, 1, alpha)`` (unless ``mat_attrib`` sets ``rgba``): a flat
         texture has no alpha channel.
 
-        Example:
+        Examples:
             >>> glass = CustomMaterial(texture=[0.5, 0.5, 1, 0.25], tex_name="t", mat_name="m")
             >>> glass.material_node.texture, glass.material_node.rgba
             ('t', (1.0, 1.0, 1.0, 0.25))
@@ -253,7 +254,7 @@ class CustomMaterial:
 
         The prefix is always added, even to a name that already starts with it.
 
-        Example:
+        Examples:
             >>> plain = CustomMaterial(texture=None, tex_name="t", mat_name="m")
             >>> plain.prefixed("p_").tex_name, plain.prefixed("p_").prefixed("p_").name
             ('p_t', 'p_p_m')
@@ -285,7 +286,7 @@ DEFAULT_MATERIAL = CustomMaterial(
 class MaterialResult(NamedTuple, Generic[_E]):
     """What :func:`with_material` returns.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> tree, texture, material, used = with_material(Geom(group=1))
         >>> tree.material, texture.name, material.name, used
@@ -324,7 +325,7 @@ def with_material(
         The new tree, the texture and material nodes, and whether any geom took
         the material.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> body = Body(children=[Geom(name="v", group=1), Geom(name="m", group=1, material="x")])
         >>> result = with_material(body, CustomMaterial(texture=None, tex_name="t", mat_name="m"))
@@ -355,14 +356,20 @@ def recolored_collision_geoms(
 ) -> _E:
     """Paint every collision geom ``rgba``: robosuite's ``recolor_collision_geoms``.
 
-    Every ``geom`` element (``node`` included) whose group is not written or is
-    0, and for which ``exclude(geom)`` is not true, gets ``rgba`` and loses its
-    ``material``. Unchanged subtrees are the input's own.
+    Every geom (``node`` included) whose group is not written or is 0, and for
+    which ``exclude(geom)`` is not true, gets ``rgba`` and loses its ``material``.
+    A spatial tendon's ``<geom geom="..."/>`` (a wrapping reference, which MuJoCo
+    gives no colour) is left alone, unlike robosuite's function, which paints it
+    and makes a model MuJoCo rejects (``mjcf_utils.recolor_collision_geoms`` keeps
+    robosuite's behaviour). As robosuite's, it goes by the group written on each
+    ``geom`` element, in ``<default>`` too: a default class's geom without a group
+    is painted, and so is every geom that takes its colour from that class.
+    Unchanged subtrees are the input's own.
 
     Raises:
         MjcfValueError: ``rgba`` is not four numbers.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> body = Body(children=[Geom(name="floor"), Geom(name="box", material="wood")])
         >>> new = recolored_collision_geoms(body, [0, 0.5, 0, 1], lambda g: g.name == "floor")
@@ -372,4 +379,8 @@ def recolored_collision_geoms(
     """
     colour: Value | None = to_vec4(rgba)
     assert colour is not None, "to_vec4 refuses None: rgba is required"
-    return with_collision_colour(node, lambda: colour, exclude)
+
+    def left_alone(element: AnyElement) -> bool:
+        return isinstance(element, TendonGeom) or (exclude is not None and exclude(element))
+
+    return with_collision_colour(node, lambda: colour, left_alone)
