@@ -97,7 +97,7 @@ class MjcfError(Exception):
     def for_command_line(self) -> str:
         """The message, its advice speaking of files and options instead of Python arguments.
 
-        Example:
+        Examples:
             >>> error = MjcfValueError("no file", advice=Advice("pass assets=", "copy it here"))
             >>> str(error), error.for_command_line()
             ('no file: pass assets=', 'no file: copy it here')
@@ -110,7 +110,7 @@ class MjcfError(Exception):
     ) -> MjcfError:
         """Return a copy of this error with missing location parts filled in.
 
-        Example:
+        Examples:
             >>> err = MjcfValueError("bad").located(file="a.xml", line=3)
             >>> str(err)
             'a.xml:3: bad'
@@ -184,7 +184,7 @@ class MjcfAssetError(MjcfFileError):
 def unreadable_file(path: object, error: OSError) -> MjcfFileError:
     """The error for a file given to read that cannot be: ``error``'s reason, and its kind.
 
-    Example:
+    Examples:
         >>> try:
         ...     open("/no/such/model.xml")
         ... except OSError as error:

@@ -39,7 +39,7 @@ def element_text(chunks: Sequence[str | None], has_children: bool) -> str | None
     chunk is stripped and the non-blank ones are joined by a space, so that
     re-indenting on write does not change the text. White space alone is ``None``.
 
-    Example:
+    Examples:
         >>> element_text(["  a b "], False), element_text(["\n  ", " > ", "\n"], True)
         ('  a b ', '>')
 
@@ -54,7 +54,7 @@ def element_text(chunks: Sequence[str | None], has_children: bool) -> str | None
 def element_step(tag: str, attributes: Sequence[tuple[str, str]], index: int) -> str:
     """One step of an element path: ``body[@name='arm']`` or ``geom[3]`` (1-based).
 
-    Example:
+    Examples:
         >>> element_step("body", [("name", "arm")], 1), element_step("geom", [], 3)
         ("body[@name='arm']", 'geom[3]')
 
@@ -96,7 +96,7 @@ def build_element(
         layout: Where the element was read: the node keeps it.
         memo: One dict per document: each attribute text is converted once.
 
-    Example:
+    Examples:
         >>> build_element("body/geom", "geom", [("size", "1 x")], [], None).size
         Unparsed('1 x')
 
@@ -189,7 +189,7 @@ def read_typed(
             converts them (a 50 MB number list becomes floats once expat has let go
             of its own copies of the text, which halves the peak memory of reading).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> from mjcf_model.nodes.layout import SourceText
         >>> origin = SourceText(b'<geom size="1"/>')
@@ -250,7 +250,7 @@ def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout)
     in ``detail`` with the writer's fast check (:attr:`LayoutDetail.getter` and
     :attr:`LayoutDetail.stored`, for a typed element whose attributes all have fields).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> from mjcf_model.nodes.layout import SourceText, detail
         >>> text = b'<geom size="1" condim="x" colour="red"/>'

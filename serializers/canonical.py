@@ -43,7 +43,7 @@ TEXT_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;", "\r": "&#1
 def attribute_texts(element: AnyElement) -> list[tuple[str, str]]:
     """The element's attributes as ``(name, text)`` pairs, as they will be written.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Joint
         >>> attribute_texts(Joint(name="j", range=[-1, 1.5]))
         [('name', 'j'), ('range', '-1 1.5')]

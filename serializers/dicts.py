@@ -108,7 +108,7 @@ def _children_of(data: Mapping[str, Any], where: Callable[[], str]) -> list[Any]
 def to_dict(node: Node) -> dict[str, Any]:
     """Convert a node and its subtree to plain, JSON-safe dicts and lists.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Joint
         >>> to_dict(Joint(range=(0, float("inf"))))
         {'range': [0.0, 'inf'], '_node': 'Joint'}
@@ -160,7 +160,7 @@ def from_dict(data: Mapping[str, Any]) -> Node:
     Raises:
         MjcfValueError: The dict does not describe a node; the message says where.
 
-    Example:
+    Examples:
         >>> from_dict({"_node": "Site", "name": "s"})
         Site(name='s')
 

@@ -34,7 +34,7 @@ def from_etree(element: ET.Element, *, context: str | None = None, typed: bool =
             :class:`~mjcf_model.GenericElement` holding its attribute text exactly
             as given, so text MuJoCo would reject (``group="1.0"``) still converts.
 
-    Example:
+    Examples:
         >>> import xml.etree.ElementTree as ET
         >>> from_etree(ET.fromstring('<geom size="0.1"/>')).size
         (0.1,)

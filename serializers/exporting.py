@@ -64,7 +64,7 @@ def export(
         MjcfAssetError: A file the model names cannot be read, or the folder
             cannot be written.
 
-    Example:
+    Examples:
         >>> import pathlib, tempfile
         >>> from serializers import load, loads
         >>> model = loads('<mujoco><asset><texture name="t" type="2d" file="../img/wood.png"/>'

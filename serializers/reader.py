@@ -147,7 +147,7 @@ def loads(
         MjcfIncludeError: An included file is missing or files include each other.
         MjcfSecurityError: The text declares a DTD or entities.
 
-    Example:
+    Examples:
         >>> loads("<mujoco><!-- hi --></mujoco>").children
         (Comment(text=' hi '),)
 
@@ -184,7 +184,7 @@ def load(
         inline_attachments: Replace each ``<attach>`` by what MuJoCo attaches there
             (see :func:`mjcf_model.transforms.composition.inlining.inlined_attachments`).
 
-    Example:
+    Examples:
         >>> import tempfile, pathlib
         >>> path = pathlib.Path(tempfile.mkdtemp()) / "m.xml"
         >>> _ = path.write_text('<mujoco model="m"/>')

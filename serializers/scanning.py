@@ -38,7 +38,7 @@ def may_hold_text(raw: bytes) -> bool:
     section: with the white space taken out, every ``>`` of a file without it is
     followed by ``<`` or ends the file. A ``>`` inside a value says "may": harmless.
 
-    Example:
+    Examples:
         >>> may_hold_text(b"<a>\n  <b/>\n</a>"), may_hold_text(b"<a> x </a>")
         (False, True)
 

@@ -157,7 +157,7 @@ def float32_as_written(values: Sequence[float]) -> NDArray[np.float32]:
     halfway between two float32 values and its shortest text does not: that text
     is on one side of the midpoint, and decides.
 
-    Example:
+    Examples:
         >>> halfway = 0.31089024245738983  # between two float32 values, exactly
         >>> float(np.float32(halfway)), float(float32_as_written([halfway])[0])
         (0.310890257358551, 0.31089022755622864)
@@ -185,7 +185,7 @@ def skin_file_bytes(skin: Skin) -> bytes | None:
     more, a bone without its four arrays, children other than bones and comments,
     or counts that do not fit the format.
 
-    Example:
+    Examples:
         >>> from mjcf_model.nodes.asset import Bone, Skin
         >>> bone = Bone(body="torso", bindpos=[0, 0, 0], bindquat=[1, 0, 0, 0],
         ...             vertid=[0], vertweight=[1])
@@ -234,7 +234,7 @@ def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str] | None = 
     under the compiler's ``meshdir`` (or ``assetdir``), from ``directory``, the
     folder of the model file (by default the model's own ``base_dir``).
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> m = loads('<mujoco><worldbody/></mujoco>')
         >>> inline_skin_files(m, ".") is m
@@ -279,7 +279,7 @@ def with_file_skins_inline(node: AnyElement) -> AnyElement:
     read its skin files first (:func:`inline_skin_files`). Any other node, and a
     model without skin files, is returned as it is.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads("<mujoco/>", base_dir=".")
         >>> with_file_skins_inline(model) is model

@@ -60,7 +60,7 @@ def tidy_text(
         width: Wrap a start tag whose line would be longer than this.
         normalize_numbers: Write every number in its shortest form instead of as read.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> print(tidy_text(Geom(name="g", size=(1, 2, 3)), width=20), end="")
         <geom

@@ -58,7 +58,7 @@ def dumps(node: Node, *, indent: str = "  ", canonical: bool = False) -> str:
         indent: The indentation of one nesting level in the canonical form.
         canonical: Write the canonical form even for a loaded node, as a formatter would.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Site
         >>> dumps(Site(name="tip", pos=(0, 0, 0.1)))
         '<site name="tip" pos="0 0 0.1"/>\n'
@@ -110,7 +110,7 @@ def dump(
         MjcfAssetError: The path's folder cannot be created or written into (a file
             is in the way, no permission); the message names the folder.
 
-    Example:
+    Examples:
         >>> import tempfile, pathlib
         >>> from mjcf_model import Mujoco
         >>> path = pathlib.Path(tempfile.mkdtemp()) / "out" / "scene.xml"
@@ -141,7 +141,7 @@ def write_atomically(data: str | bytes, target: str | os.PathLike[str]) -> None:
         MjcfAssetError: The target's folder cannot be created or written into (a
             file is in the way, no permission); the message names the folder.
 
-    Example:
+    Examples:
         >>> import tempfile, pathlib
         >>> path = pathlib.Path(tempfile.mkdtemp()) / "new" / "out.xml"
         >>> write_atomically("<mujoco/>", path)
@@ -236,7 +236,7 @@ def to_etree(node: Node) -> ET.Element:
 
     Comments become ``ET.Comment`` elements; attribute order is kept.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> ET.tostring(to_etree(Body(name="b", children=[Geom(size=[1])])), encoding="unicode")
         '<body name="b"><geom size="1" /></body>'

@@ -53,7 +53,7 @@ _ACTUATORS: dict[str, type[ActuatorElement]] = {
 def new_element(tag: str, name: str | None = None, **attributes: Any) -> AnyElement:
     """A new element of ``tag``, typed where the tag has a class (``dclass`` is ``class``).
 
-    Example:
+    Examples:
         >>> body = new_element("body", None, pos=[0, 0, 1], quat=None, mass=0.5, flag=True)
         >>> type(body).__name__, body.pos, body.extra["flag"]
         ('Body', (0.0, 0.0, 1.0), 'true')
@@ -80,7 +80,7 @@ def new_actuator(
     Raises:
         MjcfLookupError: ``act_type`` is not an actuator tag.
 
-    Example:
+    Examples:
         >>> type(new_actuator("m", "elbow")).__name__
         'Motor'
 

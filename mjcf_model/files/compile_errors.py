@@ -42,7 +42,7 @@ __all__ = ["Complaint", "compile_error"]
 class Complaint:
     r"""MuJoCo's message, split into what it says and the element it names.
 
-    Example:
+    Examples:
         >>> Complaint.parse("XML Error: bad\nElement 'geom', line 4\n")
         Complaint(what='XML Error: bad', line=4, tag='geom', name=None, element="Element 'geom'")
 
@@ -63,7 +63,7 @@ class Complaint:
     def parse(cls, message: str) -> Complaint:
         r"""Split MuJoCo's ``message``.
 
-        Example:
+        Examples:
             >>> Complaint.parse("Error: no\nElement name 'j', id 0, line 7").name
             'j'
             >>> Complaint.parse("Error: no mass").line is None
@@ -109,7 +109,7 @@ def compile_error(message: str, model: Mujoco, bundle: Bundle, text: str) -> Mjc
         bundle: The bundle written from it (includes read in, file paths renamed).
         text: The text written from ``bundle.model`` and given to MuJoCo.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom, Mujoco, Worldbody
         >>> from mjcf_model.files.compiling import bundled
         >>> from serializers import dumps

@@ -84,7 +84,7 @@ def inlined(model: Mujoco) -> Mujoco:
     the working folder), as :func:`serializers.load` with ``inline_includes``
     finds them.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads("<mujoco><worldbody/></mujoco>")
         >>> inlined(model) is model
@@ -135,7 +135,7 @@ def bundled(
         MjcfAssetError: A file cannot be read and is not in ``assets``.
         MjcfIncludeError: Asset ``<model>`` files refer to each other in a cycle.
 
-    Example:
+    Examples:
         >>> from serializers import dumps, loads
         >>> model = loads('<mujoco><compiler meshdir="m"/><asset><mesh file="x/a.obj"/>'
         ...               '</asset></mujoco>')
@@ -269,7 +269,7 @@ def compiled(model: Mujoco, *, assets: Mapping[str, bytes] | None = None) -> muj
             (:mod:`mjcf_model.files.compile_errors`).
         MjcfAssetError: A file cannot be read and is not in ``assets``.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads('<mujoco><asset><mesh name="m" file="tet.obj"/></asset>'
         ...               '<worldbody><geom type="mesh" mesh="m"/></worldbody></mujoco>')

@@ -130,7 +130,7 @@ def patched(
         ``before`` wrote, else compiled in full (with a
         :class:`~mjcf_model.MjcfRecompiledWarning`).
 
-    Example:
+    Examples:
         >>> import copy
         >>> from mjcf_model import compiled, map_elements, with_attributes
         >>> from serializers import loads

@@ -92,7 +92,7 @@ def _true(value: object) -> bool:
 class Folders:
     """The ``<compiler>`` settings that say where files are.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> Folders.of(loads('<mujoco><compiler assetdir="a" texturedir="t"/></mujoco>'))
         Folders(mesh='a', texture='t', strip=False)
@@ -113,7 +113,7 @@ class Folders:
         ``assetdir`` sets both folders, and a ``meshdir`` or ``texturedir`` in the
         same or a later section overrides it, as MuJoCo reads them.
 
-        Example:
+        Examples:
             >>> from serializers import loads
             >>> Folders.of(loads('<mujoco><compiler meshdir="m"/><compiler assetdir="a"/>'
             ...                  '</mujoco>'))
@@ -146,7 +146,7 @@ class Folders:
     def resolve(self, text: str, kind: Kind, base_dir: Path | None) -> Path:
         """Where MuJoCo looks for the file a path of ``kind`` names, read from ``base_dir``.
 
-        Example:
+        Examples:
             >>> from pathlib import Path
             >>> Folders(mesh="meshes").resolve("arm.stl", "mesh", Path("/robots"))
             PosixPath('/robots/meshes/arm.stl')
@@ -212,7 +212,7 @@ def _references(
 def file_references(model: Mujoco) -> Iterator[FileReference]:
     """Every file path written in ``model`` (kept ``<include>`` elements, not their contents).
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads('<mujoco><asset><texture type="2d" file="wood.png"/></asset></mujoco>')
         >>> [(r.key, r.attribute, r.text, r.kind) for r in file_references(model)]
@@ -229,7 +229,7 @@ def with_paths(
 ) -> Mujoco:
     """``model`` with each file path replaced by ``new_path(reference)``; the rest is shared.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads('<mujoco><asset><mesh file="a.stl"/></asset></mujoco>')
         >>> with_paths(model, lambda r: r.text.upper()).asset.elements[0].file
@@ -278,7 +278,7 @@ def relocated(
         MjcfValueError: ``folders`` strips paths (``strippath``), and a file is
             not directly in its folder.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads('<mujoco><include file="parts/arm.xml"/></mujoco>', base_dir="/robots")
         >>> relocated(model, "/robots/scenes").elements[0].file
@@ -318,7 +318,7 @@ def relocated(
 def file_stem(text: str) -> str:
     r"""The name MuJoCo gives an asset named by its file: the file name without extension.
 
-    Example:
+    Examples:
         >>> file_stem("meshes\\arm.link.stl")
         'arm.link'
 
@@ -343,7 +343,7 @@ def with_included_paths(model: Mujoco, origins: Mapping[int, tuple[AnyElement, P
         origins: For each element that came from an included file, by ``id``:
             the element and that file's folder.
 
-    Example:
+    Examples:
         >>> import pathlib, tempfile
         >>> from serializers import loads
         >>> folder = pathlib.Path(tempfile.mkdtemp())
@@ -378,7 +378,7 @@ def with_folders(model: Mujoco, folders: Folders) -> Mujoco:
 
     ``Folders()`` removes them all: every path then names its file directly.
 
-    Example:
+    Examples:
         >>> from serializers import dumps, loads
         >>> model = loads('<mujoco><compiler meshdir="m" angle="radian"/></mujoco>')
         >>> dumps(with_folders(model, Folders()), canonical=True)

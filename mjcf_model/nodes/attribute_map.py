@@ -23,7 +23,7 @@ class AttributeMap(Mapping[str, str]):
 
     Equality ignores order, like XML itself.
 
-    Example:
+    Examples:
         >>> m = AttributeMap({"b": "1", "a": "2"})
         >>> list(m), m == AttributeMap({"a": "2", "b": "1"})
         (['b', 'a'], True)
@@ -110,7 +110,7 @@ class AttributeMap(Mapping[str, str]):
 
         Only the new names and text are checked (the others were when this map was made).
 
-        Example:
+        Examples:
             >>> AttributeMap({"a": "1"}).replaced({"a": None, "b": "2"})
             AttributeMap({'b': '2'})
 
@@ -135,7 +135,7 @@ EMPTY_ATTRIBUTES = AttributeMap()
 def to_attribute_map(value: Mapping[str, str] | Iterable[tuple[str, str]] | None) -> AttributeMap:
     """Converter: any mapping or pair sequence becomes an :class:`AttributeMap`.
 
-    Example:
+    Examples:
         >>> to_attribute_map({"x": "1"})
         AttributeMap({'x': '1'})
 

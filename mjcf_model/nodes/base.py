@@ -58,7 +58,7 @@ _TE = TypeVar("_TE", bound="TypedElement")
 def to_children(value: Iterable[Node] | None) -> tuple[Node, ...]:
     """Converter: any iterable of nodes becomes a tuple, checking each item is a node.
 
-    Example:
+    Examples:
         >>> to_children([Comment(text=" hi ")])
         (Comment(text=' hi '),)
 
@@ -112,7 +112,7 @@ def _check_comment(_instance: Any, _attribute: Any, value: str) -> None:
 class Comment(Node):
     """An XML comment, kept where it stood.
 
-    Example:
+    Examples:
         >>> Comment(text=" left arm ")
         Comment(text=' left arm ')
 
@@ -236,7 +236,7 @@ def _check_tag(_instance: Any, _attribute: Any, value: str) -> None:
 class GenericElement(Element):
     """An element without a typed class: future MJCF, plugins' configuration, ``visual``...
 
-    Example:
+    Examples:
         >>> e = GenericElement(tag="replicate", attributes={"count": "3"})
         >>> e.attributes["count"]
         '3'
@@ -293,7 +293,7 @@ def full_repr(node: Node) -> str:
     ``repr`` shows a subtree of more than :data:`FULL_REPR_ELEMENTS` elements as
     one line: its class, name, element count and the file it was read from.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> body = Body(name="arm", children=[Geom(name=f"g{i}") for i in range(20)])
         >>> repr(body)
@@ -345,7 +345,7 @@ _E = TypeVar("_E", bound=TypedElement | GenericElement)
 def field_table(cls: type[TypedElement]) -> dict[str, str]:
     """Map each MJCF attribute name a typed class models to its field name.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> field_table(Geom)["class"]
         'dclass'
@@ -364,7 +364,7 @@ def attribute_items(element: AnyElement) -> list[tuple[str, Value]]:
     Attributes that were not in the source (set in Python) follow in field order;
     typed values stay typed, unknown ones are text.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Joint
         >>> attribute_items(Joint(name="j", range=(0, 1)))
         [('name', 'j'), ('range', (0.0, 1.0))]
@@ -394,7 +394,7 @@ def attribute_items(element: AnyElement) -> list[tuple[str, Value]]:
 def get_attribute(element: AnyElement, name: str) -> Value | None:
     """The value of the MJCF attribute ``name``, or ``None`` when not written.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> get_attribute(Geom(dclass="arm"), "class")
         'arm'
@@ -412,7 +412,7 @@ def get_attribute(element: AnyElement, name: str) -> Value | None:
 def attribute_text(element: AnyElement, name: str) -> str | None:
     """The text attribute ``name`` is written as, or ``None`` when not written.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> attribute_text(Geom(group=1), "group"), attribute_text(Geom(), "group")
         ('1', None)
@@ -439,7 +439,7 @@ def with_attributes(
     Raises:
         TypeError: The same attribute is given both in ``changes`` and as a keyword.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Site
         >>> with_attributes(Site(name="s"), pos=(0, 0, 1)).pos
         (0.0, 0.0, 1.0)
@@ -483,7 +483,7 @@ def ordered_node(cls: type[_TE], items: Iterable[tuple[str, Any]]) -> _TE:
 
     Text fields given a number hold its text; numpy values become plain ones.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Site
         >>> site = ordered_node(Site, [("size", [0.1]), ("name", "s")])
         >>> site.size, site.attribute_order

@@ -40,7 +40,7 @@ def build_node(
     ``memo`` dict per document: text met twice (``pos="0 0 0"``) is converted
     once, and the nodes share the value.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> g = build_node(Geom, {"size": "0.1 0.2"})
         >>> g == Geom(size=[0.1, 0.2]), build_node(Geom, {"name": "g"}, g).size
@@ -72,7 +72,7 @@ def fill_node(
     the readers and transforms pass tuples of nodes they built); ``memo`` keeps
     the converted value of each text (see :func:`build_node`).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Site
         >>> site = object.__new__(Site)
         >>> fill_node(site, {"name": "tip"}, None, checked_children=True)

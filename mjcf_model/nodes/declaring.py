@@ -55,7 +55,7 @@ BASE_FIELDS = frozenset({"children", "text", "extra", "attribute_order", "base_d
 def xml_name(field: attrs.Attribute[Any]) -> str:
     """The MJCF attribute name of a node field (``dclass`` is ``class``).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> xml_name(attrs.fields(Geom).dclass)
         'class'
@@ -180,7 +180,7 @@ def _converted_default(field: attrs.Attribute[Any]) -> Any:
 def tuple_getter(names: tuple[str, ...]) -> Callable[[Any], tuple[Any, ...]]:
     """Read the fields ``names`` of an object at once, always as a tuple.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> tuple_getter(("name",))(Geom(name="g"))
         ('g',)
@@ -200,7 +200,7 @@ _DECLARED: list[type] = []
 def declared_classes() -> tuple[type, ...]:
     """Every class declared with :func:`node`, in the order they were declared.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> Geom in declared_classes()
         True
@@ -244,7 +244,7 @@ def declare(cls: _C) -> _C:
     left out reads its default from the class. ``attrs.fields``, ``attrs.evolve``,
     ``==`` and ``hash`` work as on any attrs class.
 
-    Example:
+    Examples:
         >>> from typing import ClassVar
         >>> from mjcf_model.nodes.base import TypedElement
         >>> from mjcf_model.nodes.fields import vec3

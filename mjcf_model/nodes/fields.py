@@ -61,7 +61,7 @@ def _field(converter: Callable[[Any], Any], xml: str | None, **more: Any) -> Any
 def text(*, xml: str | None = None) -> Any:
     """A text attribute (a name, a file, a free-form string); ``xml`` if MJCF spells it otherwise.
 
-    Example:
+    Examples:
         >>> text(xml="class").metadata["xml"]
         'class'
 
@@ -72,7 +72,7 @@ def text(*, xml: str | None = None) -> Any:
 def keyword(choices: Collection[str], *, xml: str | None = None) -> Any:
     """A text attribute that takes one of MJCF's keywords.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Joint
         >>> "hinge" in attrs.fields(Joint).type.validator.allowed
         True
@@ -84,7 +84,7 @@ def keyword(choices: Collection[str], *, xml: str | None = None) -> Any:
 def reference(namespace: str, *, xml: str | None = None) -> Any:
     """A text attribute that names an element of ``namespace`` (``"joint"``, ``"class"``...).
 
-    Example:
+    Examples:
         >>> reference("mesh").metadata["namespace"]
         'mesh'
 
@@ -95,7 +95,7 @@ def reference(namespace: str, *, xml: str | None = None) -> Any:
 def number() -> Any:
     """One real number (``==`` holds NaN equal to NaN).
 
-    Example:
+    Examples:
         >>> number().converter("1e-3")
         0.001
 
@@ -106,7 +106,7 @@ def number() -> Any:
 def integer() -> Any:
     """One integer.
 
-    Example:
+    Examples:
         >>> integer().converter("3")
         3
 
@@ -117,7 +117,7 @@ def integer() -> Any:
 def boolean() -> Any:
     """MJCF's ``"true"``/``"false"``.
 
-    Example:
+    Examples:
         >>> boolean().converter("true")
         True
 
@@ -128,7 +128,7 @@ def boolean() -> Any:
 def numbers() -> Any:
     """Any number of real numbers.
 
-    Example:
+    Examples:
         >>> numbers().converter("1 2")
         (1.0, 2.0)
 
@@ -139,7 +139,7 @@ def numbers() -> Any:
 def integers() -> Any:
     """Any number of integers.
 
-    Example:
+    Examples:
         >>> integers().converter("1 2")
         (1, 2)
 
@@ -150,7 +150,7 @@ def integers() -> Any:
 def vec2() -> Any:
     """Exactly two real numbers (ranges).
 
-    Example:
+    Examples:
         >>> vec2().converter("-1 1")
         (-1.0, 1.0)
 
@@ -161,7 +161,7 @@ def vec2() -> Any:
 def vec3() -> Any:
     """Exactly three real numbers (positions, axes).
 
-    Example:
+    Examples:
         >>> vec3().converter([0, 0, 1])
         (0.0, 0.0, 1.0)
 
@@ -172,7 +172,7 @@ def vec3() -> Any:
 def vec4() -> Any:
     """Exactly four real numbers (quaternions, colours).
 
-    Example:
+    Examples:
         >>> vec4().converter("1 0 0 0")
         (1.0, 0.0, 0.0, 0.0)
 
@@ -183,7 +183,7 @@ def vec4() -> Any:
 def vec6() -> Any:
     """Exactly six real numbers (``fromto``, ``xyaxes``).
 
-    Example:
+    Examples:
         >>> len(vec6().converter("0 0 0 1 1 1"))
         6
 
@@ -194,7 +194,7 @@ def vec6() -> Any:
 def vec1to2() -> Any:
     """One or two real numbers (``solref``).
 
-    Example:
+    Examples:
         >>> vec1to2().converter("0.02")
         (0.02,)
 
@@ -205,7 +205,7 @@ def vec1to2() -> Any:
 def vec1to3() -> Any:
     """One to three real numbers (``size``, ``friction``).
 
-    Example:
+    Examples:
         >>> vec1to3().converter("0.1 0.2")
         (0.1, 0.2)
 
@@ -216,7 +216,7 @@ def vec1to3() -> Any:
 def vec1to5() -> Any:
     """One to five real numbers (``solimp``).
 
-    Example:
+    Examples:
         >>> vec1to5().converter("0.9 0.95")
         (0.9, 0.95)
 

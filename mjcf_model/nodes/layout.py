@@ -41,7 +41,7 @@ class SourceText:
 
     Offsets are byte offsets (expat's): for an ASCII file they are text offsets too.
 
-    Example:
+    Examples:
         >>> SourceText(b"<a><b/></a>").slice(3, 7)
         '<b/>'
 
@@ -107,7 +107,7 @@ class SourceText:
         pickler holds it (an element pickles its layout before its children). The
         root element's piece is the whole text, with what stands around the root.
 
-        Example:
+        Examples:
             >>> text = SourceText(b"<a>\n  <b/>\n</a>", "a.xml")
             >>> piece, base = text.piece(6, 10)
             >>> piece.slice(0, 4), base, piece.line(0), text.piece(7, 9)[0] is piece
@@ -136,7 +136,7 @@ class SourceText:
         A pickled layout leaves them out (they repeat its text); the first one unpickled
         reads the whole piece once.
 
-        Example:
+        Examples:
             >>> SourceText(b'<a x="1">\n  <b y="&lt;2"/></a>').attributes_at(12)
             ['y', '<2']
 
@@ -168,7 +168,7 @@ class SourceText:
 
         Worked out when asked for (for an error), never while reading.
 
-        Example:
+        Examples:
             >>> SourceText(b"<a>\n  <b/>\n</a>").line(6)
             2
 
@@ -193,7 +193,7 @@ REDUCE_FROM_TEXT: Callable[[Any], tuple[Any, ...] | None] | None = None
 class DocumentText:
     r"""The text of a file around its root element: XML declaration, comments, line breaks.
 
-    Example:
+    Examples:
         >>> DocumentText('<?xml version="1.0"?>\\n', "\\n", (), ()).before
         '<?xml version="1.0"?>\\n'
 
@@ -225,7 +225,7 @@ class Layout(NamedTuple):
     The pieces the writer edits are worked out by :func:`detail` when first
     asked for, and kept with the file's text.
 
-    Example:
+    Examples:
         >>> origin = SourceText(b'<geom size="1.0"/>')
         >>> layout = Layout(origin, "geom", 0, 18, 18, ["size", "1.0"], (), None)
         >>> detail(layout).start, detail(layout).names
@@ -256,7 +256,7 @@ class Layout(NamedTuple):
     def whole(self) -> str:
         """The element's whole source text, from its start tag to its end tag.
 
-        Example:
+        Examples:
             >>> Layout(SourceText(b"<a></a>"), "a", 0, 3, 7, [], (), None).whole()
             '<a></a>'
 
@@ -274,7 +274,7 @@ class Layout(NamedTuple):
     def __reduce__(self) -> tuple[Any, ...]:
         """Pickle with the piece of the file's text the element stands in, not the whole file.
 
-        Example:
+        Examples:
             >>> import pickle
             >>> origin = SourceText(b"<a>" + b" " * 1000 + b"<b/></a>")
             >>> b = Layout(origin, "b", 1003, 1007, 1007, [], (), None)
@@ -300,7 +300,7 @@ class Layout(NamedTuple):
         (and comments): an element that holds other children now keeps those in their
         place, so that neither memory nor a pickle keeps the nodes it replaced.
 
-        Example:
+        Examples:
             >>> from mjcf_model import Geom
             >>> geom = Geom(layout=Layout(SourceText(b"<geom/>"), "geom", 0, 7, 7, [], (), None))
             >>> layout = Layout(SourceText(b"<a><geom/></a>"), "a", 0, 3, 14, [], (geom,), None)
@@ -342,7 +342,7 @@ def place_key(source: Any) -> object:
     A layout made again for the same element (with :meth:`Layout.without_old_children`)
     stands in the same place; a comment node is its own key.
 
-    Example:
+    Examples:
         >>> origin = SourceText(b"<a><b/></a>")
         >>> b = Layout(origin, "b", 3, 7, 7, [], (), None)
         >>> place_key(b) == place_key(b.without_old_children(("changed",)))
@@ -357,7 +357,7 @@ def place_key(source: Any) -> object:
 def detail(layout: Layout) -> LayoutDetail:
     r"""The pieces of the element's text, cut once and kept with the file's text.
 
-    Example:
+    Examples:
         >>> layout = Layout(SourceText(b"<a>\n</a>"), "a", 0, 3, 8, [], (), None)
         >>> detail(layout).gaps, detail(layout) is detail(layout)
         (('\n',), True)
@@ -373,7 +373,7 @@ def detail(layout: Layout) -> LayoutDetail:
 class LayoutDetail:
     r"""The pieces of one element's source text, as the writer edits them.
 
-    Example:
+    Examples:
         >>> origin = SourceText(b"<a x='1'>\n  <b/>\n  <!--c-->\n</a>")
         >>> b = Layout(origin, "b", 12, 16, 16, [], (), None)
         >>> comments = {1: (19, 27)}

@@ -35,7 +35,7 @@ from mjcf_model.nodes.visual import Visual
 def to_base_dir(value: str | os.PathLike[str] | None) -> Path | None:
     """An absolute folder path, or ``None``.
 
-    Example:
+    Examples:
         >>> to_base_dir("/robots/panda")
         PosixPath('/robots/panda')
 

@@ -51,7 +51,7 @@ __all__ = [
 class ElementSpec:
     """What the table says about one element.
 
-    Example:
+    Examples:
         >>> spec = SCHEMA["contact/pair"]
         >>> sorted(spec.references.items())[:2]
         [('class', 'class'), ('geom1', 'geom')]
@@ -528,7 +528,7 @@ def child_key(context: str | None, tag: str) -> str | None:
     ``context`` is ``None`` at the document root. Returns ``None`` for an element
     the table does not know; its children are then read in the parent's context.
 
-    Example:
+    Examples:
         >>> child_key(None, "mujoco"), child_key("body", "body"), child_key("body", "wheel")
         ('mujoco', 'body', None)
 
@@ -553,7 +553,7 @@ def reference_namespace(
 
     Resolves ``@objtype``-style entries through the value of the named attribute.
 
-    Example:
+    Examples:
         >>> reference_namespace(SCHEMA["sensor/framepos"], "objname", {"objtype": "xbody"})
         'body'
 
@@ -590,7 +590,7 @@ def children_context(key: str | None, parent_context: str | None) -> str | None:
     An element the table does not know (``key`` is ``None``), and an include, pass
     their parent's context on, so future wrapper elements keep their contents typed.
 
-    Example:
+    Examples:
         >>> children_context("body/frame", "body"), children_context(None, "body")
         ('body/frame', 'body')
 
@@ -603,7 +603,7 @@ def children_context(key: str | None, parent_context: str | None) -> str | None:
 def guess_context(tag: str) -> str | None:
     """The most likely parent context of a ``tag`` element read on its own.
 
-    Example:
+    Examples:
         >>> guess_context("mujoco"), guess_context("geom"), guess_context("motor")
         (None, 'body', 'actuator')
 

@@ -77,7 +77,7 @@ _VALUE_BY_CONVERTER: dict[str, st.SearchStrategy[Any]] = {
 def geoms(draw: _Draw[Any], name: str | None = None, material: str | None = None) -> Geom:
     """A primitive geom (sphere, capsule, cylinder, box, ellipsoid) with a valid size.
 
-    Example:
+    Examples:
         >>> geoms().example().type in {"sphere", "capsule", "cylinder", "box", "ellipsoid"}
         True
 
@@ -120,7 +120,7 @@ def meshes(draw: _Draw[Any], name: str) -> Mesh:
     No file is needed: the vertices (and for the tetrahedron the outward faces)
     are the mesh's own attributes.
 
-    Example:
+    Examples:
         >>> len(meshes(name="m").example().vertex) in {12, 24}
         True
 
@@ -157,7 +157,7 @@ def joints(
     A hinge's range is in ``angle`` units (the model's ``<compiler angle>``), a
     slide's in metres.
 
-    Example:
+    Examples:
         >>> joints(scalar=True).example().type in {"hinge", "slide"}
         True
 
@@ -186,7 +186,7 @@ def joints(
 def sites(draw: _Draw[Any], name: str | None = None) -> Site:
     """A small spherical site.
 
-    Example:
+    Examples:
         >>> sites(name="tip").example().name
         'tip'
 
@@ -198,7 +198,7 @@ def sites(draw: _Draw[Any], name: str | None = None) -> Site:
 def materials(draw: _Draw[Any], name: str, texture: str | None = None) -> Material:
     """A material, optionally using a texture.
 
-    Example:
+    Examples:
         >>> materials(name="m").example().name
         'm'
 
@@ -228,7 +228,7 @@ def element_values(cls: type[TypedElement]) -> st.SearchStrategy[dict[str, Any]]
 
     Keyword fields (``Geom.type``...) draw from their valid keywords.
 
-    Example:
+    Examples:
         >>> values = element_values(Geom).example()
         >>> Geom(**values).tag
         'geom'
@@ -251,7 +251,7 @@ def elements(cls: type[_E]) -> st.SearchStrategy[_E]:
     Keyword fields (``Geom.type``...) draw from their valid keywords. The values
     need not make physical sense: use this for serializer round trips.
 
-    Example:
+    Examples:
         >>> elements(Geom).example().tag
         'geom'
 

@@ -206,7 +206,7 @@ def bodies(
     the model has meshes), sites, frames, replicated copies, and cameras and
     lights that may track a body. A top-level body may be a mocap body instead.
 
-    Example:
+    Examples:
         >>> len(bodies().example().geoms) >= 1
         True
 
@@ -307,7 +307,7 @@ def _assets(draw: _Draw[Any], reg: _Registry) -> Asset:
 def models(draw: _Draw[Any], max_trees: int = 3) -> Mujoco:
     """A whole model that MuJoCo compiles, with names unique per namespace.
 
-    Example:
+    Examples:
         >>> import mujoco
         >>> from serializers import dumps
         >>> model = models().example()

@@ -38,7 +38,7 @@ _NAME_CHARS = st.sampled_from("abcdefghijklmnopqrstuvwxyz_0123456789")
 def comments() -> st.SearchStrategy[Comment]:
     """Comments with arbitrary text that XML allows (no ``--``).
 
-    Example:
+    Examples:
         >>> isinstance(comments().example(), Comment)
         True
 

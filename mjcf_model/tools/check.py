@@ -76,7 +76,7 @@ def check_file(
     file when ``part`` is true, is checked as a part for ``<include>``: it must read
     back to the same elements, and every file found including it must compile.
 
-    Example:
+    Examples:
         >>> check_file("/no/such/file.xml").status
         'error'
 
@@ -111,7 +111,7 @@ _INCLUDER_SIZE = 4 << 20
 def _included_files(data: bytes) -> list[str]:
     r"""The ``file`` of each ``<include>`` start tag in ``data`` (a plain scan, linear).
 
-    Example:
+    Examples:
         >>> _included_files(b'<mujoco><include file="a.xml"/><include  file = \'b.xml\'/>')
         ['a.xml', 'b.xml']
 
@@ -141,7 +141,7 @@ def includers_of(path: Path) -> list[Path]:
     An include's file is looked for as MuJoCo looks: beside the including file
     (which, for the main model, is where MuJoCo looks first).
 
-    Example:
+    Examples:
         >>> import pathlib, tempfile
         >>> folder = pathlib.Path(tempfile.mkdtemp())
         >>> _ = (folder / "parts").mkdir(), (folder / "parts" / "arm.xml").write_text("<mujoco/>")
@@ -208,7 +208,7 @@ def _checked_part(path: Path, includers: list[Path]) -> CheckResult:
 def check_text(text: str, *, filename: str = "<stdin>") -> CheckResult:
     """:func:`check_file` for MJCF text read as the file ``filename`` (see :func:`text_folder`).
 
-    Example:
+    Examples:
         >>> check_text("<mujoco><worldbody><geom size='1'/></worldbody></mujoco>").status
         'identical'
 
@@ -230,7 +230,7 @@ def text_folder(filename: str) -> Path:
 
     The file's folder; the working folder for ``"<stdin>"`` and other names in ``<>``.
 
-    Example:
+    Examples:
         >>> text_folder("robots/arm.xml"), text_folder("<stdin>") == Path.cwd()
         (PosixPath('robots'), True)
 
@@ -294,7 +294,7 @@ def written_differences(original: Any, written: str, path: str) -> tuple[str, ..
     Raises:
         MjcfError: ``written`` cannot be read, or does not compile (the message says so).
 
-    Example:
+    Examples:
         >>> import mujoco
         >>> original = mujoco.MjModel.from_xml_string("<mujoco><worldbody/></mujoco>")
         >>> written_differences(original, "<mujoco/>", "m.xml")

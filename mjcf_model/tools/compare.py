@@ -34,7 +34,7 @@ _IGNORED = frozenset({"signature"})
 def model_fields() -> tuple[str, ...]:
     """The names of ``MjModel``'s array and size fields, in a stable order.
 
-    Example:
+    Examples:
         >>> "body_pos" in model_fields()
         True
 
@@ -64,7 +64,7 @@ def path_fields() -> frozenset[str]:
     A model compiled from other paths to the same files (moved, bundled, read
     from an asset dictionary) differs in these and nothing else.
 
-    Example:
+    Examples:
         >>> sorted(path_fields())[:3]
         ['hfield_pathadr', 'mesh_pathadr', 'nbuffer']
 
@@ -82,7 +82,7 @@ def compiled_names(model: Any) -> dict[str, list[str]]:
 
     Unnamed objects have ``""``; the world body is ``"world"``.
 
-    Example:
+    Examples:
         >>> import mujoco
         >>> m = mujoco.MjModel.from_xml_string(
         ...     "<mujoco><worldbody><geom name='g' size='1'/></worldbody></mujoco>")
@@ -130,7 +130,7 @@ def model_differences(a: Any, b: Any, *, ignore: frozenset[str] = frozenset()) -
     the fields named in ``ignore`` (for instance :data:`NAME_FIELDS` and the
     ``name_*adr`` address arrays after a renaming).
 
-    Example:
+    Examples:
         >>> import mujoco
         >>> m = mujoco.MjModel.from_xml_string("<mujoco/>")
         >>> model_differences(m, m)
@@ -163,7 +163,7 @@ def compile_text_beside(text: str, original: str | os.PathLike[str]) -> Any:
     mesh, texture and include paths resolve as they do for the original; the
     file is removed afterwards.
 
-    Example:
+    Examples:
         >>> import pathlib, tempfile
         >>> path = pathlib.Path(tempfile.mkdtemp()) / "m.xml"
         >>> compile_text_beside("<mujoco/>", path).nbody

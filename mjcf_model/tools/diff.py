@@ -62,7 +62,7 @@ _SIGNS = {"added": "+", "removed": "-", "moved": ">", "changed": "~"}
 class Change:
     """One difference between two models.
 
-    Example:
+    Examples:
         >>> print(Change(kind="changed", path="/mujoco/worldbody/geom", attribute="size",
         ...              old="0.1", new="0.2"))
         ~ /mujoco/worldbody/geom size: 0.1 -> 0.2
@@ -85,7 +85,7 @@ class Change:
     def to_dict(self) -> dict[str, Any]:
         """The change as a JSON-ready dict (keys with ``None`` left out).
 
-        Example:
+        Examples:
             >>> Change(kind="added", path="/mujoco/worldbody/site").to_dict()
             {'kind': 'added', 'path': '/mujoco/worldbody/site'}
 
@@ -123,7 +123,7 @@ class _Seen:
 def changes_between(first: Node, second: Node) -> list[Change]:
     """The differences from ``first`` to ``second``: removals first, then the rest in order.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> a = loads('<mujoco><worldbody><body name="a"><body name="b"/></body></worldbody>'
         ...           '</mujoco>')

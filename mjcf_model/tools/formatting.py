@@ -65,7 +65,7 @@ Proof = Literal["unchanged", "compiled", "elements"]
 class FormatOptions:
     """How :func:`format_text` lays a file out.
 
-    Example:
+    Examples:
         >>> FormatOptions(width=120, indent=4)
         FormatOptions(width=120, indent=4, normalize_numbers=False)
 
@@ -93,7 +93,7 @@ def options_from_pyproject(start: str | os.PathLike[str]) -> tuple[FormatOptions
         MjcfValueError: The table sets a key it may not, or a value of the wrong type
             (the message names the file).
 
-    Example:
+    Examples:
         >>> import pathlib, tempfile
         >>> folder = pathlib.Path(tempfile.mkdtemp())
         >>> _ = (folder / "pyproject.toml").write_text("[tool.mjcf-model]\nwidth = 120\n")
@@ -168,7 +168,7 @@ def format_file(path: str | os.PathLike[str], *, options: FormatOptions | None =
     Raises:
         MjcfError: The file cannot be read or is not MJCF (the message names file and line).
 
-    Example:
+    Examples:
         >>> import pathlib, tempfile
         >>> path = pathlib.Path(tempfile.mkdtemp()) / "m.xml"
         >>> _ = path.write_text('<mujoco model="m"/>\n')
@@ -198,7 +198,7 @@ def format_text(
     Raises:
         MjcfError: ``text`` is not MJCF (the message names the line).
 
-    Example:
+    Examples:
         >>> result = format_text('<mujoco model="m"/>\n')
         >>> result.changed, result.proof
         (False, 'unchanged')

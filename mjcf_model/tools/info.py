@@ -44,7 +44,7 @@ __all__ = ["EffectiveAttribute", "ModelSummary", "effective_attributes", "model_
 class EffectiveAttribute:
     """One attribute of an element as MuJoCo reads it.
 
-    Example:
+    Examples:
         >>> print(EffectiveAttribute(name="rgba", value=(1.0, 0.0, 0.0, 1.0), source="main"))
         rgba = 1 0 0 1 (class main)
 
@@ -152,7 +152,7 @@ class ModelSummary:
 def model_summary(model: Mujoco) -> ModelSummary:
     """Counts, names, compiler settings and default classes of ``model``.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> summary = model_summary(loads('<mujoco model="m"><worldbody><body name="a">'
         ...                               '<geom size="1"/></body></worldbody></mujoco>'))

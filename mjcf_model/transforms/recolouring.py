@@ -31,7 +31,7 @@ def with_collision_colour(
     such geom (never when there is none), so its value may be text or numbers, as
     the caller writes colours.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> body = Body(children=[Geom(name="c"), Geom(name="v", group=1)])
         >>> new = with_collision_colour(body, lambda: "1 0 0 1")

@@ -25,7 +25,7 @@ class Ancestors(Sequence[AnyElement]):
     so walking a chain of any depth stays linear; the last ancestors and
     ``reversed`` are read without copying.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body
         >>> a = Ancestors().extended(Body(name="root")).extended(Body(name="arm"))
         >>> len(a), a[-1].name, [b.name for b in a]
@@ -50,7 +50,7 @@ class Ancestors(Sequence[AnyElement]):
         ancestors (a ``childclass``) costs constant time per level however deep
         the tree is.
 
-        Example:
+        Examples:
             >>> from mjcf_model import Body
             >>> a = Ancestors().extended(Body(name="root")).extended(Body(name="arm"))
             >>> a.folded(lambda names, body: (*names, body.name), ())
@@ -130,7 +130,7 @@ def fold_ancestors(
     On :class:`Ancestors` (what the walks hand out) this is :meth:`Ancestors.folded`,
     constant time per level; any other sequence is folded from the start.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body
         >>> def childclass(inherited, element):
         ...     return element.childclass or inherited

@@ -51,7 +51,7 @@ ACTUATOR_DEFAULT_TAGS = frozenset(
 class DefaultClasses:
     """The default classes of a model: their nesting and the element settings in each.
 
-    Example:
+    Examples:
         >>> DefaultClasses.empty().chain("main")
         ('main',)
 
@@ -81,7 +81,7 @@ class DefaultClasses:
     def of(cls, model: AnyElement) -> DefaultClasses:
         """Read the classes of a model (an element other than ``<mujoco>`` has none).
 
-        Example:
+        Examples:
             >>> from serializers import loads
             >>> m = loads('<mujoco><default><default class="a"/></default></mujoco>')
             >>> dict(DefaultClasses.of(m).parents)
@@ -117,7 +117,7 @@ class DefaultClasses:
     def chain(self, name: str) -> tuple[str, ...]:
         """``name`` and its ancestors, innermost first (an unknown class is just itself).
 
-        Example:
+        Examples:
             >>> classes = DefaultClasses(parents={"main": None, "a": "main"}, settings={})
             >>> classes.chain("a")
             ('a', 'main')
@@ -138,7 +138,7 @@ class DefaultClasses:
     def sets(self, tag: str) -> bool:
         """Whether any class sets an attribute of ``tag`` elements.
 
-        Example:
+        Examples:
             >>> from mjcf_model import Geom
             >>> classes = DefaultClasses(parents={"main": None},
             ...                          settings={("main", "geom"): Geom(type="box")})
@@ -151,7 +151,7 @@ class DefaultClasses:
     def given(self, name: str, tag: str) -> Mapping[str, tuple[Value, str]]:
         """Every attribute class ``name`` gives ``tag`` elements, with the class that writes it.
 
-        Example:
+        Examples:
             >>> from mjcf_model import Geom
             >>> classes = DefaultClasses(
             ...     parents={"main": None, "a": "main"},
@@ -179,7 +179,7 @@ class DefaultClasses:
 
         The class is the one that writes the value; ``None`` when no class does.
 
-        Example:
+        Examples:
             >>> from mjcf_model import Geom
             >>> classes = DefaultClasses(
             ...     parents={"main": None, "a": "main"},
@@ -196,7 +196,7 @@ class DefaultClasses:
 
         For an element inside ``<default>`` it is the enclosing class.
 
-        Example:
+        Examples:
             >>> from mjcf_model import Body, Geom
             >>> DefaultClasses.empty().class_of(Geom(), (Body(childclass="arm"),))
             'arm'
@@ -218,7 +218,7 @@ class DefaultClasses:
         For an element inside ``<default>``, what the enclosing class inherits.
         ``tag`` as in :meth:`resolve`.
 
-        Example:
+        Examples:
             >>> from mjcf_model import Geom
             >>> classes = DefaultClasses(parents={"main": None},
             ...                          settings={("main", "geom"): Geom(type="box")})
@@ -243,7 +243,7 @@ class DefaultClasses:
         written winning); other elements read the element of their own tag (see
         :meth:`inherited`).
 
-        Example:
+        Examples:
             >>> from serializers import loads
             >>> model = loads('<mujoco><default><general ctrlrange="-1 1"/><motor gear="2"/>'
             ...               '</default><actuator><position name="p" joint="j"/></actuator>'
@@ -293,7 +293,7 @@ class DefaultClasses:
         ``tag`` names the default element to look in when it is not the element's
         own tag (``"tendon"`` for a ``<spatial>`` tendon).
 
-        Example:
+        Examples:
             >>> from mjcf_model import Geom
             >>> classes = DefaultClasses(parents={"main": None},
             ...                          settings={("main", "geom"): Geom(type="box")})
@@ -316,7 +316,7 @@ class DefaultClasses:
     ) -> tuple[Value | None, ...]:
         """:meth:`resolve` for several attributes at once.
 
-        Example:
+        Examples:
             >>> from mjcf_model import Geom
             >>> classes = DefaultClasses(parents={"main": None},
             ...                          settings={("main", "geom"): Geom(type="box")})

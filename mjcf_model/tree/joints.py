@@ -38,7 +38,7 @@ class JointInfo:
 def joint_layout(node: AnyElement, classes: DefaultClasses) -> tuple[JointInfo, ...] | None:
     """The joints of ``node`` in ``qpos`` order; ``None`` when replicate or flexcomp hide some.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Joint
         >>> body = Body(children=[Joint(type="slide")])
         >>> [j.type for j in joint_layout(body, DefaultClasses.empty())]
@@ -102,7 +102,7 @@ def joint_type(
     Its own type or its class's (MuJoCo's default is ``hinge``); ``None`` for an
     element that is not a body's joint.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Joint
         >>> joint_type(Joint(type="slide"), "body/joint", (), DefaultClasses.empty())
         'slide'

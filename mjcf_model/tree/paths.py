@@ -37,7 +37,7 @@ _ELEMENTS = (TypedElement, GenericElement)
 def subtree_at(node: AnyElement, path: Path) -> AnyElement:
     """The element at ``path`` (child indexes from ``node`` down, as :func:`walk` gives them).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> subtree_at(Body(children=[Body(children=[Geom(name="g")])]), (0, 0)).name
         'g'
@@ -58,7 +58,7 @@ def replaced_at(node: _A, path: Path, new: Sequence[Node]) -> _A:
     ``new`` may hold several nodes, or none (the element is removed). Only the
     elements on the path are rebuilt; everything else is shared.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> from mjcf_model import Site
         >>> model = loads('<mujoco><worldbody><geom size="1"/></worldbody></mujoco>')
@@ -86,7 +86,7 @@ def replaced_at(node: _A, path: Path, new: Sequence[Node]) -> _A:
 def appended_at(node: _A, path: Path, children: Sequence[Node]) -> _A:
     """``node`` with ``children`` appended to the element at ``path``; the rest is shared.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> appended_at(Body(children=[Body()]), (0,), [Geom()]).bodies[0].geoms
         (Geom(),)
@@ -103,7 +103,7 @@ def edited_at(node: _N, edits: Mapping[Path, Mapping[str, Value | None]]) -> _N:
     Only the elements on the edited paths are rebuilt, each once, however many
     edits lie below it; a path to a comment is skipped.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> body = Body(children=[Geom(name="a"), Geom(name="b")])
         >>> new = edited_at(body, {(1,): {"name": "c"}, (): {"name": "top"}})

@@ -58,7 +58,7 @@ def attribute_values(element: AnyElement, names: tuple[str, ...]) -> tuple[Value
     by one reader per class and names, made on first use: the transforms that
     read several attributes of every element use it.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> attribute_values(Geom(dclass="arm", size=[1], extra={"x": "1"}), ("class", "pos", "x"))
         ('arm', None, '1')
@@ -150,7 +150,7 @@ def find(node: Node, tag: str | Collection[str], /, **attributes: object) -> Any
     Returns:
         The element, or ``None`` when nothing matches.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> body = Body(children=[Geom(name="g", size=[0.1], group=1), Geom(name="h")])
         >>> find(body, "geom", size=[0.1]).name, find(body, "geom", group="1").name
@@ -170,7 +170,7 @@ def find_all(node: Node, tag: str | Collection[str], /, **attributes: object) ->
     Matches like :func:`find`; an empty list when nothing matches (robosuite's
     ``find_elements`` returns ``None`` then).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> body = Body(children=[Geom(name="g", dclass="vis"), Geom(name="h")])
         >>> [g.name for g in find_all(body, "geom")], find_all(body, "site")
@@ -188,7 +188,7 @@ def parent_of(root: Node, node: Node) -> AnyElement | None:
     Returns ``None`` for ``root`` and for a node that is not in the tree (an
     equal copy is not the node).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> geom = Geom(name="g")
         >>> body = Body(name="b", children=[geom])
@@ -215,7 +215,7 @@ def geom_role(element: AnyElement) -> GeomRole | None:
     materials and categories follow; the group is compared as written text, so
     ``group="1.0"`` has no role, as in robosuite.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom, Site
         >>> geom_role(Geom()), geom_role(Geom(group=1)), geom_role(Geom(group=3)), geom_role(Site())
         ('collision', 'visual', None, None)

@@ -79,7 +79,7 @@ GUESS = _Guess()
 def with_children(element: _E, children: Sequence[Node]) -> _E:
     """``element`` with new children, or ``element`` itself when each child is the same object.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> body = Body(children=[Geom()])
         >>> with_children(body, list(body.children)) is body
@@ -102,7 +102,7 @@ def map_tree(fn: Callable[[Node], Node], node: _N) -> Node:
     ``fn`` receives each node (comments too) after its children were mapped, and
     returns it or a replacement.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> from mjcf_model.nodes.base import with_attributes
         >>> body = Body(children=[Geom(name="a"), Geom(name="b")])
@@ -136,7 +136,7 @@ def map_tree(fn: Callable[[Node], Node], node: _N) -> Node:
 def schema_key(element: AnyElement, context: str | _Guess | None = GUESS) -> str | None:
     """The schema key of ``element`` read inside ``context`` (guessed from its tag by default).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom, Mujoco
         >>> schema_key(Mujoco()), schema_key(Geom()), schema_key(Geom(), "default")
         ('mujoco', 'body/geom', 'default/geom')
@@ -162,7 +162,7 @@ def map_elements(
     ``fn`` returns unchanged when they have no children: ``fn`` is not called
     for those (a transform's way of skipping what it has nothing to do with).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> from mjcf_model.nodes.base import with_attributes
         >>> def tag_keys(element, key, ancestors):
@@ -255,7 +255,7 @@ def refuse_opaque(element: AnyElement, key: str | None, action: str) -> None:
     sizes are nowhere in the tree, so prefixing or scaling it would give a model
     MuJoCo rejects or reads differently.
 
-    Example:
+    Examples:
         >>> from mjcf_model.nodes.base import GenericElement
         >>> refuse_opaque(GenericElement(tag="include"), "include", "prefix")
         Traceback (most recent call last):
@@ -289,7 +289,7 @@ def refuse_file_skin(skin: AnyElement, action: str, because: str) -> None:
     bodies there, not in the tree; a model loaded from a file can have it written
     inline (``serializers.skins.inline_skin_files``).
 
-    Example:
+    Examples:
         >>> from mjcf_model.nodes.base import GenericElement
         >>> skin = GenericElement(tag="skin", attributes={"file": "s.skn"})
         >>> refuse_file_skin(skin, "scale", "holds its vertices")
@@ -314,7 +314,7 @@ def walk(node: Node) -> Iterator[tuple[Path, AnyElement]]:
     ``path`` indexes ``children`` from ``node`` down (``()`` is ``node``); comments
     are skipped but keep their index.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads('<mujoco><worldbody><geom size="1"/></worldbody></mujoco>')
         >>> [(path, e.tag) for path, e in walk(model)]
@@ -338,7 +338,7 @@ def keyed_walk(
 ) -> Iterator[tuple[AnyElement, str | None, Ancestors]]:
     """Yield ``(element, key, ancestors)`` for every element, parents first.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> [key for _, key, _ in keyed_walk(Body(children=[Geom()]))]
         ['body', 'body/geom']

@@ -40,7 +40,7 @@ def float_key(value: float | None) -> tuple[float | None]:
     ``float`` compares NaN unequal even to itself; a 1-tuple compares its item
     by identity first, and every field holds the same :data:`NAN` object.
 
-    Example:
+    Examples:
         >>> NAN == NAN, float_key(NAN) == float_key(NAN)
         (False, True)
 
@@ -81,7 +81,7 @@ class Unparsed:
     raises the :class:`~mjcf_model.errors.MjcfValueError` that reading it found,
     with the file, line and element path it came from.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads('<mujoco><worldbody><geom size="0x10"/></worldbody></mujoco>')
         >>> geom = model.worldbody.geoms[0]
@@ -152,7 +152,7 @@ def check_text(value: str, what: str = "text") -> str:
     Such text (NUL and other control characters, lone surrogates) could be
     built but not written and read back, so no node accepts it.
 
-    Example:
+    Examples:
         >>> check_text("arm\x00")
         Traceback (most recent call last):
         ...
@@ -170,7 +170,7 @@ def check_text(value: str, what: str = "text") -> str:
 def check_name(value: str, what: str = "name") -> str:
     """Return ``value``, or raise unless it is an XML name (a tag or an attribute name).
 
-    Example:
+    Examples:
         >>> check_name("geom"), check_name("xmlns:mj")
         ('geom', 'xmlns:mj')
         >>> check_name("1st")

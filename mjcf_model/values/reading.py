@@ -119,7 +119,7 @@ def floats_from_text(lo: int, hi: int | None, text: str) -> Floats:
 
     The text path of every float converter; readers call it directly.
 
-    Example:
+    Examples:
         >>> floats_from_text(1, 3, "0.1 2"), floats_from_text(1, 1, "nan")
         ((0.1, 2.0), (nan,))
 
@@ -170,7 +170,7 @@ def _reads_as_float(token: str) -> bool:
 def to_str(value: str | Unparsed | None) -> str | None:
     """Accept a string (names, references, keywords, file names) that XML can carry.
 
-    Example:
+    Examples:
         >>> to_str("torso")
         'torso'
 
@@ -187,7 +187,7 @@ def to_str(value: str | Unparsed | None) -> str | None:
 def to_float(value: str | float | Unparsed | None) -> float | None:
     """Convert text or a number to one float.
 
-    Example:
+    Examples:
         >>> to_float("1e-3")
         0.001
 
@@ -206,7 +206,7 @@ def to_float(value: str | float | Unparsed | None) -> float | None:
 def float_from_text(text: str) -> float:
     """Read one float from attribute text (the text path of :func:`to_float`).
 
-    Example:
+    Examples:
         >>> float_from_text(" 1e-3 ")
         0.001
 
@@ -218,7 +218,7 @@ def float_from_text(text: str) -> float:
 def to_int(value: str | int | Unparsed | None) -> int | None:
     """Convert text or an integral number to an int.
 
-    Example:
+    Examples:
         >>> to_int("3")
         3
 
@@ -238,7 +238,7 @@ def to_int(value: str | int | Unparsed | None) -> int | None:
 def to_bool(value: str | bool | Unparsed | None) -> bool | None:
     """Convert MJCF ``"true"``/``"false"`` (or a bool) to a bool.
 
-    Example:
+    Examples:
         >>> to_bool("false")
         False
 
@@ -259,7 +259,7 @@ def to_bool(value: str | bool | Unparsed | None) -> bool | None:
 def to_floats(value: object) -> Floats | None:
     """Convert text, a sequence or an array to any number of floats.
 
-    Example:
+    Examples:
         >>> to_floats([1, 2.5])
         (1.0, 2.5)
 
@@ -270,7 +270,7 @@ def to_floats(value: object) -> Floats | None:
 def to_ints(value: object) -> Ints | None:
     """Convert text, a sequence or an array to any number of ints.
 
-    Example:
+    Examples:
         >>> to_ints("0 1 2")
         (0, 1, 2)
 
@@ -334,7 +334,7 @@ _TEXT_READERS: dict[Callable[[Any], Any], Callable[[str], Any]] = {
 def text_reader(converter: Callable[[Any], Any]) -> Callable[[str], Any]:
     """What ``converter`` does to attribute text, without its checks for other types.
 
-    Example:
+    Examples:
         >>> text_reader(to_vec3)("0 0 1"), text_reader(to_int)("2")
         ((0.0, 0.0, 1.0), 2)
 
@@ -345,7 +345,7 @@ def text_reader(converter: Callable[[Any], Any]) -> Callable[[str], Any]:
 class OneOf:
     """An attrs validator that accepts ``None`` or one of a set of MJCF keywords.
 
-    Example:
+    Examples:
         >>> check = OneOf({"box", "sphere"})
         >>> check(None, None, "cube")
         Traceback (most recent call last):
@@ -373,7 +373,7 @@ class OneOf:
 def one_of(choices: Collection[str]) -> OneOf:
     """Make a validator for a keyword field (see :class:`OneOf`).
 
-    Example:
+    Examples:
         >>> one_of({"hinge"}).allowed
         frozenset({'hinge'})
 
@@ -384,7 +384,7 @@ def one_of(choices: Collection[str]) -> OneOf:
 def numbers_of(value: Value | None) -> tuple[float, ...] | None:
     """The numbers in an attribute value, typed or text; ``None`` when it has none.
 
-    Example:
+    Examples:
         >>> numbers_of("1 2.5"), numbers_of(3), numbers_of("x")
         ((1.0, 2.5), (3.0,), None)
 

@@ -19,7 +19,7 @@ __all__ = [
 def _unpadded_exponents(text: str) -> str:
     """``text`` (numbers ``repr`` wrote) with each exponent's plus sign and zero padding gone.
 
-    Example:
+    Examples:
         >>> _unpadded_exponents("1e-05 2 3.5e+20")
         '1e-5 2 3.5e20'
 
@@ -39,7 +39,7 @@ def format_float(value: float) -> str:
     values without ``.0`` (``1.0`` becomes ``"1"``) and exponents without padding
     or plus sign (``1e-07`` becomes ``"1e-7"``); ``-0.0`` keeps its sign.
 
-    Example:
+    Examples:
         >>> format_float(0.1), format_float(2.0), format_float(-0.0), format_float(8.2904e-07)
         ('0.1', '2', '-0', '8.2904e-7')
         >>> format_float(1e16), format_float(2.5e-300)
@@ -57,7 +57,7 @@ def format_float(value: float) -> str:
 def format_value(value: Value) -> str:
     """Write a field value as MJCF attribute text.
 
-    Example:
+    Examples:
         >>> format_value((1.0, 0.5)), format_value(3), format_value(False), format_value("a")
         ('1 0.5', '3', 'false', 'a')
 
@@ -93,7 +93,7 @@ def _format_items(values: Floats | Ints) -> str:
 def plain_value(value: Any) -> Any:
     """Numpy arrays and scalars as plain Python values, lists as tuples.
 
-    Example:
+    Examples:
         >>> import numpy as np
         >>> plain_value(np.array([1.5, 2.0])), plain_value(np.int64(3))
         ((1.5, 2.0), 3)

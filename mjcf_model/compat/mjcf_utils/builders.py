@@ -125,7 +125,7 @@ def new_element(tag: str, name: str | None, **kwargs: Any) -> ET.Element:
     Raises:
         ValueError: A value ``convert_to_string`` refuses (numpy scalars, ``dict``...).
 
-    Example:
+    Examples:
         >>> body = new_element("body", None, pos=[0, 0, 1], quat=None, mass=0.5, flag=True)
         >>> ET.tostring(body, encoding="unicode")
         '<body pos="0 0 1" mass="0.5" flag="true" />'
@@ -137,7 +137,7 @@ def new_element(tag: str, name: str | None, **kwargs: Any) -> ET.Element:
 def new_joint(name: str | None, **kwargs: Any) -> ET.Element:
     """A new ``<joint>``: ``kwargs``, then ``name``.
 
-    Example:
+    Examples:
         >>> ET.tostring(new_joint("j", type="free", damping="0.0005"), encoding="unicode")
         '<joint type="free" damping="0.0005" name="j" />'
 
@@ -150,7 +150,7 @@ def new_actuator(
 ) -> ET.Element:
     """A new actuator of tag ``act_type``: ``kwargs``, ``name``, then ``joint`` as given.
 
-    Example:
+    Examples:
         >>> actuator = new_actuator(joint="gz", act_type="position", name="a", kp="500")
         >>> ET.tostring(actuator, encoding="unicode")
         '<position kp="500" name="a" joint="gz" />'
@@ -170,7 +170,7 @@ def new_site(
 ) -> ET.Element:
     """A new ``<site>`` (a small red sphere): ``kwargs``, ``pos``, ``size``, ``rgba``, ``name``.
 
-    Example:
+    Examples:
         >>> ET.tostring(new_site("s"), encoding="unicode")
         '<site pos="0 0 0" size="0.005" rgba="1 0 0 1" name="s" />'
 
@@ -188,7 +188,7 @@ def new_geom(
 ) -> ET.Element:
     """A new ``<geom>``: ``kwargs``, ``type``, ``size``, ``pos``, ``group``, ``name``.
 
-    Example:
+    Examples:
         >>> geom = new_geom("g", "sphere", [0.1], group=None, rgba=None, material="m")
         >>> ET.tostring(geom, encoding="unicode")
         '<geom material="m" type="sphere" size="0.1" pos="0 0 0" name="g" />'
@@ -200,7 +200,7 @@ def new_geom(
 def new_body(name: str | None, pos: Any = (0, 0, 0), **kwargs: Any) -> ET.Element:
     """A new ``<body>``: ``kwargs``, ``pos``, ``name``.
 
-    Example:
+    Examples:
         >>> ET.tostring(new_body("b"), encoding="unicode")
         '<body pos="0 0 0" name="b" />'
 
@@ -211,7 +211,7 @@ def new_body(name: str | None, pos: Any = (0, 0, 0), **kwargs: Any) -> ET.Elemen
 def new_inertial(pos: Any = (0, 0, 0), mass: Any = None, **kwargs: Any) -> ET.Element:
     """A new ``<inertial>``: ``kwargs``, then ``mass`` (if given), then ``pos``; no name.
 
-    Example:
+    Examples:
         >>> ET.tostring(new_inertial(mass=1.0, diaginertia=[1, 1, 1]), encoding="unicode")
         '<inertial diaginertia="1 1 1" mass="1.0" pos="0 0 0" />'
 

@@ -70,7 +70,7 @@ class CustomMaterial:
     Raises:
         AssertionError: An unknown texture name, or an RGBA that is not four values.
 
-    Example:
+    Examples:
         >>> wood = CustomMaterial("WoodDark", "wood", "wood_mat", mat_attrib={"specular": 0.4})
         >>> wood.mat_attrib
         {'specular': '0.4', 'name': 'wood_mat', 'texture': 'wood'}
@@ -148,7 +148,7 @@ def add_material(
     Returns:
         ``(texture element, material element, the material, whether a geom took it)``.
 
-    Example:
+    Examples:
         >>> body = ET.fromstring('<body><geom group="1"/><geom group="0"/></body>')
         >>> tex, mat, material, used = add_material(body, "p_")
         >>> body[0].get("material"), ET.tostring(mat, encoding="unicode"), used
@@ -194,7 +194,7 @@ def recolor_collision_geoms(
 
     Unlike robosuite, ``exclude`` sees the geoms as they were before the call.
 
-    Example:
+    Examples:
         >>> tree = ET.fromstring('<body><geom name="floor"/><geom name="g" group="0"/></body>')
         >>> floor = lambda geom: geom.get("name") == "floor"
         >>> recolor_collision_geoms(tree, np.array([0.5, 0, 0, 1]), floor)
@@ -230,7 +230,7 @@ def set_alpha(node: ET.Element, alpha: Any = 0.1) -> None:
     Colours are rewritten as numpy floats, as robosuite does. Unlike robosuite, any
     white space separates numbers, and an unreadable colour leaves the tree unchanged.
 
-    Example:
+    Examples:
         >>> tree = ET.fromstring('<body><geom rgba="1 0 0 1"/></body>')
         >>> set_alpha(tree, 0.3)
         >>> tree[0].get("rgba")

@@ -87,7 +87,7 @@ def add_prefix(
     attributes. Unlike robosuite, ``exclude`` sees the tree as it was before the
     call, and an exception from it leaves the tree unchanged.
 
-    Example:
+    Examples:
         >>> body = ET.fromstring('<body name="b"><geom name="floor"/><geom name="g"/></body>')
         >>> add_prefix(body, "p_", tags="geom", exclude=lambda x: x == "floor")
         >>> [e.get("name") for e in body.iter()]

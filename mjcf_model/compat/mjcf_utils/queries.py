@@ -101,7 +101,7 @@ def sort_elements(
     come in first-seen order; ``None`` keys are dropped. ``_elements_dict`` is
     robosuite's recursion argument: a dict to add to and return.
 
-    Example:
+    Examples:
         >>> tree = ET.fromstring('<body><geom name="c"/><body name="in"/></body>')
         >>> {k: [e.get("name") for e in v] for k, v in sort_elements(tree).items()}
         {'root_body': [None], 'contact_geoms': ['c'], 'bodies': ['in']}
@@ -127,7 +127,7 @@ def sort_elements(
 def find_parent(element: ET.Element, target: Any) -> ET.Element | None:
     """The element below ``element`` whose child is ``target`` itself, or ``None``.
 
-    Example:
+    Examples:
         >>> tree = ET.fromstring("<a><b><c/></b></a>")
         >>> find_parent(tree, tree[0][0]) is tree[0], find_parent(tree, tree)
         (True, None)
@@ -170,7 +170,7 @@ def find_elements(
         The element, or the list of them in document order; ``None`` (not an
         empty list) when nothing matches, as in robosuite.
 
-    Example:
+    Examples:
         >>> tree = ET.fromstring('<body><geom name="a" group="1"/><geom name="b"/></body>')
         >>> find_elements(tree, "geom", {"group": None}).get("name"), find_elements(tree, "site")
         ('b', None)
@@ -202,7 +202,7 @@ def find_elements_by_substring(
     ``TypeError``), and ``return_first`` returns the first match (robosuite
     searches the first element's children instead). ``None`` when nothing matches.
 
-    Example:
+    Examples:
         >>> tree = ET.fromstring('<body><geom/><geom name="left_pad"/><geom name="right"/></body>')
         >>> [g.get("name") for g in find_elements_by_substring(tree, "geom", ["pad", "ri"])]
         ['left_pad', 'right']
@@ -251,7 +251,7 @@ def get_elements(
 
     ``root`` itself is included only when ``_parent`` (robosuite's recursion argument) is given.
 
-    Example:
+    Examples:
         >>> tree = ET.fromstring('<body name="a"><geom/><body name="b"><geom/></body></body>')
         >>> [(p.get("name"), g.tag) for p, g in get_elements(tree, "geom")]
         [('a', 'geom'), ('b', 'geom')]
@@ -276,7 +276,7 @@ class Categories:
     Every field lists elements in document order. See :func:`categorized` for
     the rules.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> found = categorized(Body(name="b", children=[Geom(name="g")]))
         >>> [b.name for b in found.root_body], [g.name for g in found.contact_geoms]
@@ -324,7 +324,7 @@ def categorized(node: AnyElement) -> Categories:
     ``e_kinetic``, ``plugin``, ...) are missing from its list. Here every
     child of ``<sensor>`` is a sensor.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads(
         ...     '<mujoco><worldbody><body name="a"><joint name="j"/>'

@@ -153,7 +153,7 @@ def scale_joint_element(
 ) -> None:
     """Scale a joint's ``pos`` (and a slide joint's ``range``) in place (see :func:`scaled_joint`).
 
-    Example:
+    Examples:
         >>> joint = ET.fromstring('<joint type="slide" axis="0 0 1" range="-1 1"/>')
         >>> scale_joint_element(joint, np.array([1, 1, 3]))
         >>> joint.get("range")
@@ -180,7 +180,7 @@ def scale_mjcf_model(
     sites of ``worldbody`` if given. Unlike robosuite, any white space separates
     numbers, and a ``ValueError`` leaves the element it came from unchanged.
 
-    Example:
+    Examples:
         >>> from mjcf_model.compat.mjcf_utils.queries import get_elements
         >>> obj = ET.fromstring('<body pos="0 0 1">'
         ...                     '<body pos="1 0 0"><geom size="1"/></body></body>')

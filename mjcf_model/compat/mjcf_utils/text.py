@@ -38,7 +38,7 @@ def xml_path_completion(xml_path: str, root: str | None = None) -> str:
     Raises:
         MjcfLookupError: ``root`` is not given and robosuite is not installed.
 
-    Example:
+    Examples:
         >>> xml_path_completion("/abs/a.xml"), xml_path_completion("a.xml", root="/r")
         ('/abs/a.xml', '/r/a.xml')
 
@@ -53,7 +53,7 @@ def xml_path_completion(xml_path: str, root: str | None = None) -> str:
 def array_to_string(array: Iterable[Any]) -> str:
     """Each item formatted with ``"{}".format``, joined by single spaces.
 
-    Example:
+    Examples:
         >>> array_to_string([0.5, 0, True]), array_to_string(np.array([0.5, 0]))
         ('0.5 0 True', '0.5 0.0')
 
@@ -67,7 +67,7 @@ def string_to_array(string: str) -> npt.NDArray[Any]:
     Raises:
         ValueError: Two spaces in a row, tabs, newlines or an empty string (as robosuite).
 
-    Example:
+    Examples:
         >>> string_to_array("1 None 2")
         array([1.0, None, 2.0], dtype=object)
 
@@ -114,7 +114,7 @@ def convert_to_string(inp: Any) -> str:
     Raises:
         ValueError: Any other type.
 
-    Example:
+    Examples:
         >>> convert_to_string(True), convert_to_string([True, 2]), convert_to_string(1e-8)
         ('true', 'True 2', '1e-08')
 
@@ -141,7 +141,7 @@ def get_size(
     Raises:
         ValueError: The defaults differ in length, or ``size`` is given with bounds.
 
-    Example:
+    Examples:
         >>> get_size(None, None, None, [0.07] * 2, [0.03] * 2, np.random.default_rng(0))
         array([0.05547847, 0.04079147])
 
@@ -179,7 +179,7 @@ def add_to_dict(
     and a new key's list is padded with ``n`` of them, ``n`` being (robosuite's
     quirk, kept) the length of the first existing *key* in set order.
 
-    Example:
+    Examples:
         >>> d = {}
         >>> for values in ({"a": 1, "b": 2}, {"a": 3, "c": 4}, {"b": 5}):
         ...     d = add_to_dict(d, **values)
@@ -204,7 +204,7 @@ def add_to_dict(
 def save_sim_model(sim: Any, fname: str) -> None:
     """Write ``sim``'s model to ``fname`` with ``sim.save(file=f, format="xml")`` (mujoco-py's API).
 
-    Example:
+    Examples:
         >>> import tempfile, types
         >>> sim = types.SimpleNamespace(save=lambda file, format: file.write("<mujoco/>"))
         >>> path = os.path.join(tempfile.mkdtemp(), "m.xml")
@@ -227,7 +227,7 @@ def get_ids(
     Raises:
         AssertionError: An unknown ``element_type``.
 
-    Example:
+    Examples:
         >>> import types
         >>> model = types.SimpleNamespace(geom_name2id={"a": 0, "b": 1}.__getitem__)
         >>> get_ids(types.SimpleNamespace(model=model), ["b", 7, "a"])
@@ -252,7 +252,7 @@ def normalize_scale_array(scale: Any) -> npt.NDArray[Any]:
     Raises:
         ValueError: Neither one nor three numbers.
 
-    Example:
+    Examples:
         >>> normalize_scale_array(2), normalize_scale_array([[1.0], [2.0], [3.0]])
         (array([2, 2, 2]), array([1., 2., 3.]))
 

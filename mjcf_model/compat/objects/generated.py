@@ -71,7 +71,7 @@ def half_extents(geom_type: Any, size: Any) -> Any:
     Raises:
         MjcfValueError: a geom type other than box, ellipsoid, sphere, capsule, cylinder.
 
-    Example:
+    Examples:
         >>> half_extents("capsule", [0.02, 0.04])
         [0.02, 0.02, 0.06]
 

@@ -50,7 +50,7 @@ def add_geom(
     ``more`` gives the other per-geom values (``geom_rgbas``, ``density``...); a
     recipe gives every geom the same keys, as robosuite's ``add_to_dict`` expects.
 
-    Example:
+    Examples:
         >>> arguments = {}
         >>> add_geom(arguments, "base", "box", (0, 0, 0), (0.1, 0.1, 0.01), density=10)
         >>> arguments["geom_names"], arguments["geom_quats"], arguments["density"]
@@ -77,7 +77,7 @@ def z_turn(angle: float) -> Vector:
     robosuite writes ``convert_quat(axisangle2quat([0, 0, angle]), "wxyz")``: the
     same operations here give the same bits (``cos(pi / 2)`` is ``6.1e-17``, not 0).
 
-    Example:
+    Examples:
         >>> z_turn(np.pi).tolist(), z_turn(0.0).tolist()
         ([6.123233995736766e-17, 0.0, 0.0, 1.0], [1.0, 0.0, 0.0, 0.0])
 
@@ -99,7 +99,7 @@ WALL_TURNS = tuple(z_turn(angle) for angle in np.array([np.pi / 2, 0, -np.pi / 2
 def wall_offsets(x: Any, y: Any) -> tuple[Vector, Vector]:
     """The centres of four walls ``x`` and ``y`` from the middle, in :data:`WALL_TURNS` order.
 
-    Example:
+    Examples:
         >>> [values.tolist() for values in wall_offsets(0.1, 0.2)]
         [[0.0, -0.1, 0.0, 0.1], [-0.2, 0.0, 0.2, 0.0]]
 
@@ -110,7 +110,7 @@ def wall_offsets(x: Any, y: Any) -> tuple[Vector, Vector]:
 def textured(texture: str, tex_name: str, mat_name: str, texrepeat: str = "3 3") -> CustomMaterial:
     """The cube-mapped material of robosuite's recipes (``specular`` 0.4, ``shininess`` 0.1).
 
-    Example:
+    Examples:
         >>> textured("WoodDark", "dark_wood", "dark_wood_mat").mat_attrib["texrepeat"]
         '3 3'
 

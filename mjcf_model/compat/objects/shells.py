@@ -143,7 +143,7 @@ def cone_layers(
     the middle one at 0: robosuite's ``ConeObject`` geometry, also the tip of its
     ``HookFrame``.
 
-    Example:
+    Examples:
         >>> [size for _, size in cone_layers(0.01, 0.01, 0.005, 3, use_box=False)]
         [(0.03, 0.005), (0.02, 0.005), (0.01, 0.005)]
 

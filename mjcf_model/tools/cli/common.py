@@ -61,7 +61,7 @@ def progress(items: Sequence[_T], quiet: bool, stream: TextIO | None = None) -> 
     it is cleared before each item, so what a verb prints for the item stands on a
     line of its own.
 
-    Example:
+    Examples:
         >>> import io
         >>> class Terminal(io.StringIO):
         ...     def isatty(self): return True
@@ -160,7 +160,7 @@ def guarded(run: Callable[[argparse.Namespace], int]) -> Callable[[argparse.Name
 def said(error: Exception) -> str:
     """``error`` as the command line says it: advice in terms of files and options.
 
-    Example:
+    Examples:
         >>> said(FileNotFoundError(2, "No such file or directory", "m.xml"))
         "cannot read 'm.xml': No such file or directory"
 

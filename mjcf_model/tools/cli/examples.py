@@ -38,7 +38,7 @@ def examples_folder() -> Path:
 def example_path() -> str:
     """The path of the example arm shipped with the package (what ``check --example`` checks).
 
-    Example:
+    Examples:
         >>> example_path().endswith("arm.xml")
         True
 

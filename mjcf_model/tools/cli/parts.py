@@ -50,7 +50,7 @@ class Part:
     def placement(self) -> dict[str, tuple[float, ...]]:
         """The keywords of :func:`mjcf_model.attach` that place this part (only those given).
 
-        Example:
+        Examples:
             >>> Part(word="a.xml", path="a.xml", euler=(0, 0, 90)).placement()
             {'euler': (0, 0, 90)}
 
@@ -66,7 +66,7 @@ def split_part(argument: str) -> tuple[str, str, str | None]:
     prefixes and names may hold ``/`` and file names ``:`` or ``@``); when none
     does, the first mark after the file name's ``.xml`` ends it.
 
-    Example:
+    Examples:
         >>> split_part("robots/arm.xml:left/@left_mount"), split_part("arm.xml")
         (('robots/arm.xml', 'left/', 'left_mount'), ('arm.xml', '', None))
 
@@ -99,7 +99,7 @@ def parts_of(words: Sequence[str]) -> list[Part]:
             finite numbers, or a part has both ``quat=`` and ``euler=``; the
             message names the part and the form expected.
 
-    Example:
+    Examples:
         >>> [part] = parts_of(["arm.xml:r_@mount", "pos=1,0,0", "euler=0,0,-90"])
         >>> part.at, part.pos, part.euler
         ('mount', (1.0, 0.0, 0.0), (0.0, 0.0, -90.0))

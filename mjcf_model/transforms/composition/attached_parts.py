@@ -89,7 +89,7 @@ _WORLD = "world"
 def element_references(element: AnyElement, key: str | None) -> Iterator[tuple[str, str, str]]:
     """``(attribute, namespace, name)`` for each name ``element`` itself refers to.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Motor
         >>> list(element_references(Motor(joint="elbow"), "actuator/motor"))
         [('joint', 'joint', 'elbow')]
@@ -119,7 +119,7 @@ def copies_world_references(section: str) -> bool:
 
     MuJoCo 4.0 does, 3.9 does not; asked once of MuJoCo itself.
 
-    Example:
+    Examples:
         >>> isinstance(copies_world_references("equality"), bool)
         True
 
@@ -263,7 +263,7 @@ def attached_part(
             is inside a ``<replicate>``, or an element refers to the world body
             in a way whose copying is not known.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> cup = loads('<mujoco><option timestep="0.1"/><worldbody><body name="cup"/>'
         ...             '</worldbody></mujoco>')

@@ -149,7 +149,7 @@ def attach(
             (the message lists those it has), or several kinds by that name and
             no ``at_kind``.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom, Mujoco, Site, Worldbody
         >>> arm_body = Body(name="arm", children=[Geom(size=[1])])
         >>> arm = Mujoco(children=[Worldbody(children=[arm_body])])
@@ -207,7 +207,7 @@ def attach_all(
     ``at_kind`` and placement), but the parent's names and sections are read
     once, so attaching N children costs time linear in N.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> cup = loads('<mujoco><worldbody><body name="cup"/></worldbody></mujoco>')
         >>> scene = attach_all(loads("<mujoco/>"), [(cup, f"c{i}_") for i in range(3)])
@@ -225,7 +225,7 @@ def attach_in_frame(parent: Mujoco, child: Mujoco, *, frame: str, prefix: str = 
     As :func:`attach`, but the child's world keeps the frame's place in document
     order (MuJoCo's numbering) among its siblings, as MuJoCo's ``<attach>`` does.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> parent = loads('<mujoco><worldbody><body name="a"/><frame name="here"/>'
         ...                '<body name="z"/></worldbody></mujoco>')

@@ -80,7 +80,7 @@ def compiler_settings(model: Mujoco) -> Settings:
     Raises:
         MjcfValueError: ``eulerseq`` is not 3 characters long (MuJoCo rejects it).
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> m = loads('<mujoco><compiler angle="radian"/><compiler angle="degree"/></mujoco>')
         >>> compiler_settings(m)["angle"], compiler_settings(m)["eulerseq"]

@@ -381,7 +381,7 @@ def in_conventions(child: Mujoco, parent: Mujoco) -> Mujoco:
             meaning (the message names it), or the child has ``<include>``
             elements (load it with ``inline_includes=True``).
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> child = loads('<mujoco><compiler angle="radian" eulerseq="zyx"/><worldbody>'
         ...               '<body euler="1.5707963267948966 0 0"/></worldbody></mujoco>')

@@ -35,7 +35,7 @@ __all__ = ["classed", "merged_settings", "sets_values"]
 def sets_values(default: AnyElement) -> bool:
     """Whether a top-level ``<default>`` sets anything itself (not only nested classes).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> nested_only = Default(children=[Default(dclass="c")])
         >>> sets_values(nested_only), sets_values(Default(children=[Geom()]))
@@ -61,7 +61,7 @@ def merged_settings(defaults: Sequence[AnyElement]) -> list[Node]:
         MjcfValueError: A top-level ``<default>`` sets values after an earlier one
             declared classes.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> merged_settings([Default(children=[Geom(rgba=[1, 0, 0, 1])]),
         ...                  Default(children=[Geom(size=[1])])])
@@ -121,7 +121,7 @@ def classed(nodes: Sequence[Node], main: Default, section: str) -> list[Node]:
     them (``<texture>`` before 4.0). Bodies and frames in the world take it as
     ``childclass``.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom, Motor
         >>> main = Default(dclass="c_main", children=[Geom(rgba=[1, 0, 0, 1])])
         >>> [node.dclass for node in classed([Geom(), Motor()], main, "body")]

@@ -129,7 +129,7 @@ def inertia_kept(child: Mujoco, converted: Mujoco, mine: Settings, theirs: Setti
     Compiled with every body unfused and unaligned (the alignment a free joint asks
     for is made again from the same inertia), so that only inertia settings count.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> child = loads('<mujoco><worldbody><body><freejoint/><geom size="0.1" mass="2"/>'
         ...               '</body></worldbody></mujoco>')

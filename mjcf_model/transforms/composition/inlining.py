@@ -370,7 +370,7 @@ def inlined_attachments(model: Mujoco) -> Mujoco:
             (the message names it), or one :func:`mjcf_model.attach` refuses.
         MjcfCompileError: A sub-model has keyframes and ``model`` does not compile.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads('<mujoco><worldbody><body name="a"><geom size="1"/></body>'
         ...               '<body name="b"><attach body="a" prefix="c_"/></body>'

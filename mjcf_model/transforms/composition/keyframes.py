@@ -100,7 +100,7 @@ def keys_of(model: Mujoco) -> list[AnyElement]:
 def has_keys(model: Mujoco) -> bool:
     """Whether MuJoCo gives ``model`` keyframes: ``<key>`` elements or ``<size nkey>``.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> has_keys(loads('<mujoco><size nkey="1"/></mujoco>')), has_keys(loads("<mujoco/>"))
         (True, False)

@@ -107,7 +107,7 @@ def with_main_as_class(model: Mujoco, name: str) -> Mujoco:
     ``main`` name it too. MuJoCo compiles the result as it compiles ``model``.
     A model whose top-level defaults set nothing is returned as it is.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads('<mujoco><default><default class="a"/></default></mujoco>')
         >>> with_main_as_class(model, "m") is model

@@ -178,7 +178,7 @@ class PartStates:
     def placed(self, pose: Pose) -> PartStates:
         """The states with the part attached at ``pose``.
 
-        Example:
+        Examples:
             >>> from serializers import loads
             >>> ball = loads('<mujoco><worldbody><body mocap="true" pos="1 0 0"/></worldbody>'
             ...              '</mujoco>')
@@ -234,7 +234,7 @@ def pose_of_frames(model: Mujoco, frames: Sequence[Frame]) -> Pose:
     ``<compiler>`` (``angle`` units, ``eulerseq``): a body placed inside them is
     compiled alone and its pose read back.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> world = loads("<mujoco/>")
         >>> pose_of_frames(world, [Frame(pos=[1, 0, 0]), Frame(pos=[0, 2, 0])]).pos

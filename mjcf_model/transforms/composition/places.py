@@ -47,7 +47,7 @@ def placement_frame(
 ) -> Frame | None:
     """The frame placing the child's world relative to the attach point, if any is asked for.
 
-    Example:
+    Examples:
         >>> placement_frame([0, 0, 1], None, None).pos, placement_frame(None, None, None)
         ((0.0, 0.0, 1.0), None)
 
@@ -112,7 +112,7 @@ def _located(parent: Mujoco, at: str, kind: AttachKind | None) -> tuple[AnyEleme
 def attach_point(parent: Mujoco, where: Where) -> AttachPoint | None:
     """Where the children's worlds go in ``parent`` (``None``: appended to its world).
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> arm = loads('<mujoco><worldbody><body name="hand"><frame name="f" pos="1 0 0"/>'
         ...             '</body></worldbody></mujoco>')
@@ -197,7 +197,7 @@ def _quat_overrides_class_orientation() -> bool:
 def wrapped(frames: Sequence[Frame], nodes: list[Node]) -> list[Node]:
     """``nodes`` nested in ``frames``, the first frame outermost.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body
         >>> wrapped([Frame(pos=[1, 0, 0])], [Body(name="b")])[0].elements
         (Body(name='b'),)

@@ -31,7 +31,7 @@ ORIENTATIONS = ("quat", "axisangle", "xyaxes", "zaxis", "euler")
 def quat_product(a: Sequence[float], b: Sequence[float]) -> tuple[float, float, float, float]:
     """The quaternion product ``a * b`` (``w, x, y, z``): turn by ``b``, then by ``a``.
 
-    Example:
+    Examples:
         >>> quat_product((0, 1, 0, 0), (0, 1, 0, 0))
         (-1, 0, 0, 0)
 
@@ -52,7 +52,7 @@ def euler_product(angles: Sequence[float], sequence: str) -> tuple[float, ...]:
     compiles to exactly the quaternion the Euler angles compile to (normalizing
     it here would round it a second time).
 
-    Example:
+    Examples:
         >>> import math
         >>> [round(c, 6) + 0 for c in euler_product([0, 0, math.pi], "xyz")]
         [0.0, 0.0, 0.0, 1.0]
@@ -69,7 +69,7 @@ def euler_product(angles: Sequence[float], sequence: str) -> tuple[float, ...]:
 def euler_quat(angles: Sequence[float], sequence: str) -> tuple[float, ...]:
     """MuJoCo's quaternion for Euler angles in radians: lower case axes turn with the frame.
 
-    Example:
+    Examples:
         >>> import math
         >>> [round(c, 6) + 0 for c in euler_quat([0, 0, math.pi], "xyz")]
         [0.0, 0.0, 0.0, 1.0]
@@ -83,7 +83,7 @@ def euler_quat(angles: Sequence[float], sequence: str) -> tuple[float, ...]:
 def quat_distance(a: Sequence[float], b: Sequence[float]) -> float:
     """The largest difference between two quaternions' components (signs matter).
 
-    Example:
+    Examples:
         >>> quat_distance((1, 0, 0, 0), (0.5, 0, 0, 0))
         0.5
 
@@ -96,7 +96,7 @@ def euler_angles(quat: Sequence[float], sequence: str) -> tuple[float, ...] | No
 
     ``None`` when two rotations that follow each other turn about one axis.
 
-    Example:
+    Examples:
         >>> import math
         >>> [round(a, 9) + 0 for a in euler_angles(euler_quat([0.3, 0, 0], "xyz"), "zyx")]
         [0.0, 0.0, 0.3]
@@ -142,7 +142,7 @@ def euler_angles(quat: Sequence[float], sequence: str) -> tuple[float, ...] | No
 def orientation_radians(degrees: float) -> float:
     """Degrees in radians, computed as MuJoCo converts ``euler`` and ``axisangle``.
 
-    Example:
+    Examples:
         >>> orientation_radians(180.0)
         3.141592653589793
 
@@ -153,7 +153,7 @@ def orientation_radians(degrees: float) -> float:
 def joint_radians(degrees: float) -> float:
     """Degrees in radians, computed as MuJoCo converts joint ranges and references.
 
-    Example:
+    Examples:
         >>> joint_radians(90.0)
         1.5707963267948966
 
@@ -164,7 +164,7 @@ def joint_radians(degrees: float) -> float:
 def in_unit(radians: float, degree: bool, reading: Callable[[float], float]) -> float:
     """The number MuJoCo reads as ``radians`` in the unit (exactly, where a double does it).
 
-    Example:
+    Examples:
         >>> in_unit(1.5707963267948966, True, joint_radians), in_unit(0.5, False, joint_radians)
         (90.0, 0.5)
 

@@ -112,7 +112,7 @@ class Source:
 def model_file_path(file: str, base_dir: Path | None) -> Path:
     """Where MuJoCo reads an asset ``<model file>``: the model's folder (no compiler folder).
 
-    Example:
+    Examples:
         >>> model_file_path("parts/arm.xml", Path("/robots"))
         PosixPath('/robots/parts/arm.xml')
 
@@ -130,7 +130,7 @@ def model_file_name(path: Path) -> str:
     Raises:
         MjcfAssetError: The file cannot be read or is not MJCF.
 
-    Example:
+    Examples:
         >>> import tempfile
         >>> with tempfile.TemporaryDirectory() as folder:
         ...     path = Path(folder) / "gripper_v2.xml"
@@ -155,7 +155,7 @@ def declarations(
     ``base_dir``, the working folder when ``None``; :class:`MjcfAssetError` when
     it cannot be read).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Mesh
         >>> list(declarations(Mesh(file="parts/hand.stl"), "asset/mesh"))
         [('name', 'mesh', 'hand')]
@@ -204,7 +204,7 @@ def copy_suffix(replicate: AnyElement, index: int) -> str:
 
     It is ``sep``, then the index zero-padded to the width of ``count``.
 
-    Example:
+    Examples:
         >>> from mjcf_model.nodes.base import GenericElement
         >>> replicate = GenericElement(tag="replicate", attributes={"count": "12", "sep": "_"})
         >>> copy_suffix(replicate, 3)
@@ -254,7 +254,7 @@ class GeneratedNames:
     Build it with :meth:`of`; :meth:`source` tells where a name MuJoCo makes
     comes from, :meth:`renamed` gives its new name after a renaming.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads('<mujoco><worldbody><flexcomp name="rope" type="grid" '
         ...               'count="4 1 1" spacing="1 1 1" dim="1"/></worldbody></mujoco>')
@@ -277,7 +277,7 @@ class GeneratedNames:
     def of(cls, node: AnyElement, base_dir: Path | None = None) -> GeneratedNames:
         """The generators in ``node`` (a model's own ``base_dir`` locates ``<model>`` files).
 
-        Example:
+        Examples:
             >>> from mjcf_model import Attach, Body
             >>> found = GeneratedNames.of(Body(name="b", children=[Attach(model="m", prefix="g_")]))
             >>> sorted(found.declared["body"]), len(found.attachments)
@@ -308,7 +308,7 @@ class GeneratedNames:
 
         Attachments are not sources here (see :meth:`renamed`).
 
-        Example:
+        Examples:
             >>> from serializers import loads
             >>> model = loads('<mujoco><worldbody><replicate count="3" sep="-">'
             ...               '<site name="s"/></replicate></worldbody></mujoco>')
@@ -347,7 +347,7 @@ class GeneratedNames:
         ``attach_prefix`` is what each ``<attach>``'s ``prefix`` gains (``None``:
         nothing). A name that is declared, or made by nothing, is returned as it is.
 
-        Example:
+        Examples:
             >>> from mjcf_model import Attach, Body
             >>> found = GeneratedNames.of(Body(children=[Attach(model="m", prefix="g_")]))
             >>> found.renamed("joint", "g_elbow", lambda ns, n: n, "p_")
@@ -371,7 +371,7 @@ class GeneratedNames:
     def renames_bodies(self, rename: Renamer, attach_prefix: str | None) -> bool:
         """Whether ``rename`` (with ``attach_prefix``) changes the name of any body.
 
-        Example:
+        Examples:
             >>> from mjcf_model import Body
             >>> found = GeneratedNames.of(Body(name="b"))
             >>> found.renames_bodies(lambda ns, n: n, None), found.renames_bodies(str.__add__, None)

@@ -82,7 +82,7 @@ Renamer = Callable[[str, str], str]
 def declared_names(node: AnyElement) -> dict[str, frozenset[str]]:
     """The names ``node`` and its descendants declare, by namespace.
 
-    Example:
+    Examples:
         >>> from serializers import loads
         >>> model = loads('<mujoco><asset><mesh file="parts/hand.stl"/></asset>'
         ...               '<worldbody><body name="b"><geom name="g"/></body></worldbody></mujoco>')
@@ -127,7 +127,7 @@ def prefix_map(
 ) -> dict[str, dict[str, str]]:
     """The renaming :func:`prefixed` applies: namespace to old name to new name.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> prefix_map(Body(name="b", children=[Geom(name="g")]), "p_", exclude={"g"})
         {'body': {'b': 'p_b'}}
@@ -263,7 +263,7 @@ def renamed(
     names (``"body"``, ``"mesh"``, ``"class"``...) to such maps. Names it does not
     mention, and references to them, stay.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> body = Body(name="base", children=[Geom(name="base")])
         >>> new = renamed(body, {"geom": {"base": "base_geom"}})
@@ -326,7 +326,7 @@ def prefixed(
         MjcfAssetError: An asset ``<model>`` without ``name`` has a file that
             cannot be read (its name is its file root's ``model`` attribute).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom
         >>> body = Body(name="b", childclass="c", children=[Geom(name="g", material="m")])
         >>> new = prefixed(body, "p_")
@@ -371,7 +371,7 @@ def prefixed_declared(
     For callers that prefix the same model many times (composition): the names
     are read once instead of on every call.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body
         >>> body = Body(name="b")
         >>> prefixed_declared(body, "p_", declared_names(body)).name

@@ -92,7 +92,7 @@ class PrefixPlan:
         prefix where ``by_name`` does not allow it, meets text that already holds
         :data:`MARK`, or the tree is deeper than a plan follows.
 
-        Example:
+        Examples:
             >>> from mjcf_model import Body, prefixed
             >>> PrefixPlan.traced(Body(name="b"), prefixed) is not None
             True
@@ -116,7 +116,7 @@ class PrefixPlan:
             prefix: The prefix.
             keep: Names to leave as they are (only for a plan traced ``by_name``).
 
-        Example:
+        Examples:
             >>> from mjcf_model import Body, Geom, prefixed
             >>> body = Body(name="b", children=[Geom(name="p_g")])
             >>> plan = PrefixPlan.traced(body, prefixed, by_name=True)
@@ -140,7 +140,7 @@ class RepeatedPrefixing:
         model: The tree.
         prefixer: Its prefixing, as for :meth:`PrefixPlan.traced`.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, prefixed
         >>> copies = RepeatedPrefixing(Body(name="cup"), prefixed)
         >>> [copies.prefixed(f"c{i}_").name for i in range(3)]
@@ -158,7 +158,7 @@ class RepeatedPrefixing:
     def prefixed(self, prefix: str) -> AnyElement:
         """The tree with ``prefix`` written, as ``prefixer`` writes it.
 
-        Example:
+        Examples:
             >>> from mjcf_model import Body, prefixed
             >>> RepeatedPrefixing(Body(name="cup"), prefixed).prefixed("a_").name
             'a_cup'

@@ -162,7 +162,7 @@ def times(value: Value, factors: Any) -> Value:
 
     Text (an attribute a typed field keeps as text, a plugin setting) stays text.
 
-    Example:
+    Examples:
         >>> times((1.0, 2.0), 2), times(0.5, [2, 3]), times("0.25 1", 2)
         ((2.0, 4.0), 1.0, '0.5 2')
 
@@ -173,7 +173,7 @@ def times(value: Value, factors: Any) -> Value:
 def times_cycle(value: Value, cycle: tuple[float, ...]) -> Value:
     """:func:`times` by factors already made a cycle (:func:`factor_cycle`).
 
-    Example:
+    Examples:
         >>> times_cycle((1.0, 2.0), (2.0,)), times_cycle("1 1 1", (1.0, 2.0))
         ((2.0, 4.0), '1 2 1')
 
@@ -199,7 +199,7 @@ def times_cycle(value: Value, cycle: tuple[float, ...]) -> Value:
 def factor_cycle(factors: Any) -> tuple[float, ...]:
     """``factors`` as a tuple of floats to cycle over a value; one float when all are equal.
 
-    Example:
+    Examples:
         >>> factor_cycle(2), factor_cycle([2, 2, 2]), factor_cycle((1.0, 2.0))
         ((2.0,), (2.0,), (1.0, 2.0))
 

@@ -102,7 +102,7 @@ def friction_rule(tag: str) -> Rule:
     whole model, and an element outside default classes in a part of a model,
     are completed first (see the module's text).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Default, Mujoco, Pair
         >>> main = (Mujoco(), Default())
         >>> rule, context = friction_rule("pair"), ScaleContext(factors=(2.0, 2.0, 2.0))
@@ -142,7 +142,7 @@ def with_friction_defaults(model: AnyElement, context: ScaleContext) -> AnyEleme
     completed it; otherwise one is written into the first top-level ``<default>``,
     or a new ``<default>`` after the model's head sections.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body, Geom, Mujoco, Worldbody
         >>> model = Mujoco(children=[Worldbody(children=[Body(children=[Geom(size=[1])])])])
         >>> done = with_friction_defaults(model, ScaleContext(factors=(2.0,) * 3, model=model))
@@ -177,7 +177,7 @@ def with_flex_contact(flex: AnyElement, context: ScaleContext) -> AnyElement:
     One that has a ``<contact>`` child had it completed by :func:`friction_rule`;
     otherwise one is added with MuJoCo's built-in friction, scaled.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Flexcomp
         >>> with_flex_contact(Flexcomp(name="f"), ScaleContext(factors=(2.0,) * 3)).children
         (FlexContact(friction=(1.0, 0.01, 0.0002)),)

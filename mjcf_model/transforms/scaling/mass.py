@@ -63,7 +63,7 @@ def _shell_meshes(context: ScaleContext) -> frozenset[str]:
 def is_shell(geom: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext) -> bool:
     """Whether MuJoCo spreads the mass of ``geom`` over its surface rather than its volume.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> from mjcf_model.transforms.scaling.context import ScaleContext
         >>> context = ScaleContext(factors=(2.0, 2.0, 2.0))
@@ -108,7 +108,7 @@ def geom_density(
     mass (its own or its classes') and a geom of the world body are left alone,
     and so is every geom under ``mass="volume"``.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> from mjcf_model.transforms.scaling.context import ScaleContext
         >>> context = ScaleContext(factors=(2.0, 2.0, 2.0))

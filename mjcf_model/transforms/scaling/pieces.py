@@ -56,7 +56,7 @@ def builtin_default(tag: str, attribute: str) -> tuple[float, ...]:
     Values MuJoCo keeps in single precision are given by their shortest text
     (``0.02``, not ``0.019999999552965164``).
 
-    Example:
+    Examples:
         >>> builtin_default("site", "size"), builtin_default("geom", "density")
         ((0.005, 0.005, 0.005), (1000.0,))
 
@@ -84,7 +84,7 @@ class ValueRule:
 
     :func:`combine` reads the attributes of all the value rules it holds at once.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Body
         >>> rule = ValueRule("pos", lambda value, context: value[:2] + (0.0,))
         >>> rule(Body(pos=[1, 2, 3]), (), ScaleContext(factors=(2.0, 2.0, 2.0)))
@@ -188,7 +188,7 @@ class BuiltinRule:
     the built-in default first, because the values it leaves out are lengths too.
     In a default class only what is written is scaled.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Site
         >>> rule = BuiltinRule("size", "site", lambda: (0.005, 0.005, 0.005), lambda *_: 2.0)
         >>> rule(Site(size=[0.1]), (), ScaleContext(factors=(2.0, 2.0, 2.0)))
@@ -280,7 +280,7 @@ def combine(*rules: Rule | list[Rule]) -> Rule:
     the other rules follow in order, so one of them may overwrite such an
     attribute. Combined rules given here are merged into this one.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Geom
         >>> rule = combine(points("pos"), lengths("margin"))
         >>> rule(Geom(pos=[1, 0, 0], margin=0.5), (), ScaleContext(factors=(2.0, 2.0, 2.0)))

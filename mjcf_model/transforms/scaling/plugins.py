@@ -101,7 +101,7 @@ def sdf_config(
 ) -> Changes:
     """Scale a ``<config>`` value when it is a length setting of an SDF plugin.
 
-    Example:
+    Examples:
         >>> from mjcf_model import ExtensionPlugin, PluginInstance
         >>> from mjcf_model.transforms.scaling.context import ScaleContext
         >>> owners = (ExtensionPlugin(plugin="mujoco.sdf.torus"), PluginInstance(name="t"))
@@ -128,7 +128,7 @@ def with_sdf_settings(
     ``element`` is a plugin ``<instance>`` or a mesh's or geom's ``<plugin>``,
     its settings already scaled by :func:`sdf_config`.
 
-    Example:
+    Examples:
         >>> from mjcf_model import ExtensionPlugin, PluginInstance
         >>> from mjcf_model.transforms.scaling.context import ScaleContext
         >>> owners = (ExtensionPlugin(plugin="mujoco.sdf.torus"),)
@@ -167,7 +167,7 @@ def sdf_mesh_scale(
     When a default class gives meshes a scale (scaled there), such a mesh writes
     the unscaled value it had, so it stays the one MuJoCo accepted.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Mesh, Plugin
         >>> from mjcf_model.transforms.scaling.context import ScaleContext
         >>> mesh = Mesh(children=[Plugin(instance="t")])
@@ -184,7 +184,7 @@ def sdf_mesh_scale(
 def makes_sdf(mesh: AnyElement) -> bool:
     """Whether a mesh is made by a plugin.
 
-    Example:
+    Examples:
         >>> from mjcf_model import Mesh, Plugin
         >>> makes_sdf(Mesh(children=[Plugin(instance="t")])), makes_sdf(Mesh(file="a.stl"))
         (True, False)

@@ -66,7 +66,7 @@ MassPolicy = Literal["keep", "volume"]
 def three_factors(factor: npt.ArrayLike) -> tuple[float, float, float]:
     """One factor for all three axes, or three: finite and positive (the one place they are read).
 
-    Example:
+    Examples:
         >>> three_factors(2), three_factors([1, 2, 3])
         ((2.0, 2.0, 2.0), (1.0, 2.0, 3.0))
 
@@ -127,7 +127,7 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
             its folder (a loaded model has its skin files written inline first;
             otherwise call ``serializers.skins.inline_skin_files(model, folder)``).
 
-    Example:
+    Examples:
         >>> from mjcf_model import Inertial
         >>> scaled(Inertial(pos=[1, 0, 0], mass=2.0, diaginertia=[1, 1, 1]), 2, mass="volume")
         Inertial(pos=(2.0, 0.0, 0.0), diaginertia=(32.0, 32.0, 32.0), mass=16.0)
