@@ -88,7 +88,7 @@ class MjcfError(Exception):
         detail = self.detail
         if self.advice is not None:
             said = self.advice.command_line if command_line else self.advice.python
-            detail = f"{detail}: {said}"
+            detail = f"{detail}; {said}"
         return ": ".join([*parts, detail])
 
     def __str__(self) -> str:
@@ -100,7 +100,7 @@ class MjcfError(Exception):
         Examples:
             >>> error = MjcfValueError("no file", advice=Advice("pass assets=", "copy it here"))
             >>> str(error), error.for_command_line()
-            ('no file: pass assets=', 'no file: copy it here')
+            ('no file; pass assets=', 'no file; copy it here')
 
         """
         return self._render(command_line=True)
