@@ -102,16 +102,10 @@ def write_kept(root: AnyElement, out: list[str]) -> None:
     children = root.children
     before, after = "", style.newline
     document = layout.document()
-    if document is not None:
-        lead, trail = document.before_comments, document.after_comments
-        inner = len(children) - len(trail)
-        if (
-            inner >= len(lead)
-            and all(a is b for a, b in zip(children, lead, strict=False))
-            and all(a is b for a, b in zip(children[inner:], trail, strict=True))
-        ):
-            before, after = document.before, document.after
-            children = children[len(lead) : inner]
+    inner = document.inner_children(children) if document is not None else None
+    if document is not None and inner is not None:
+        before, after = document.before, document.after
+        children = inner
     out.append(before)
     stack: list[Any] = [after]
     if root.tag == layout.tag:

@@ -74,24 +74,15 @@ def tidy_text(
     document = layout.document() if layout is not None else None
     children = element.children
     before = after = ""
-    if document is not None:
-        lead, trail = document.before_comments, document.after_comments
-        inner = len(children) - len(trail)
-        if (
-            inner >= len(lead)
-            and all(a is b for a, b in zip(children, lead, strict=False))
-            and all(a is b for a, b in zip(children[inner:], trail, strict=True))
-        ):
-            before, after = _outside(document.before), _outside(document.after)
-            if before and document.before[len(document.before.rstrip()) :].count("\n") > 1:
-                before += "\n"  # the blank line before the root
-            if (
-                after
-                and document.after[: len(document.after) - len(document.after.lstrip())].count("\n")
-                > 1
-            ):
-                after = "\n" + after
-            children = children[len(lead) : inner]
+    inner = document.inner_children(children) if document is not None else None
+    if document is not None and inner is not None:
+        children = inner
+        before, after = _outside(document.before), _outside(document.after)
+        if before and document.before[len(document.before.rstrip()) :].count("\n") > 1:
+            before += "\n"  # the blank line before the root
+        lead = document.after[: len(document.after) - len(document.after.lstrip())]
+        if after and lead.count("\n") > 1:
+            after = "\n" + after
     writer.out.append(before)
     writer.element(element, children, 0)
     writer.out.append(after)

@@ -217,6 +217,28 @@ class DocumentText:
         #: The comment nodes read after the root (they end the root's children).
         self.after_comments = after_comments
 
+    def inner_children(self, children: tuple[Any, ...]) -> tuple[Any, ...] | None:
+        """``children`` of the root without the comments read around it, or ``None``.
+
+        ``None`` when ``children`` no longer starts and ends with those very comments
+        (a program changed them): the text around the root is then not written as read.
+
+        Examples:
+            >>> lead, trail = "lead", "trail"
+            >>> DocumentText("", "", (lead,), (trail,)).inner_children((lead, "a", trail))
+            ('a',)
+
+        """
+        lead, trail = self.before_comments, self.after_comments
+        inner = len(children) - len(trail)
+        if (
+            inner >= len(lead)
+            and all(a is b for a, b in zip(children, lead, strict=False))
+            and all(a is b for a, b in zip(children[inner:], trail, strict=True))
+        ):
+            return children[len(lead) : inner]
+        return None
+
 
 class Layout(NamedTuple):
     """Where one element was read, and what it was read with.
