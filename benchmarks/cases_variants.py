@@ -46,9 +46,11 @@ PATCHED = "patched() (mjcf-model, no compile)"
 
 #: How many variants each timed run makes.
 VARIANTS = 10
+#: How many a tiny run (CI) makes: enough to run every contender's loop.
+TINY_VARIANTS = 2
 
 
-def _from_an_empty_cache(run: Callable[[], object]) -> Callable[[], object]:
+def _from_an_empty_cache(run: Callable[[], object], warm: bool = True) -> Callable[[], object]:
     """``run``, first called with MuJoCo's asset cache emptied.
 
     MuJoCo keeps decoded meshes and textures in a cache of 512 MB that stops taking
@@ -58,6 +60,7 @@ def _from_an_empty_cache(run: Callable[[], object]) -> Callable[[], object]:
     first timed call also runs twice more: after decoding a big model's meshes, the
     next few compiles in a process are slower, for whichever contender comes first
     (GR1: 165, 113, 93 then 78 ms), and the median should not depend on the order.
+    ``warm=False`` (a tiny run, which times nothing) leaves those two runs out.
     """
     started = False
 
@@ -68,8 +71,9 @@ def _from_an_empty_cache(run: Callable[[], object]) -> Callable[[], object]:
 
             mujoco.mj_clearCache(mujoco.mj_getCache())
             started = True
-            run()
-            run()
+            if warm:
+                run()
+                run()
         return run()
 
     return fresh
@@ -273,7 +277,8 @@ VARIANT_MODELS = (
 )
 
 
-def _variant_case(path: Path) -> Case:
+def _variant_case(path: Path, tiny: bool) -> Case:
+    count = TINY_VARIANTS if tiny else VARIANTS
     import mujoco
 
     from mjcf_model import compiled, patched
@@ -291,7 +296,7 @@ def _variant_case(path: Path) -> Case:
 
     def ours() -> None:
         rng = np.random.default_rng(1)
-        for _ in range(VARIANTS):
+        for _ in range(count):
             compiled(our_physical_variant(model, rng))
 
     base = compiled(model)
@@ -299,12 +304,12 @@ def _variant_case(path: Path) -> Case:
 
     def ours_patched() -> None:
         rng = np.random.default_rng(1)
-        for _ in range(VARIANTS):
+        for _ in range(count):
             patched(base, model, our_physical_variant(model, rng), into=scratch)
 
     def mjspec() -> None:
         rng = np.random.default_rng(1)
-        for _ in range(VARIANTS):
+        for _ in range(count):
             spec_physical_variant(spec, rng).compile()
 
     name = f"{path.parent.name}/{path.name}"
@@ -312,21 +317,23 @@ def _variant_case(path: Path) -> Case:
         f"physical variants: {name}",
         [
             Contender(
-                OURS, _from_an_empty_cache(ours), note="transform the loaded model, then compiled()"
+                OURS,
+                _from_an_empty_cache(ours, not tiny),
+                note="transform the loaded model, then compiled()",
             ),
             Contender(
                 "MjSpec",
-                _from_an_empty_cache(mjspec),
+                _from_an_empty_cache(mjspec, not tiny),
                 note="spec.copy(), the same edits, compile()",
             ),
             Contender(
                 PATCHED,
-                _from_an_empty_cache(ours_patched),
+                _from_an_empty_cache(ours_patched, not tiny),
                 note="the same variants, patched(compiled, model, variant, into=scratch): "
                 "no compile, no copy",
             ),
         ],
-        f"{VARIANTS} variants (rgba, friction per geom; mass per inertial)",
+        f"{count} variants (rgba, friction per geom; mass per inertial)",
     )
 
 
@@ -351,7 +358,8 @@ def scaled_differences(ours: Any, theirs: Any) -> list[str]:
     return [name for name in differences if not close(name)]
 
 
-def _scaled_case(path: Path) -> Case:
+def _scaled_case(path: Path, tiny: bool) -> Case:
+    count = TINY_VARIANTS if tiny else VARIANTS
     from mjcf_model import compiled, scaled
     from serializers import load
 
@@ -364,11 +372,11 @@ def _scaled_case(path: Path) -> Case:
         raise AssertionError(f"{path.name}: the two scaled variants differ in {differences}")
 
     def ours() -> None:
-        for factor in np.random.default_rng(1).uniform(0.8, 1.2, VARIANTS):
+        for factor in np.random.default_rng(1).uniform(0.8, 1.2, count):
             compiled(scaled(model, float(factor), mass="volume"))
 
     def mjspec() -> None:
-        for factor in np.random.default_rng(1).uniform(0.8, 1.2, VARIANTS):
+        for factor in np.random.default_rng(1).uniform(0.8, 1.2, count):
             spec_scaled_variant(spec, float(factor), lengths).compile()
 
     return Case(
@@ -376,16 +384,16 @@ def _scaled_case(path: Path) -> Case:
         [
             Contender(
                 OURS,
-                _from_an_empty_cache(ours),
+                _from_an_empty_cache(ours, not tiny),
                 note='scaled(model, factor, mass="volume"), then compiled()',
             ),
             Contender(
                 "MjSpec",
-                _from_an_empty_cache(mjspec),
+                _from_an_empty_cache(mjspec, not tiny),
                 note="spec.copy(), every length scaled, compile()",
             ),
         ],
-        f"{VARIANTS} variants (uniform factor 0.8 to 1.2, masses by volume)",
+        f"{count} variants (uniform factor 0.8 to 1.2, masses by volume)",
     )
 
 
@@ -397,7 +405,7 @@ def variant_cases(tiny: bool = False) -> list[Case]:
     for package, relative in VARIANT_MODELS[-1:] if tiny else VARIANT_MODELS:
         folder = package_dir(package)
         if folder is not None:
-            cases += (_variant_case(folder / relative), _scaled_case(folder / relative))
+            cases += (_variant_case(folder / relative, tiny), _scaled_case(folder / relative, tiny))
     return cases
 
 
@@ -477,12 +485,14 @@ def compile_cases(files: list[Path], most: int | None = None) -> list[Case]:
                 [
                     Contender(
                         OURS,
-                        _from_an_empty_cache(lambda m=model: compiled(m)),
+                        _from_an_empty_cache(lambda m=model: compiled(m), most is None),
                         note="compiled(model), loaded",
                     ),
                     Contender(
                         "MjModel.from_xml_path",
-                        _from_an_empty_cache(lambda p=str(path): mujoco.MjModel.from_xml_path(p)),
+                        _from_an_empty_cache(
+                            lambda p=str(path): mujoco.MjModel.from_xml_path(p), most is None
+                        ),
                     ),
                 ],
                 "one mesh model",
