@@ -161,16 +161,16 @@ def said(error: Exception) -> str:
     """``error`` as the command line says it: advice in terms of files and options.
 
     Examples:
-        >>> said(FileNotFoundError(2, "No such file or directory", "m.xml"))
-        "cannot read 'm.xml': No such file or directory"
+        >>> said(PermissionError(13, "Permission denied", "out/m.xml"))
+        "'out/m.xml': Permission denied"
 
     """
     if isinstance(error, MjcfError):
         return error.for_command_line()
-    if isinstance(error, OSError) and error.strerror:
+    if isinstance(error, OSError) and error.strerror:  # reading or writing: the system's words
         if error.filename is None:
             return error.strerror
-        return f"cannot read {str(error.filename)!r}: {error.strerror}"
+        return f"{str(error.filename)!r}: {error.strerror}"
     return str(error)
 
 
