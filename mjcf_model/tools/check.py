@@ -32,6 +32,7 @@ __all__ = [
     "includers_of",
     "standing_path",
     "text_folder",
+    "written_changes",
     "written_differences",
 ]
 
@@ -178,18 +179,16 @@ def _checked_part(path: Path, includers: list[Path]) -> CheckResult:
     """A part for ``<include>``: it reads back the same, and the files including it compile."""
     import mujoco
 
-    from mjcf_model.tools.diff import changes_between
-    from serializers import dumps, load, loads
+    from serializers import dumps, load
 
     name = str(path)
     try:
         model = load(path)
-        changes = changes_between(model, loads(dumps(model), base_dir=path.parent, filename=name))
+        changes = written_changes(model, dumps(model), name)
     except MjcfError as error:
         return CheckResult(path=name, status="error", message=str(error))
     if changes:
-        differences = tuple(map(str, changes))
-        return CheckResult(path=name, status="different", differences=differences)
+        return CheckResult(path=name, status="different", differences=changes)
     for includer in includers:
         try:
             mujoco.MjModel.from_xml_path(str(includer))
@@ -283,6 +282,29 @@ def _rejection(message: str, loaded: Callable[[], Mujoco]) -> str:
     except MjcfError:  # mjcf-model cannot read it either: MuJoCo's words alone
         return plain
     return plain
+
+
+def written_changes(model: Mujoco, written: str, filename: str) -> tuple[str, ...]:
+    """What ``written`` reads back as that ``model`` is not, element by element.
+
+    The proof for a file MuJoCo does not compile alone, in the words of
+    :func:`~mjcf_model.tools.diff.changes_between`. ``written`` is read as if it were
+    the file ``filename`` (see :func:`text_folder`).
+
+    Raises:
+        MjcfError: ``written`` cannot be read.
+
+    Examples:
+        >>> from serializers import loads
+        >>> written_changes(loads("<mujoco><worldbody/></mujoco>"), "<mujoco/>", "m.xml")
+        ('- /mujoco/worldbody',)
+
+    """
+    from mjcf_model.tools.diff import changes_between
+    from serializers import loads
+
+    reread = loads(written, base_dir=text_folder(filename), filename=filename)
+    return tuple(map(str, changes_between(model, reread)))
 
 
 def written_differences(original: Any, written: str, path: str) -> tuple[str, ...]:

@@ -44,8 +44,12 @@ from typing import Any, Literal
 import attrs
 
 from mjcf_model.errors import MjcfCompileError, MjcfValueError, unreadable_file
-from mjcf_model.tools.check import standing_path, text_folder, written_differences
-from mjcf_model.tools.diff import changes_between
+from mjcf_model.tools.check import (
+    standing_path,
+    text_folder,
+    written_changes,
+    written_differences,
+)
 from serializers.tidy import DEFAULT_WIDTH
 
 __all__ = [
@@ -220,24 +224,23 @@ def _formatted(
     from serializers.tidy import tidy_text
 
     text = data if isinstance(data, str) else data.decode("utf-8", errors="replace")
-    folder = text_folder(filename)
-    model = loads(data, base_dir=folder, filename=filename)
-    canonical = tidy_text(
+    model = loads(data, base_dir=text_folder(filename), filename=filename)
+    tidy = tidy_text(
         model,
         indent=" " * options.indent,
         width=options.width,
         normalize_numbers=options.normalize_numbers,
     )
-    unchanged = Formatted(path=filename, original=text, text=canonical, proof="unchanged")
-    if canonical == text:
+    unchanged = Formatted(path=filename, original=text, text=tidy, proof="unchanged")
+    if tidy == text:
         return unchanged
     try:
         original = compile_original()
     except ValueError:  # MuJoCo rejects the original itself: compare the elements
-        changes = changes_between(model, loads(canonical, base_dir=folder, filename=filename))
-        return attrs.evolve(unchanged, proof="elements", differences=tuple(map(str, changes)))
+        changes = written_changes(model, tidy, filename)
+        return attrs.evolve(unchanged, proof="elements", differences=changes)
     try:
-        fields = written_differences(original, canonical, standing_path(filename))
+        fields = written_differences(original, tidy, standing_path(filename))
     except MjcfCompileError as error:
         fields = (str(error),)
     return attrs.evolve(unchanged, proof="compiled", differences=fields)
