@@ -19,7 +19,7 @@ from collections.abc import Iterator, Sequence
 from typing import Any
 
 from mjcf_model.nodes.base import AnyElement, Comment, Node, attribute_items
-from mjcf_model.nodes.layout import Layout, LayoutDetail, detail, place_key
+from mjcf_model.nodes.layout import Layout, LayoutDetail, detail, place_key, read_slots
 from mjcf_model.values import Value, format_value
 from serializers.building import holds_what_was_read, recorded_values
 from serializers.canonical import (
@@ -200,15 +200,12 @@ def _changed_content(
     gaps = cut.gaps
     sources = cut.sources
     count = len(sources)
-    slots = {place_key(source): index for index, source in enumerate(sources)}
     comments = cut.comments
     added = _added_gap(gaps, count, indent, style)
     pieces: list[Any] = []  # a gap, then each child and the gap after it
     written: set[int] = set()  # the gaps written, by index
     last = -1
-    for child in children:
-        token = getattr(child, "layout", child)
-        index = slots.get(place_key(token), -1) if token is not None else -1
+    for child, index in zip(children, read_slots(cut, children), strict=True):
         if index > last:
             if last < 0 or index == last + 1:
                 at = 0 if last < 0 else index

@@ -34,7 +34,7 @@ from __future__ import annotations
 from typing import Any
 
 from mjcf_model.nodes.base import AnyElement, Comment, Node, attribute_items
-from mjcf_model.nodes.layout import Layout, LayoutDetail, detail, place_key
+from mjcf_model.nodes.layout import Layout, detail, read_slots
 from mjcf_model.values import Unparsed, format_value
 from serializers.building import recorded_values
 from serializers.canonical import ATTRIBUTE_ESCAPES, TEXT_ESCAPES, checked_element
@@ -190,14 +190,8 @@ def _gaps_before(element: AnyElement, children: tuple[Node, ...]) -> list[str]:
     layout: Layout | None = element.layout
     if layout is None or layout.tag != element.tag:
         return ["\n"] * len(children)
-    cut: LayoutDetail = detail(layout)
-    slots = {place_key(source): index for index, source in enumerate(cut.sources)}
-    gaps = []
-    for child in children:
-        token = getattr(child, "layout", child)
-        index = slots.get(place_key(token)) if token is not None else None
-        gaps.append("\n" if index is None else cut.gaps[index])
-    return gaps
+    cut = detail(layout)
+    return ["\n" if index < 0 else cut.gaps[index] for index in read_slots(cut, children)]
 
 
 def _blank(gap: str, first: bool) -> str:

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import contextlib
 import weakref
-from collections.abc import Callable, Set
+from collections.abc import Callable, Sequence, Set
 from typing import Any, NamedTuple
 from xml.parsers import expat
 
@@ -33,6 +33,7 @@ __all__ = [
     "SourceText",
     "detail",
     "place_key",
+    "read_slots",
 ]
 
 
@@ -374,6 +375,26 @@ def place_key(source: Any) -> object:
     if type(source) is Layout:
         return (id(source.origin), source.begin)
     return id(source)
+
+
+def read_slots(cut: LayoutDetail, children: Sequence[Any]) -> list[int]:
+    """For each of ``children``, the child slot it was read in, or ``-1`` (added since).
+
+    Examples:
+        >>> origin = SourceText(b"<a><b/><c/></a>")
+        >>> b = Layout(origin, "b", 3, 7, 7, [], (), None)
+        >>> c = Layout(origin, "c", 7, 11, 11, [], (), None)
+        >>> cut = detail(Layout(origin, "a", 0, 3, 15, [], (b, c), None))
+        >>> read_slots(cut, [c, "new", b])
+        [1, -1, 0]
+
+    """
+    slots = {place_key(source): index for index, source in enumerate(cut.sources)}
+    found = []
+    for child in children:
+        token = getattr(child, "layout", child)
+        found.append(-1 if token is None else slots.get(place_key(token), -1))
+    return found
 
 
 def detail(layout: Layout) -> LayoutDetail:
