@@ -112,3 +112,18 @@ def test_a_part_that_does_not_read_back_fails(tmp_path: Path, bad: str) -> None:
     part = tmp_path / "part.xml"
     part.write_text(bad.replace("<mujoco>", "<mujoco").replace("</mujoco>", ""))
     assert _check("--part", str(part)).returncode == 1
+
+
+def test_stdin_that_is_not_utf8_names_the_byte_line_and_column() -> None:
+    """``check -`` on a Latin-1 comment: an error with the reader's location and advice."""
+    done = subprocess.run(
+        [sys.executable, "-m", "mjcf_model", "check", "-"],
+        input=b"<mujoco>\n  <!-- caf\xe9 -->\n</mujoco>\n",
+        capture_output=True,
+        check=False,
+    )
+    assert done.returncode == 1
+    out = done.stdout.decode()
+    assert "ERROR         <stdin>" in out
+    assert "<stdin>:2:" in out and "(column 11)" in out and "byte 0xE9 is not UTF-8" in out
+    assert "iconv -f latin1 -t utf-8" in out

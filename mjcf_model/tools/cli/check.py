@@ -21,10 +21,10 @@ import sys
 from collections.abc import Iterable
 from typing import Any, TextIO
 
+from mjcf_model.errors import MjcfError
 from mjcf_model.tools.check import CheckResult, check_file, check_text
 from mjcf_model.tools.cli.common import STDIO, progress, read_stdin
 from mjcf_model.tools.cli.examples import example_path
-from serializers.repairs import NOT_UTF8_ADVICE
 
 __all__ = ["add_parsers"]
 
@@ -34,9 +34,14 @@ def _check_stdin() -> CheckResult:
     try:
         return check_text(data.decode("utf-8"))
     except UnicodeDecodeError as error:
-        line = data.count(b"\n", 0, error.start) + 1
-        bad = data[error.start]
-        message = f"<stdin>:{line}: byte 0x{bad:02X} is not UTF-8: {NOT_UTF8_ADVICE}"
+        from serializers import loads
+
+        try:
+            loads(data, filename="<stdin>")
+        except MjcfError as refused:  # the reader's words: the byte, line, column, what to do
+            message = refused.for_command_line()
+        else:
+            message = str(error)
         return CheckResult(path="<stdin>", status="error", message=message)
 
 
