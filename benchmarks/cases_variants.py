@@ -282,7 +282,7 @@ def _variant_case(path: Path, tiny: bool) -> Case:
     import mujoco
 
     from mjcf_model import compiled, patched
-    from mjcf_model.tools.compare import model_differences, path_fields
+    from mjcf_model.bridge.compare import model_differences, path_fields
     from serializers import load
 
     # Includes read once, as MjSpec.from_file reads them: a model that keeps its <include>
@@ -346,7 +346,7 @@ def scaled_differences(ours: Any, theirs: Any) -> list[str]:
     float64 product of the file's text, in the last float32 bits (within 4 ulps
     here). Every float64 array is compared exactly.
     """
-    from mjcf_model.tools.compare import model_differences, path_fields
+    from mjcf_model.bridge.compare import model_differences, path_fields
 
     def close(name: str) -> bool:
         left, right = getattr(ours, name, None), getattr(theirs, name, None)

@@ -10,20 +10,9 @@ changed copies; :mod:`serializers` reads and writes MJCF without losing anything
 """
 
 from mjcf_model import errors, nodes
-from mjcf_model.compat.materials import CustomMaterial, recolored_collision_geoms, with_material
-from mjcf_model.compat.mjcf_utils.queries import Categories, categorized
-from mjcf_model.compat.typed_builders import (
-    new_actuator,
-    new_body,
-    new_element,
-    new_geom,
-    new_inertial,
-    new_joint,
-    new_site,
-)
+from mjcf_model.bridge.compiling import compiled
+from mjcf_model.bridge.patching import patched
 from mjcf_model.errors import *  # noqa: F403  (every error class; listed in errors.__all__)
-from mjcf_model.files.compiling import compiled
-from mjcf_model.files.patching import patched
 from mjcf_model.nodes import *  # noqa: F403  (every node class; listed in nodes.__all__)
 from mjcf_model.nodes.base import (
     AttributeMap,
@@ -48,9 +37,7 @@ from mjcf_model.values import Unparsed
 __all__ = [
     "Unparsed",
     "AttributeMap",
-    "Categories",
     "Comment",
-    "CustomMaterial",
     "Element",
     "GenericElement",
     "Node",
@@ -58,7 +45,6 @@ __all__ = [
     "attach",
     "attach_all",
     "attribute_items",
-    "categorized",
     "compiled",
     "declared_names",
     "find",
@@ -68,22 +54,13 @@ __all__ = [
     "inlined_attachments",
     "map_elements",
     "map_tree",
-    "new_actuator",
-    "new_body",
-    "new_element",
-    "new_geom",
-    "new_inertial",
-    "new_joint",
-    "new_site",
     "parent_of",
     "patched",
     "prefix_map",
     "prefixed",
-    "recolored_collision_geoms",
     "renamed",
     "scaled",
     "walk",
     "with_attributes",
-    "with_material",
 ]
 __all__ += errors.__all__ + nodes.__all__

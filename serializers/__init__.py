@@ -10,10 +10,10 @@ True
 """
 
 from serializers.dicts import from_dict, to_dict
-from serializers.etree_reading import from_etree
+from serializers.dumping import dump, dumps
+from serializers.etree import from_etree, to_etree
 from serializers.exporting import export
-from serializers.reader import load, loads
-from serializers.writer import dump, dumps, to_etree
+from serializers.loading import load, loads
 
 __all__ = [
     "dump",

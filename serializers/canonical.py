@@ -1,6 +1,6 @@
 r"""The canonical form: escapes, attribute texts, and each element on its own line.
 
-Shared by :mod:`serializers.writer` (``canonical=True``, and every model built
+Shared by :mod:`serializers.dumping` (``canonical=True``, and every model built
 in code) and :mod:`serializers.kept_format` (elements added to a loaded model).
 
 >>> from mjcf_model import Geom

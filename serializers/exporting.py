@@ -18,9 +18,9 @@ from collections.abc import Mapping
 from pathlib import Path
 
 from mjcf_model.errors import MjcfAssetError, MjcfValueError
-from mjcf_model.files.compiling import bundled
 from mjcf_model.nodes.root import Mujoco
-from serializers.writer import dumps
+from serializers.bundling import bundled
+from serializers.dumping import dumps
 
 __all__ = ["ASSET_FOLDER", "export"]
 

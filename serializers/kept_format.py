@@ -21,13 +21,13 @@ from typing import Any
 from mjcf_model.nodes.base import AnyElement, Comment, Node, attribute_items
 from mjcf_model.nodes.layout import Layout, LayoutDetail, detail, place_key, read_slots
 from mjcf_model.values import Value, format_value
-from serializers.building import holds_what_was_read, recorded_values
 from serializers.canonical import (
     ATTRIBUTE_ESCAPES,
     TEXT_ESCAPES,
     checked_element,
     write_canonical,
 )
+from serializers.parsed_elements import holds_what_was_read, recorded_values
 
 __all__ = ["write_kept"]
 

@@ -36,8 +36,8 @@ from typing import Any
 from mjcf_model.nodes.base import AnyElement, Comment, Node, attribute_items
 from mjcf_model.nodes.layout import Layout, detail, read_slots
 from mjcf_model.values import Unparsed, format_value
-from serializers.building import recorded_values
 from serializers.canonical import ATTRIBUTE_ESCAPES, TEXT_ESCAPES, checked_element
+from serializers.parsed_elements import recorded_values
 
 __all__ = ["DEFAULT_WIDTH", "tidy_text"]
 

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import mujoco
 
-from mjcf_model import compiled
+from mjcf_model import compiled, inlined_attachments
 from serializers import load
 
 
@@ -28,4 +28,4 @@ def attached_body(folder: Path, child: str) -> tuple[mujoco.MjModel, mujoco.MjMo
             "child.xml": child,
         },
     )
-    return mujoco.MjModel.from_xml_path(str(scene)), compiled(load(scene, inline_attachments=True))
+    return mujoco.MjModel.from_xml_path(str(scene)), compiled(inlined_attachments(load(scene)))

@@ -29,7 +29,7 @@ import attrs
 import mujoco
 
 from mjcf_model import Mujoco, attach, compiled
-from mjcf_model.tools.compare import model_differences, path_fields
+from mjcf_model.bridge.compare import model_differences, path_fields
 from serializers import dump, export, load
 from tests.composition_oracle import PlacedPart, composition_problems
 

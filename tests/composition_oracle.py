@@ -33,7 +33,7 @@ import attrs
 import mujoco
 import numpy as np
 
-from mjcf_model.tools.compare import compiled_names, model_fields
+from mjcf_model.bridge.compare import compiled_names, model_fields
 
 __all__ = [
     "DATA",

@@ -30,10 +30,10 @@ from typing import Any, TypeVar
 import mujoco
 from hypothesis import strategies as st
 
+from mjcf_model.bridge.compare import model_differences
 from mjcf_model.errors import MjcfError
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.strategies import models
-from mjcf_model.tools.compare import model_differences
 from serializers import dumps, from_dict, from_etree, loads, to_dict, to_etree
 from tests.conftest import corpus_files, corpus_id
 

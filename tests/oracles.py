@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Collection
 from typing import Any
 
-from mjcf_model.tools.compare import NAME_FIELDS, compiled_names, model_differences, model_fields
+from mjcf_model.bridge.compare import NAME_FIELDS, compiled_names, model_differences, model_fields
 from tests.conftest import MUJOCO_VERSION
 
 #: Every field that a renaming may change.

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.tools.compare import model_differences, model_fields, path_fields
+from mjcf_model.bridge.compare import model_differences, model_fields, path_fields
 from tests.compiled_fields import FLOAT_FIELDS, float_fields
 from tests.conftest import MUJOCO_VERSION
 

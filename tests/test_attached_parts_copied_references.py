@@ -12,7 +12,7 @@ import mujoco
 import pytest
 
 from mjcf_model import FramePos, Motor
-from mjcf_model.tools.compare import model_differences, path_fields
+from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.transforms.composition.attached_parts import element_references
 from tests.attach_files import attached_body
 

@@ -13,6 +13,7 @@ from pathlib import Path
 import mujoco
 import pytest
 
+from mjcf_model import inlined_attachments
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from serializers import load
 from tests.conftest import MUJOCO_VERSION
@@ -53,7 +54,7 @@ def test_body_inside_a_replicate_is_refused(tmp_path: Path) -> None:
         match=r"cannot expand <attach body='b'>: it is inside a <replicate>, "
         "whose copies have other names",
     ):
-        load(scene, inline_attachments=True)
+        inlined_attachments(load(scene))
 
 
 def test_frame_inside_a_replicate_is_refused(tmp_path: Path) -> None:
@@ -65,7 +66,7 @@ def test_frame_inside_a_replicate_is_refused(tmp_path: Path) -> None:
     scene = _scene(tmp_path, child, '<attach model="c" frame="f" prefix="p_"/>')
     _mujoco_refuses(scene, "could not find frame 'f'")
     with pytest.raises(MjcfValueError, match=r"<attach frame='f'>: it is inside a <replicate>"):
-        load(scene, inline_attachments=True)
+        inlined_attachments(load(scene))
 
 
 def test_unknown_frame_lists_the_frames(tmp_path: Path) -> None:
@@ -77,7 +78,7 @@ def test_unknown_frame_lists_the_frames(tmp_path: Path) -> None:
     scene = _scene(tmp_path, child, '<attach model="c" frame="g" prefix="p_"/>')
     _mujoco_refuses(scene, "could not find frame 'g'")
     with pytest.raises(MjcfLookupError, match=r"no frame named 'g'; its frames are \['f'\]"):
-        load(scene, inline_attachments=True)
+        inlined_attachments(load(scene))
 
 
 def test_attach_of_a_body_and_a_frame_is_refused(tmp_path: Path) -> None:
@@ -89,7 +90,7 @@ def test_attach_of_a_body_and_a_frame_is_refused(tmp_path: Path) -> None:
     scene = _scene(tmp_path, child, '<attach model="c" body="b" frame="f" prefix="p_"/>')
     _mujoco_refuses(scene, "at most one of 'body', 'frame'")
     with pytest.raises(MjcfValueError, match=r"^an <attach> names a body or a frame, not both$"):
-        load(scene, inline_attachments=True)
+        inlined_attachments(load(scene))
 
 
 def test_skin_bone_on_the_world_is_refused_naming_the_bone(tmp_path: Path) -> None:
@@ -111,4 +112,4 @@ def test_skin_bone_on_the_world_is_refused_naming_the_bone(tmp_path: Path) -> No
         MjcfValueError,
         match=r'whose model has <bone body="world">: .*refer to a body instead',
     ):
-        load(scene, inline_attachments=True)
+        inlined_attachments(load(scene))

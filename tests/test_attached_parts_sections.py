@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from mjcf_model.tools.compare import model_differences, path_fields
+from mjcf_model.bridge.compare import model_differences, path_fields
 from tests.attach_files import attached_body
 
 

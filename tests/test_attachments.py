@@ -16,12 +16,12 @@ import numpy as np
 import pytest
 
 from mjcf_model import attach, compiled, inlined_attachments, prefixed, scaled
+from mjcf_model.bridge.compare import compiled_names, model_differences, path_fields
 from mjcf_model.errors import (
     MjcfIncludeCycleError,
     MjcfLookupError,
     MjcfValueError,
 )
-from mjcf_model.tools.compare import compiled_names, model_differences, path_fields
 from mjcf_model.tree.queries import find, find_all, parent_of
 from mjcf_model.tree.traversal import walk
 from serializers import dump, load, loads
@@ -72,13 +72,13 @@ def _differences(path: Path, model: mujoco.MjModel) -> list[str]:
 @pytest.mark.parametrize("path", SCENES, ids=_id)
 def test_expansion_compiles_as_mujocos_attach(path: Path) -> None:
     """Every array of the expansion equals MuJoCo's compilation of the ``<attach>`` scene."""
-    assert _differences(path, compiled(load(path, inline_attachments=True))) == []
+    assert _differences(path, compiled(inlined_attachments(load(path)))) == []
 
 
 @pytest.mark.parametrize("path", SCENES, ids=_id)
 def test_expansion_has_no_attach_include_or_model_asset(path: Path) -> None:
     """Only plain elements are left, so that every transform can work on them."""
-    tags = {element.tag for _, element in walk(load(path, inline_attachments=True))}
+    tags = {element.tag for _, element in walk(inlined_attachments(load(path)))}
     assert tags & {"attach", "model", "include"} == set()
 
 
@@ -87,14 +87,14 @@ def test_expansion_dumped_elsewhere_compiles_identically(path: Path, tmp_path: P
     """Written to another folder and read back, the expansion still finds every file."""
     target = tmp_path / "elsewhere" / "scene.xml"
     target.parent.mkdir()
-    dump(load(path, inline_attachments=True), target)
+    dump(inlined_attachments(load(path)), target)
     assert _differences(path, mujoco.MjModel.from_xml_path(str(target))) == []
 
 
 @pytest.mark.parametrize("path", SCENES, ids=_id)
 def test_prefixed_expansion_passes_the_prefix_oracle(path: Path) -> None:
     """Prefixing the expansion renames every compiled name and changes nothing else."""
-    expanded = load(path, inline_attachments=True)
+    expanded = inlined_attachments(load(path))
     changed = compiled(prefixed(expanded, "p_"))
     assert prefix_problems(compiled(expanded), changed, "p_") == []
 
@@ -102,7 +102,7 @@ def test_prefixed_expansion_passes_the_prefix_oracle(path: Path) -> None:
 @pytest.mark.parametrize("path", SCENES, ids=_id)
 def test_scaled_expansion_passes_the_scale_oracle(path: Path) -> None:
     """Scaling the expansion by two doubles every length and keeps every mass."""
-    expanded = load(path, inline_attachments=True)
+    expanded = inlined_attachments(load(path))
     original, changed = compiled(expanded), compiled(scaled(expanded, 2.0))
     problems = scaled_problems(original, changed, 2.0, LENGTHS)
     problems += scaled_problems(original, changed, 1.0, ["body_mass"])
@@ -119,13 +119,13 @@ def test_scaling_refuses_attach_but_not_its_expansion() -> None:
     path = ATTACHMENTS / "robot" / "scene.xml"
     with pytest.raises(MjcfValueError, match="attach"):
         scaled(load(path), 2.0)
-    assert compiled(scaled(load(path, inline_attachments=True), 2.0)).nbody == 9
+    assert compiled(scaled(inlined_attachments(load(path)), 2.0)).nbody == 9
 
 
 def test_queries_find_attached_elements_where_mujoco_puts_them() -> None:
     """Queries see the attached bodies, under the parents MuJoCo gives them."""
     path = ATTACHMENTS / "robot" / "scene.xml"
-    expanded = load(path, inline_attachments=True)
+    expanded = inlined_attachments(load(path))
     reference = mujoco.MjModel.from_xml_path(str(path))
     names = compiled_names(reference)["body"]
     assert [b.name for b in find_all(expanded, "body")] == names[1:]
@@ -140,7 +140,7 @@ def test_queries_find_attached_elements_where_mujoco_puts_them() -> None:
 
 def test_same_model_attach_and_frame_as_mujoco_reads_them() -> None:
     """Without ``model`` or with ``frame``, MuJoCo 4.0 copies from the model itself; 3.9 refuses."""
-    expanded = load(SAME_MODEL, inline_attachments=True)
+    expanded = inlined_attachments(load(SAME_MODEL))
     if MUJOCO_VERSION >= (4, 0):
         assert _differences(SAME_MODEL, compiled(expanded)) == []
     else:
@@ -157,7 +157,7 @@ def test_keys_of_a_model_attached_in_a_replicate() -> None:
     """MuJoCo 4.0's keys are written; MuJoCo 3.9 cannot read full keys there, which is said."""
     if MUJOCO_VERSION >= (4, 0):
         assert (
-            _differences(REPLICATED_KEYS, compiled(load(REPLICATED_KEYS, inline_attachments=True)))
+            _differences(REPLICATED_KEYS, compiled(inlined_attachments(load(REPLICATED_KEYS))))
             == []
         )
     else:
@@ -169,15 +169,15 @@ def test_keys_of_a_model_attached_in_a_replicate() -> None:
             r"remove the attached models' keyframes first$"
         )
         with pytest.raises(MjcfValueError, match=said):
-            load(REPLICATED_KEYS, inline_attachments=True)
+            inlined_attachments(load(REPLICATED_KEYS))
 
 
 def test_loads_expands_from_base_dir() -> None:
-    """``loads(..., base_dir=, inline_attachments=True)`` finds the sub-models like ``load``."""
+    """A model read from text with ``base_dir`` finds its sub-models as one loaded from its file."""
     path = ATTACHMENTS / "nested" / "scene.xml"
     text = path.read_text(encoding="utf-8")
-    from_text = loads(text, base_dir=path.parent, inline_attachments=True)
-    assert from_text == load(path, inline_attachments=True)
+    from_text = inlined_attachments(loads(text, base_dir=path.parent))
+    assert from_text == inlined_attachments(load(path))
     assert _differences(path, compiled(from_text)) == []
 
 
@@ -191,7 +191,7 @@ def test_unattached_model_asset_is_removed(tmp_path: Path) -> None:
             "cup.xml": '<mujoco model="cup"><asset><material name="glaze"/></asset></mujoco>',
         },
     )
-    expanded = load(path, inline_attachments=True)
+    expanded = inlined_attachments(load(path))
     assert find(expanded, "model") is None
     assert _differences(path, compiled(expanded)) == []
 
@@ -228,9 +228,9 @@ def test_euler_angles_in_another_sequence_are_refused(tmp_path: Path) -> None:
     path = written(tmp_path, {"scene.xml": scene, "child.xml": child.format('euler="30 0 10"')})
     mujoco.MjModel.from_xml_path(str(path))
     with pytest.raises(MjcfValueError, match="eulerseq"):
-        load(path, inline_attachments=True)
+        inlined_attachments(load(path))
     written(tmp_path, {"child.xml": child.format('quat="0.9 0.1 0.3 0.2"')})
-    assert _differences(path, compiled(load(path, inline_attachments=True))) == []
+    assert _differences(path, compiled(inlined_attachments(load(path)))) == []
 
 
 def test_unknown_model_body_or_source_is_an_error(tmp_path: Path) -> None:
@@ -250,7 +250,7 @@ def test_unknown_model_body_or_source_is_an_error(tmp_path: Path) -> None:
         with pytest.raises(ValueError):
             mujoco.MjModel.from_xml_path(str(path))
         with pytest.raises(MjcfLookupError, match=message):
-            load(path, inline_attachments=True)
+            inlined_attachments(load(path))
 
 
 def test_models_attaching_each_other_are_refused(tmp_path: Path) -> None:
@@ -267,7 +267,7 @@ def test_models_attaching_each_other_are_refused(tmp_path: Path) -> None:
         },
     )
     with pytest.raises(MjcfIncludeCycleError, match=r"two\.xml -> .*one\.xml -> .*two\.xml"):
-        load(path, inline_attachments=True)
+        inlined_attachments(load(path))
 
 
 def test_unknown_world_reference_is_refused(tmp_path: Path) -> None:

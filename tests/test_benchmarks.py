@@ -25,7 +25,7 @@ from benchmarks.harness import OURS, Case, Contender, Row, run_case
 from benchmarks.inputs import package_dir, synthetic_xml
 from benchmarks.targets import targets
 from mjcf_model import compiled, scaled
-from mjcf_model.tools.compare import compile_text_beside, model_differences, path_fields
+from mjcf_model.bridge.compare import compile_text_beside, model_differences, path_fields
 from serializers import load, loads
 from tests.conftest import compiling_corpus, corpus_id
 

@@ -12,8 +12,8 @@ import mujoco
 import numpy as np
 import pytest
 
+from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.tools.cli import main
-from mjcf_model.tools.compare import model_differences, path_fields
 
 VERBS = (
     "check",

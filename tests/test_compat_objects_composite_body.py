@@ -14,7 +14,8 @@ import robosuite.models.objects as rs
 from robosuite.models.world import MujocoWorldBase
 from robosuite.utils.mjcf_utils import CustomMaterial as TheirMaterial
 
-from mjcf_model import CustomMaterial, MjcfLookupError, MjcfValueError
+from mjcf_model import MjcfLookupError, MjcfValueError
+from mjcf_model.compat import CustomMaterial
 from mjcf_model.compat import objects as ours
 from tests.test_compat_objects_support import (
     assert_same_object,

@@ -17,7 +17,8 @@ import robosuite.models.objects.objects as rs_objects
 from PIL import Image
 from robosuite.utils.mjcf_utils import CustomMaterial as TheirMaterial
 
-from mjcf_model import CustomMaterial, MjcfValueError
+from mjcf_model import MjcfValueError
+from mjcf_model.compat import CustomMaterial
 from mjcf_model.compat import objects as ours
 from tests.test_compat_objects_support import (
     assert_same_object,

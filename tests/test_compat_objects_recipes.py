@@ -21,9 +21,10 @@ from hypothesis import strategies as st
 from robosuite.models.world import MujocoWorldBase
 from robosuite.utils.mjcf_utils import CustomMaterial as TheirMaterial
 
-from mjcf_model import CustomMaterial, MjcfValueError
+from mjcf_model import MjcfValueError
+from mjcf_model.bridge.compare import model_differences
+from mjcf_model.compat import CustomMaterial
 from mjcf_model.compat import objects as ours
-from mjcf_model.tools.compare import model_differences
 from tests.conftest import PER_CLASS
 from tests.test_compat_objects_composite_body import _world as composite_world
 from tests.test_compat_objects_composite_body import assert_same_composite

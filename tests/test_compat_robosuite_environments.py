@@ -26,9 +26,9 @@ import mujoco
 import numpy as np
 import pytest
 
+from mjcf_model.bridge.compare import model_differences
 from mjcf_model.compat import mjcf_utils as our_utils
 from mjcf_model.compat import objects as ours
-from mjcf_model.tools.compare import model_differences
 from tests.conftest import MUJOCO_VERSION
 from tests.test_compat_objects_support import text_of
 

@@ -22,11 +22,11 @@ from hypothesis import strategies as st
 
 from benchmarks.inputs import package_dir
 from mjcf_model import MjcfAssetError, compiled, scaled
-from mjcf_model.files import compiling
+from mjcf_model.bridge import compiling
+from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.files.png import png_bytes
-from mjcf_model.tools.compare import model_differences, path_fields
 from mjcf_model.values import format_float
-from serializers import dumps, load, loads
+from serializers import bundling, dumps, load, loads
 from serializers.skins import float32_as_written
 
 
@@ -54,13 +54,13 @@ def _write(folder: Path, files: dict[str, bytes | str]) -> None:
 def no_reads(monkeypatch: pytest.MonkeyPatch) -> list[str]:
     """The files ``compiled`` reads itself (it should leave those on disk to MuJoCo)."""
     reads: list[str] = []
-    read = compiling._read
+    read = bundling._read
 
-    def counting(reference: compiling.FileReference, assets: dict[str, bytes]) -> bytes:
+    def counting(reference: bundling.FileReference, assets: dict[str, bytes]) -> bytes:
         reads.append(reference.text)
         return read(reference, assets)
 
-    monkeypatch.setattr(compiling, "_read", counting)
+    monkeypatch.setattr(bundling, "_read", counting)
     return reads
 
 
@@ -219,7 +219,7 @@ def test_a_big_inline_skin_compiles_from_a_file_to_the_model_its_text_compiles_t
     """dm_control's dog, scaled: its skin goes to MuJoCo as a binary file, and nothing changes."""
     path = package_dir("dm_control") / "suite/dog.xml"
     model = scaled(load(path, inline_includes=True), factor, mass="volume")
-    bundle = compiling.bundled(model)
+    bundle = bundling.bundled(model)
     given, files = compiling._skins_as_files(bundle.model, bundle.files)
     assert [name for name in files if name.endswith(".skn")] == ["mjcf-model-skin-0.skn"]
     assert "skin_vert" not in dumps(given) and len(dumps(given)) < len(dumps(bundle.model)) / 10

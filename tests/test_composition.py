@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from mjcf_model import Mujoco, compiled, find, get_attribute
+from mjcf_model.bridge.compare import compiled_names
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.tools.compare import compiled_names
 from mjcf_model.transforms.composition.attaching import attach, attach_all
 from serializers import dumps, load, loads
 from serializers.skins import inline_skin_files

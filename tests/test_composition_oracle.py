@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from mjcf_model import Mujoco, attach, compiled
-from mjcf_model.tools.compare import model_fields
+from mjcf_model.bridge.compare import model_fields
 from serializers import load, loads
 from tests.composition_oracle import (
     DATA,

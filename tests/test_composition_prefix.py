@@ -10,9 +10,9 @@ import pytest
 from hypothesis import given
 
 from mjcf_model import Mujoco, compiled
+from mjcf_model.bridge.compare import compiled_names
 from mjcf_model.nodes.base import AnyElement
 from mjcf_model.strategies import models, names
-from mjcf_model.tools.compare import compiled_names
 from mjcf_model.transforms.composition.attaching import attach_all
 from mjcf_model.transforms.naming.renaming import declared_names, prefixed, prefixed_declared
 from mjcf_model.transforms.naming.repeated import MARK, PrefixPlan

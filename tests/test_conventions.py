@@ -16,13 +16,13 @@ import numpy as np
 import pytest
 
 from mjcf_model import compiled, find
+from mjcf_model.bridge.compare import compiled_names, model_differences
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.nodes.base import Node, attribute_items, get_attribute, with_attributes
 from mjcf_model.nodes.compiler import Compiler
-from mjcf_model.nodes.declaring import BASE_FIELDS
+from mjcf_model.nodes.node_info import BASE_FIELDS
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import SCHEMA
-from mjcf_model.tools.compare import compiled_names, model_differences
 from mjcf_model.transforms.composition.conventions import (
     CONVERTED_SETTINGS,
     MODEL_WIDE_SETTINGS,

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from mjcf_model import Mujoco, compiled, find, get_attribute
-from mjcf_model.tools.compare import model_differences
+from mjcf_model.bridge.compare import model_differences
 from mjcf_model.transforms.composition.conventions import in_conventions
 from mjcf_model.tree.traversal import with_children
 from serializers import loads

@@ -8,7 +8,7 @@ share their conventions, and the child is taken as it is.
 from __future__ import annotations
 
 from mjcf_model import compiled
-from mjcf_model.tools.compare import model_differences
+from mjcf_model.bridge.compare import model_differences
 from mjcf_model.transforms.composition.conventions import in_conventions
 from mjcf_model.tree.traversal import with_children
 from serializers import loads

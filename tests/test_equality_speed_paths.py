@@ -32,10 +32,10 @@ from mjcf_model import (
     Worldbody,
     compiled,
 )
+from mjcf_model.bridge.compare import model_differences
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.strategies import element_values, elements, models
-from mjcf_model.tools.compare import model_differences
 from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import Unparsed
 from serializers import dicts, dumps, from_dict, loads, to_dict

@@ -58,8 +58,8 @@ from mjcf_model import (
     TypedElement,
     Worldbody,
 )
+from mjcf_model.bridge.compare import compile_text_beside, model_differences
 from mjcf_model.tools.check import check_file
-from mjcf_model.tools.compare import compile_text_beside, model_differences
 from serializers import dump, dumps, from_dict, from_etree, load, loads, to_dict, to_etree
 
 FIXTURES = Path(__file__).parent / "fixtures"

@@ -14,8 +14,8 @@ import mujoco
 import numpy as np
 from hypothesis import given, settings
 
+from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.strategies import models
-from mjcf_model.tools.compare import model_differences, path_fields
 from mjcf_model.tools.formatting import FormatOptions, format_text, options_from_pyproject
 from serializers import dumps
 

@@ -19,9 +19,9 @@ import pytest
 from hypothesis import given
 
 from mjcf_model import Body, Geom, Mujoco, Site, prefixed, scaled
+from mjcf_model.bridge.compare import compile_text_beside, model_differences, path_fields
 from mjcf_model.nodes.base import AnyElement, Node, build_node, get_attribute, with_attributes
 from mjcf_model.strategies import models
-from mjcf_model.tools.compare import compile_text_beside, model_differences, path_fields
 from mjcf_model.tree.traversal import map_tree, with_children
 from mjcf_model.values import Value
 from serializers import dump, dumps, from_dict, load, loads, to_dict, to_etree

@@ -38,10 +38,10 @@ from mjcf_model import (
     prefixed,
     scaled,
 )
+from mjcf_model.bridge.compare import model_differences
 from mjcf_model.nodes.base import build_node
-from mjcf_model.tools.compare import model_differences
 from serializers import dump, dumps, from_dict, from_etree, load, loads, to_dict, to_etree
-from serializers.building import DEFERRED_TEXT
+from serializers.parsed_elements import DEFERRED_TEXT
 
 #: The packages as imported: the installed wheel under tests/run_installed.py.
 PACKAGES = [Path(mjcf_model.__file__).parent, Path(serializers.__file__).parent]

@@ -15,8 +15,8 @@ import mujoco
 import pytest
 
 from mjcf_model import compiled, inlined_attachments
+from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.nodes.compiler import Compiler
-from mjcf_model.tools.compare import model_differences, path_fields
 from mjcf_model.tree.queries import find
 from serializers import load
 

@@ -12,8 +12,8 @@ import mujoco
 import pytest
 
 from mjcf_model import compiled, inlined_attachments
+from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.nodes.base import get_attribute
-from mjcf_model.tools.compare import model_differences, path_fields
 from mjcf_model.tree.traversal import walk
 from serializers import load
 

@@ -14,10 +14,10 @@ import mujoco
 import pytest
 
 from mjcf_model import compiled, inlined_attachments
+from mjcf_model.bridge.compare import compiled_names, model_differences, path_fields
 from mjcf_model.errors import MjcfCompileError
 from mjcf_model.nodes.base import get_attribute
 from mjcf_model.nodes.keyframe import Keyframe
-from mjcf_model.tools.compare import compiled_names, model_differences, path_fields
 from mjcf_model.tree.queries import find_all
 from mjcf_model.tree.traversal import walk
 from serializers import load

@@ -15,10 +15,10 @@ import mujoco
 import pytest
 
 from mjcf_model import compiled, inlined_attachments
+from mjcf_model.bridge.compare import compiled_names, model_differences, path_fields
 from mjcf_model.nodes.base import Comment, get_attribute
 from mjcf_model.nodes.body import Worldbody
 from mjcf_model.nodes.keyframe import Keyframe
-from mjcf_model.tools.compare import compiled_names, model_differences, path_fields
 from mjcf_model.tree.traversal import walk
 from serializers import load, loads
 from tests.attach_files import written

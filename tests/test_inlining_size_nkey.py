@@ -16,7 +16,7 @@ import mujoco
 import pytest
 
 from mjcf_model import compiled, inlined_attachments
-from mjcf_model.tools.compare import compiled_names, model_differences, path_fields
+from mjcf_model.bridge.compare import compiled_names, model_differences, path_fields
 from serializers import load, loads
 from tests.conftest import MUJOCO_VERSION
 

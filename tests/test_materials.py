@@ -29,6 +29,7 @@ from mjcf_model import (
     Texture,
     Worldbody,
 )
+from mjcf_model.bridge.compare import model_differences
 from mjcf_model.compat.materials import (
     DEFAULT_MATERIAL,
     TEXTURE_FILES,
@@ -39,7 +40,6 @@ from mjcf_model.compat.materials import (
 )
 from mjcf_model.nodes.base import AnyElement, Element, get_attribute
 from mjcf_model.strategies import models
-from mjcf_model.tools.compare import model_differences
 from serializers import dumps, load, loads, to_etree
 from tests.conftest import corpus_id, loading_corpus
 

@@ -12,8 +12,8 @@ from pathlib import Path
 import mujoco
 import pytest
 
+from mjcf_model.bridge.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.nodes.base import get_attribute
-from mjcf_model.tools.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.transforms.naming.renaming import prefix_map, prefixed, renamed
 from serializers import dumps, load, loads
 from tests.oracles import RENAMING_FIELDS, prefix_problems

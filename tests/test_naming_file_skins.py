@@ -15,8 +15,8 @@ from pathlib import Path
 import mujoco
 import pytest
 
+from mjcf_model.bridge.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.errors import MjcfError, MjcfValueError
-from mjcf_model.tools.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.transforms.naming.renaming import prefixed, renamed
 from serializers import dumps, loads
 from tests.oracles import RENAMING_FIELDS

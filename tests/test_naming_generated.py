@@ -15,9 +15,9 @@ import mujoco
 import pytest
 
 from mjcf_model import GenericElement, Mujoco
+from mjcf_model.bridge.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.errors import MjcfAssetError, MjcfValueError
 from mjcf_model.tools.check import check_file
-from mjcf_model.tools.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.transforms.naming.renaming import declared_names, prefix_map, prefixed, renamed
 from mjcf_model.tree.traversal import walk
 from serializers import dumps, from_dict, from_etree, load, loads, to_dict, to_etree

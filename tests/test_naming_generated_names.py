@@ -16,10 +16,14 @@ import mujoco
 import pytest
 
 from mjcf_model import Body
+from mjcf_model.bridge.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.errors import MjcfAssetError, MjcfError
 from mjcf_model.nodes.base import GenericElement, TypedElement
-from mjcf_model.tools.compare import compile_text_beside, compiled_names, model_differences
-from mjcf_model.transforms.naming.generated import GeneratedNames, copy_suffix, model_file_name
+from mjcf_model.transforms.naming.generated_names import (
+    GeneratedNames,
+    copy_suffix,
+    model_file_name,
+)
 from mjcf_model.transforms.naming.renaming import prefixed, renamed
 from serializers import dumps, load, loads
 from tests.oracles import RENAMING_FIELDS, prefix_problems

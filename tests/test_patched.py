@@ -19,11 +19,11 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from mjcf_model import MjcfRecompiledWarning, compiled, map_elements, patched, with_attributes
-from mjcf_model.files.patching import FIELDS
+from mjcf_model.bridge.compare import model_differences
+from mjcf_model.bridge.patching import FIELDS
 from mjcf_model.nodes.base import AnyElement, attribute_items, get_attribute
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.strategies import models
-from mjcf_model.tools.compare import model_differences
 from mjcf_model.values import numbers_of
 from serializers import load, loads
 from tests.conftest import MUJOCO_VERSION, PER_CLASS, compiling_corpus, corpus_id

@@ -15,8 +15,8 @@ from mjcf_model import (
     Mujoco,
     compiled,
 )
+from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.files.provenance import file_references
-from mjcf_model.tools.compare import model_differences, path_fields
 from serializers import dump, dumps, export, from_dict, load, loads, to_dict
 from tests.conftest import compiling_corpus, corpus_id
 

@@ -11,11 +11,11 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from mjcf_model import Body, Geom, Mujoco, Site, compiled
+from mjcf_model.bridge.compare import model_differences
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.strategies import models
-from mjcf_model.tools.compare import model_differences
 from mjcf_model.transforms.scaling.pieces import NO_LENGTHS
 from mjcf_model.transforms.scaling.rules import RULES, UNSCALED_BY_DECISION
 from mjcf_model.transforms.scaling.transform import scaled

@@ -16,11 +16,11 @@ import pytest
 from hypothesis import given
 
 from mjcf_model import compiled
+from mjcf_model.bridge.compare import compile_text_beside
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.nodes.base import TypedElement
 from mjcf_model.strategies import elements
 from mjcf_model.tools.check import check_file
-from mjcf_model.tools.compare import compile_text_beside
 from mjcf_model.transforms.scaling.plugins import SDF_LENGTHS
 from mjcf_model.transforms.scaling.transform import MassPolicy, scaled
 from serializers import dumps, from_etree, load, loads

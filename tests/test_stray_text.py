@@ -16,8 +16,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from mjcf_model import Geom, Mujoco
+from mjcf_model.bridge.compare import compile_text_beside, model_differences
 from mjcf_model.nodes.base import AnyElement, Node
-from mjcf_model.tools.compare import compile_text_beside, model_differences
 from mjcf_model.tree.traversal import map_tree, with_children
 from serializers import dumps, load, loads
 

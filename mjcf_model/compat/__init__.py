@@ -5,4 +5,36 @@ Code written against robosuite 1.5.2's ``robosuite.utils.mjcf_utils`` and
 and :mod:`mjcf_model.compat.objects`. The state underneath is the immutable model;
 every behaviour is a call into the pure transforms of :mod:`mjcf_model`, and
 ElementTree appears only at the boundary, as robosuite's own code expects.
+
+The robosuite conventions that are not robosuite's own API are here too, not in
+:mod:`mjcf_model`: its materials as frozen values (:class:`CustomMaterial`,
+:func:`with_material`, :func:`recolored_collision_geoms`), its geom categories
+(:func:`categorized`) and its constructors as typed nodes (``new_body``...).
 """
+
+from mjcf_model.compat.materials import CustomMaterial, recolored_collision_geoms, with_material
+from mjcf_model.compat.mjcf_utils.queries import Categories, categorized
+from mjcf_model.compat.typed_builders import (
+    new_actuator,
+    new_body,
+    new_element,
+    new_geom,
+    new_inertial,
+    new_joint,
+    new_site,
+)
+
+__all__ = [
+    "Categories",
+    "CustomMaterial",
+    "categorized",
+    "new_actuator",
+    "new_body",
+    "new_element",
+    "new_geom",
+    "new_inertial",
+    "new_joint",
+    "new_site",
+    "recolored_collision_geoms",
+    "with_material",
+]

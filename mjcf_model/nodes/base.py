@@ -26,8 +26,9 @@ from mjcf_model.nodes import layout as layouts
 from mjcf_model.nodes.attribute_map import EMPTY_ATTRIBUTES, AttributeMap, to_attribute_map
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.comparing import Subtree, forest_hash, forests_equal
-from mjcf_model.nodes.declaring import NodeInfo, node, xml_name
+from mjcf_model.nodes.declaring import node
 from mjcf_model.nodes.layout import Layout
+from mjcf_model.nodes.node_info import NodeInfo, xml_name
 from mjcf_model.values import Value, check_name, check_text, format_value, plain_value, to_str
 
 __all__ = [

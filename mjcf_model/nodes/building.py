@@ -17,7 +17,7 @@ from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any, TypeVar
 
 if TYPE_CHECKING:
-    from mjcf_model.nodes.base import Node
+    from mjcf_model.nodes.node_info import DeclaredNode as Node
 
 __all__ = ["build_node", "fill_node"]
 

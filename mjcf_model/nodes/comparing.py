@@ -13,7 +13,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from mjcf_model.nodes.base import Node
+    from mjcf_model.nodes.node_info import DeclaredNode as Node
 
 __all__ = ["Subtree", "forest_hash", "forests_equal"]
 

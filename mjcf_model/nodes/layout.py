@@ -186,7 +186,7 @@ class SourceText:
 
 
 #: How to pickle an element read from text (its class, layout, children and the fields
-#: changed since; set by the reader, :func:`serializers.building.reduced_from_text`), or
+#: changed since; set by the reader, :func:`serializers.parsed_elements.reduced_from_text`), or
 #: ``None`` for any other: an element has a layout only once the reader is imported.
 REDUCE_FROM_TEXT: Callable[[Any], tuple[Any, ...] | None] | None = None
 

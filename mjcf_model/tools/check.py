@@ -18,9 +18,9 @@ from typing import TYPE_CHECKING, Any, Literal
 
 import attrs
 
+from mjcf_model.bridge.compare import model_differences, path_fields
+from mjcf_model.bridge.compiling import compiled
 from mjcf_model.errors import MjcfCompileError, MjcfError
-from mjcf_model.files.compiling import compiled
-from mjcf_model.tools.compare import model_differences, path_fields
 
 if TYPE_CHECKING:
     from mjcf_model.nodes.root import Mujoco
@@ -71,7 +71,7 @@ def check_file(
     Loads the file, writes it back to text, compiles the original and, in
     memory (:func:`mjcf_model.compiled`), the written text read as if it stood
     in the original's folder, and compares every field of the two ``MjModel``
-    objects but the recorded file paths (:func:`mjcf_model.tools.compare.path_fields`).
+    objects but the recorded file paths (:func:`mjcf_model.bridge.compare.path_fields`).
 
     A file MuJoCo rejects that other files include (:func:`includers_of`), or any
     file when ``part`` is true, is checked as a part for ``<include>``: it must read
@@ -272,7 +272,7 @@ def _rejection(message: str, loaded: Callable[[], Mujoco]) -> str:
     model mjcf-model reads is compiled again, so that the error names the file,
     line and element path (:func:`mjcf_model.compiled`), if MuJoCo says the same of it.
     """
-    from mjcf_model.files.compile_errors import Complaint
+    from mjcf_model.bridge.compile_errors import Complaint
 
     plain = f"MuJoCo rejects the model: {message.strip()}"
     try:

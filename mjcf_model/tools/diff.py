@@ -43,7 +43,7 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import SCHEMA
-from mjcf_model.transforms.naming.generated import declarations
+from mjcf_model.transforms.naming.generated_names import declarations
 from mjcf_model.tree.traversal import keyed_walk
 from mjcf_model.values import Value, format_value
 

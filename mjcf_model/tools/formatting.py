@@ -254,7 +254,7 @@ def _compiled_text(text: str, beside: str) -> Any:
     """
     import mujoco
 
-    from mjcf_model.tools.compare import compile_text_beside
+    from mjcf_model.bridge.compare import compile_text_beside
 
     try:
         return compile_text_beside(text, beside)

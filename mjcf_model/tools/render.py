@@ -64,7 +64,7 @@ def render(
     except Exception as error:  # RuntimeError, ImportError, AttributeError from PyOpenGL...
         raise MjcfRenderError(f"{_INSTALL} ({type(error).__name__}: {error})") from None
 
-    from mjcf_model.files.compiling import compiled
+    from mjcf_model.bridge.compiling import compiled
 
     compiled_model = compiled(model)
     if (

@@ -26,7 +26,7 @@ from mjcf_model.nodes.base import (
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import child_key, guess_context
 from mjcf_model.values import plain_value
-from serializers.writer import to_etree
+from serializers.etree import to_etree
 
 __all__ = [
     "TextRule",

@@ -21,7 +21,7 @@ from mjcf_model.nodes.base import (
 from mjcf_model.tree.traversal import Path
 from mjcf_model.values import format_value
 from serializers.canonical import attribute_texts
-from serializers.etree_reading import from_etree
+from serializers.etree import from_etree
 
 __all__ = [
     "Edits",

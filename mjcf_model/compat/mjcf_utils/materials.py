@@ -1,7 +1,7 @@
 """robosuite's materials and colours: ``CustomMaterial``, ``add_material``, recolouring, alpha.
 
 ``CustomMaterial`` is robosuite's mutable record, not the library's frozen
-:class:`mjcf_model.CustomMaterial` (whose text differs).
+:class:`mjcf_model.compat.CustomMaterial` (whose text differs).
 """
 
 from __future__ import annotations

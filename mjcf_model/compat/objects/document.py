@@ -40,8 +40,7 @@ from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, Node, Typ
 from mjcf_model.tree.paths import appended_at, replaced_at, subtree_at
 from mjcf_model.tree.queries import find
 from mjcf_model.tree.traversal import Path, walk, with_children
-from serializers.etree_reading import from_etree
-from serializers.writer import to_etree
+from serializers.etree import from_etree, to_etree
 
 __all__ = [
     "EtreeView",

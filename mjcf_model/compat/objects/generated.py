@@ -1,6 +1,6 @@
 """Objects built in code, as robosuite does: ``MujocoGeneratedObject`` and the primitives.
 
-Materials may be this library's :class:`~mjcf_model.CustomMaterial` or robosuite's own.
+Materials may be this library's :class:`~mjcf_model.compat.CustomMaterial` or robosuite's own.
 Drawn sizes use the compatible ``get_size``, so a seeded generator gives robosuite's sizes.
 
 >>> ball = PrimitiveObject("ball", size=[0.03], material="default")

@@ -43,7 +43,7 @@ from mjcf_model.transforms.scaling.transform import three_factors
 from mjcf_model.tree.ancestry import fold_ancestors
 from mjcf_model.tree.defaults import MAIN, DefaultClasses
 from mjcf_model.tree.traversal import Path, map_elements, map_tree, with_children
-from serializers.writer import attribute_texts
+from serializers.dumping import attribute_texts
 
 __all__ = [
     "OBJECT_COLLISION_RGBA_TEXT",

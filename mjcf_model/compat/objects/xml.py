@@ -63,7 +63,7 @@ from mjcf_model.nodes.base import AnyElement, GenericElement, with_attributes
 from mjcf_model.tree.paths import appended_at, replaced_at, subtree_at
 from mjcf_model.tree.traversal import walk, with_children
 from mjcf_model.values import to_vec4
-from serializers.writer import to_etree
+from serializers.etree import to_etree
 
 __all__ = ["MujocoXML", "MujocoXMLModel", "MujocoXMLObject"]
 

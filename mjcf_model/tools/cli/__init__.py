@@ -23,13 +23,13 @@ from mjcf_model.tools.cli import examples as examples
 from mjcf_model.tools.cli import fmt as fmt
 from mjcf_model.tools.cli import info as info
 from mjcf_model.tools.cli import render as render
-from mjcf_model.tools.cli import transforms as transforms
+from mjcf_model.tools.cli import transform_verbs as transform_verbs
 from mjcf_model.tools.cli.examples import example_path
 
 __all__ = ["example_path", "main"]
 
 #: The verbs, in the order ``--help`` lists them.
-_VERBS = (check, fmt, diff, transforms, info, render, examples)
+_VERBS = (check, fmt, diff, transform_verbs, info, render, examples)
 
 
 def parser() -> argparse.ArgumentParser:

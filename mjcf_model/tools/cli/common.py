@@ -118,7 +118,7 @@ def write_model(model: Mujoco, target: str, *, canonical: bool = False) -> None:
     working folder for standard output).
     """
     import serializers
-    from serializers.writer import relocated_for
+    from serializers.dumping import relocated_for
 
     if target == STDIO:
         text = serializers.dumps(relocated_for(model, Path.cwd()), canonical=canonical)
@@ -132,7 +132,7 @@ def write_text(text: str, target: str) -> None:
     if target == STDIO:
         sys.stdout.write(text)
         return
-    from serializers.writer import write_atomically
+    from serializers.dumping import write_atomically
 
     write_atomically(text, target)
 

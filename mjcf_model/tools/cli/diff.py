@@ -35,8 +35,8 @@ def _diff(arguments: argparse.Namespace) -> int:
     changes = changes_between(first, second)
     fields: list[str] = []
     if arguments.compiled:
-        from mjcf_model.files.compiling import compiled
-        from mjcf_model.tools.compare import model_differences, path_fields
+        from mjcf_model.bridge.compare import model_differences, path_fields
+        from mjcf_model.bridge.compiling import compiled
 
         fields = model_differences(compiled(first), compiled(second), ignore=path_fields())
     equal = not changes and not fields

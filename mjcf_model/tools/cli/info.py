@@ -51,8 +51,8 @@ def _info(arguments: argparse.Namespace) -> int:
 
 def _compiles(model: Mujoco) -> str:
     """``yes``, or ``no:`` and where and why MuJoCo rejects ``model``."""
+    from mjcf_model.bridge.compiling import compiled
     from mjcf_model.errors import MjcfAssetError, MjcfCompileError
-    from mjcf_model.files.compiling import compiled
 
     try:
         compiled(model)

@@ -31,7 +31,7 @@ def _render(arguments: argparse.Namespace) -> int:
     if arguments.output == STDIO:
         sys.stdout.buffer.write(data)
     else:
-        from serializers.writer import write_atomically
+        from serializers.dumping import write_atomically
 
         write_atomically(data, arguments.output)
     return 0

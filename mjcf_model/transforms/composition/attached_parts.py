@@ -54,7 +54,7 @@ from mjcf_model.nodes.base import (
 from mjcf_model.nodes.body import Worldbody
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import SCHEMA, reference_namespace
-from mjcf_model.transforms.naming.generated import GeneratedNames, declarations
+from mjcf_model.transforms.naming.generated_names import GeneratedNames, declarations
 from mjcf_model.tree.traversal import keyed_walk, with_children
 
 __all__ = ["attached_part", "copies_world_references", "element_references"]

@@ -15,8 +15,8 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
+from mjcf_model.bridge.compiling import compiled
 from mjcf_model.errors import MjcfError, MjcfValueError
-from mjcf_model.files.compiling import compiled
 from mjcf_model.nodes.base import AnyElement, attribute_items, get_attribute, with_attributes
 from mjcf_model.nodes.body import Inertial
 from mjcf_model.nodes.compiler import Compiler
@@ -27,7 +27,7 @@ from mjcf_model.transforms.composition.compiler_settings import (
     PATH_SETTINGS,
     Settings,
 )
-from mjcf_model.transforms.naming.generated import copy_suffix
+from mjcf_model.transforms.naming.generated_names import copy_suffix
 from mjcf_model.transforms.naming.renaming import declared_names
 from mjcf_model.tree.traversal import map_elements, with_children
 from mjcf_model.values import Value

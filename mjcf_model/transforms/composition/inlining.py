@@ -66,7 +66,6 @@ from mjcf_model.errors import (
     MjcfLookupError,
     MjcfValueError,
 )
-from mjcf_model.files.compiling import inlined
 from mjcf_model.nodes.base import (
     AnyElement,
     GenericElement,
@@ -84,11 +83,12 @@ from mjcf_model.transforms.composition.attaching import attach_in_frame
 from mjcf_model.transforms.composition.compiler_settings import compiler_settings
 from mjcf_model.transforms.composition.conventions import in_conventions
 from mjcf_model.transforms.composition.keyframes import keys_of
-from mjcf_model.transforms.naming.generated import declarations, model_file_path
+from mjcf_model.transforms.naming.generated_names import declarations, model_file_path
 from mjcf_model.transforms.naming.renaming import declared_names
 from mjcf_model.tree.paths import replaced_at
 from mjcf_model.tree.traversal import Path as TreePath
 from mjcf_model.tree.traversal import keyed_walk, walk, with_children
+from serializers.dumping import inlined_includes
 
 if TYPE_CHECKING:
     import mujoco
@@ -288,8 +288,8 @@ def _without_model_assets(model: Mujoco) -> Mujoco:
 
 def _with_attached_keys(expanded: Mujoco, original: Mujoco) -> Mujoco:
     """``expanded`` with the keys MuJoCo adds for the attached models' keys."""
-    from mjcf_model.files.compiling import compiled
-    from mjcf_model.tools.compare import compiled_names
+    from mjcf_model.bridge.compare import compiled_names
+    from mjcf_model.bridge.compiling import compiled
 
     reference = compiled(original)
     own = keys_of(expanded)
@@ -331,8 +331,8 @@ def _check_keys(result: Mujoco, reference: mujoco.MjModel) -> None:
     against the model before the copies (and copies the keys), so full keys
     cannot be written there.
     """
+    from mjcf_model.bridge.compiling import compiled
     from mjcf_model.errors import MjcfCompileError
-    from mjcf_model.files.compiling import compiled
 
     try:
         got = compiled(result)
@@ -379,7 +379,7 @@ def inlined_attachments(model: Mujoco) -> Mujoco:
         ['c_a']
 
     """
-    original = inlined(model)
+    original = inlined_includes(model)
     if not any(e.tag in ("attach", "model") for _, e in walk(original)):
         return original
     expansion = _Expansion()

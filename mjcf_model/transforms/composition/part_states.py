@@ -27,8 +27,8 @@ import attrs
 import numpy as np
 import numpy.typing as npt
 
+from mjcf_model.bridge.compiling import compiled
 from mjcf_model.errors import MjcfCompileError, MjcfValueError
-from mjcf_model.files.compiling import compiled
 from mjcf_model.nodes.base import Node, get_attribute, with_attributes
 from mjcf_model.nodes.body import Body, Frame, Worldbody
 from mjcf_model.nodes.compiler import Compiler

@@ -12,7 +12,7 @@ through the model's ``base_dir``). Renaming one writes the new name explicitly.
 
 Names MuJoCo makes while reading (``<replicate>`` copies, ``<flexcomp>`` bodies,
 ``<attach>`` prefixes) follow the name or prefix they are made from, and so do
-references to them: see :mod:`mjcf_model.transforms.naming.generated`. An ``<attach>``
+references to them: see :mod:`mjcf_model.transforms.naming.generated_names`. An ``<attach>``
 without ``model`` copies a body or frame of the same model, so its ``body`` and
 ``frame`` are renamed with that model's names. A skin read from a file names its
 bones' bodies inside the file: renaming bodies then raises, saying to write the
@@ -43,7 +43,7 @@ from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import NAMESPACES, SCHEMA, ElementSpec, reference_namespace
-from mjcf_model.transforms.naming.generated import (
+from mjcf_model.transforms.naming.generated_names import (
     DECLARING_KEYS,
     SAME_MODEL_ATTACH,
     GeneratedNames,

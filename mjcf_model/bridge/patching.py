@@ -148,7 +148,7 @@ def patched(
     """
     import mujoco
 
-    from mjcf_model.files.compiling import compiled
+    from mjcf_model.bridge.compiling import compiled
 
     changes: list[tuple[str, str, int, tuple[float, ...]]] = []
     problem = _mapped(model, before, after, changes)
@@ -340,7 +340,7 @@ def _numbering(before: Mujoco) -> dict[tuple[int, ...], int]:
         return known[1]
     import mujoco
 
-    from mjcf_model.files.compiling import compiled
+    from mjcf_model.bridge.compiling import compiled
 
     labels: dict[tuple[str, str], tuple[int, ...]] = {}
     named = _labelled(before, None, (), labels)

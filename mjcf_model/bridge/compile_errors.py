@@ -1,6 +1,6 @@
 r"""Where the element MuJoCo rejects stands in the user's files.
 
-:func:`~mjcf_model.files.compiling.compiled` hands MuJoCo text it wrote itself, so
+:func:`~mjcf_model.bridge.compiling.compiled` hands MuJoCo text it wrote itself, so
 the line MuJoCo names is a line of that text, which the user has never seen.
 :func:`compile_error` reads that text back, finds the element standing on that
 line, and follows it to the element of the user's model: its element path, and
@@ -8,7 +8,7 @@ the file and line it was read from (a part attached from another folder: the
 part's own file). Nothing here runs unless MuJoCo rejects a model.
 
 >>> from serializers import loads
->>> from mjcf_model.files.compiling import compiled
+>>> from mjcf_model.bridge.compiling import compiled
 >>> model = loads('<mujoco>\n<worldbody>\n<geom class="x" size="1"/>\n</worldbody>\n</mujoco>',
 ...               filename="arm.xml")
 >>> try:
@@ -33,7 +33,7 @@ from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tree.traversal import Path, keyed_walk, walk
 
 if TYPE_CHECKING:
-    from mjcf_model.files.compiling import Bundle
+    from serializers.bundling import Bundle
 
 __all__ = ["Complaint", "compile_error"]
 
@@ -111,7 +111,7 @@ def compile_error(message: str, model: Mujoco, bundle: Bundle, text: str) -> Mjc
 
     Examples:
         >>> from mjcf_model import Geom, Mujoco, Worldbody
-        >>> from mjcf_model.files.compiling import bundled
+        >>> from serializers.bundling import bundled
         >>> from serializers import dumps
         >>> model = Mujoco(children=[Worldbody(children=[Geom(), Geom(dclass="x", size=[1])])])
         >>> bundle = bundled(model)
@@ -198,7 +198,7 @@ def _standing_on_canonical(bundle: Bundle, complaint: Complaint) -> list[tuple[P
 
 def _in_model(model: Mujoco, written: tuple[Path, AnyElement]) -> tuple[AnyElement, str] | None:
     """The element of ``model`` at the index path of ``written``, and its element path."""
-    from serializers.building import element_step
+    from serializers.parsed_elements import element_step
 
     path, element = written
     current: AnyElement = model

@@ -1,6 +1,6 @@
-"""Writing MJCF: nodes into text, files and ElementTree.
+"""Writing MJCF: nodes into text and files.
 
-The mirror of :mod:`serializers.reader`. A loaded model is written as it was
+The mirror of :mod:`serializers.loading`. A loaded model is written as it was
 read (:mod:`serializers.kept_format`): each element that carries a
 :class:`~mjcf_model.nodes.layout.Layout` is written as its source text, with only what
 changed edited in place, and an element added in code is written in the
@@ -24,20 +24,26 @@ from __future__ import annotations
 import contextlib
 import os
 import tempfile
-import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import IO
 
 from mjcf_model.errors import Advice, MjcfAssetError, MjcfValueError
-from mjcf_model.files.compiling import inlined
 from mjcf_model.files.provenance import Folders, file_references, relocated
-from mjcf_model.nodes.base import AnyElement, Comment, Element, Node
+from mjcf_model.nodes.base import Element, Node
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tree.traversal import keyed_walk
 from serializers.canonical import attribute_texts, write_canonical
 from serializers.kept_format import write_kept
+from serializers.loading import loads
 
-__all__ = ["attribute_texts", "dump", "dumps", "relocated_for", "to_etree", "write_atomically"]
+__all__ = [
+    "attribute_texts",
+    "dump",
+    "dumps",
+    "inlined_includes",
+    "relocated_for",
+    "write_atomically",
+]
 
 #: What to do with a model whose included files would name other files written elsewhere.
 WRITTEN_ELSEWHERE = Advice(
@@ -211,10 +217,10 @@ def _relocated(model: Mujoco, folder: Path) -> Mujoco:
     """
     if not any(key == "include" for _, key, _ in keyed_walk(model)):
         return relocated(model, folder)
-    whole = inlined(model)
+    whole = inlined_includes(model)
     moved = relocated(model, folder, source=Folders.of(whole))
     before = [r.path for r in file_references(whole)]
-    after = list(file_references(inlined(moved)))
+    after = list(file_references(inlined_includes(moved)))
     for reference, path in zip(after, before, strict=False):
         if reference.path != path:
             raise MjcfValueError(
@@ -231,37 +237,21 @@ def _relocated(model: Mujoco, folder: Path) -> Mujoco:
     return moved
 
 
-def to_etree(node: Node) -> ET.Element:
-    """Convert a node and its subtree to ElementTree.
+def inlined_includes(model: Mujoco) -> Mujoco:
+    """``model`` with kept ``<include>`` elements replaced by their files' elements.
 
-    Comments become ``ET.Comment`` elements; attribute order is kept.
+    The files are found from the model's ``base_dir`` (a model built in code:
+    the working folder), as :func:`serializers.load` with ``inline_includes``
+    finds them.
 
     Examples:
-        >>> from mjcf_model import Body, Geom
-        >>> ET.tostring(to_etree(Body(name="b", children=[Geom(size=[1])])), encoding="unicode")
-        '<body name="b"><geom size="1" /></body>'
+        >>> from serializers import loads
+        >>> model = loads("<mujoco><worldbody/></mujoco>")
+        >>> inlined_includes(model) is model
+        True
 
     """
-    root = _etree_element(node)
-    stack = [(node, root)]  # an explicit stack, so any depth is converted
-    while stack:
-        parent, element = stack.pop()
-        if not isinstance(parent, AnyElement):
-            continue
-        for child in parent.children:
-            converted = _etree_element(child)
-            element.append(converted)
-            stack.append((child, converted))
-    return root
-
-
-def _etree_element(node: Node) -> ET.Element:
-    """One node as an ElementTree element, without its children."""
-    if isinstance(node, Comment):
-        comment: ET.Element = ET.Comment(node.text)  # type: ignore[assignment]
-        return comment
-    if not isinstance(node, AnyElement):
-        raise MjcfValueError(f"cannot convert {type(node).__name__}: not an element or a comment")
-    element = ET.Element(node.tag, dict(attribute_texts(node)))
-    element.text = node.text
-    return element
+    if not any(key == "include" for _, key, _ in keyed_walk(model)):
+        return model
+    base = model.base_dir if model.base_dir is not None else Path(os.getcwd())
+    return loads(dumps(model), inline_includes=True, base_dir=base)

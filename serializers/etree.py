@@ -1,7 +1,7 @@
-"""Reading ElementTree: an :mod:`xml.etree.ElementTree` element and its subtree into nodes.
+"""ElementTree and nodes: :func:`from_etree` and its mirror :func:`to_etree`.
 
-The mirror of :func:`serializers.writer.to_etree`. Each element goes through
-:func:`serializers.building.build_element`, as in the text reader, so the two
+Each element read goes through
+:func:`serializers.parsed_elements.build_element`, as in the text reader, so the two
 readers cannot disagree.
 """
 
@@ -12,12 +12,13 @@ from typing import Any
 
 import attrs
 
-from mjcf_model.errors import MjcfError
+from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, Comment, Node
 from mjcf_model.schema.namespaces import child_key, children_context, guess_context
-from serializers.building import build_element, element_step, element_text
+from serializers.canonical import attribute_texts
+from serializers.parsed_elements import build_element, element_step, element_text
 
-__all__ = ["from_etree"]
+__all__ = ["from_etree", "to_etree"]
 
 
 def from_etree(element: ET.Element, *, context: str | None = None, typed: bool = True) -> Node:
@@ -109,3 +110,39 @@ def _from_etree(root: ET.Element, context: str | None, typed: bool) -> AnyElemen
                 return node
             stack[-1].children.append(node)
             stack[-1].chunks.append(element.tail)
+
+
+def to_etree(node: Node) -> ET.Element:
+    """Convert a node and its subtree to ElementTree.
+
+    Comments become ``ET.Comment`` elements; attribute order is kept.
+
+    Examples:
+        >>> from mjcf_model import Body, Geom
+        >>> ET.tostring(to_etree(Body(name="b", children=[Geom(size=[1])])), encoding="unicode")
+        '<body name="b"><geom size="1" /></body>'
+
+    """
+    root = _etree_element(node)
+    stack = [(node, root)]  # an explicit stack, so any depth is converted
+    while stack:
+        parent, element = stack.pop()
+        if not isinstance(parent, AnyElement):
+            continue
+        for child in parent.children:
+            converted = _etree_element(child)
+            element.append(converted)
+            stack.append((child, converted))
+    return root
+
+
+def _etree_element(node: Node) -> ET.Element:
+    """One node as an ElementTree element, without its children."""
+    if isinstance(node, Comment):
+        comment: ET.Element = ET.Comment(node.text)  # type: ignore[assignment]
+        return comment
+    if not isinstance(node, AnyElement):
+        raise MjcfValueError(f"cannot convert {type(node).__name__}: not an element or a comment")
+    element = ET.Element(node.tag, dict(attribute_texts(node)))
+    element.text = node.text
+    return element

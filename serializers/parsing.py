@@ -29,7 +29,9 @@ from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, Node, Typ
 from mjcf_model.nodes.layout import DocumentText, Layout, SourceText
 from mjcf_model.nodes.root import Include
 from mjcf_model.values import Unparsed
-from serializers.building import (
+from serializers.includes import PendingInclude, Session
+from serializers.open_element import STEPS, OpenElement, step_of
+from serializers.parsed_elements import (
     Deferred,
     ReadMemo,
     build_element,
@@ -37,8 +39,6 @@ from serializers.building import (
     element_text,
     read_typed,
 )
-from serializers.includes import PendingInclude, Session
-from serializers.open_element import STEPS, OpenElement, step_of
 from serializers.repairs import (
     NUMERIC_ATTRIBUTES,
     blank_text_before_root,
@@ -95,7 +95,7 @@ class Reader:
         #: The element being closed, for :meth:`locate`.
         self.closing: OpenElement | None = None
         #: Each long attribute left to convert after parsing: its node, and where it
-        #: stands, with what :func:`~serializers.building.read_typed` deferred.
+        #: stands, with what :func:`~serializers.parsed_elements.read_typed` deferred.
         self.deferred: list[tuple[TypedElement, int, str, Deferred]] = []
         # MuJoCo reads the bytes as UTF-8 whatever the XML declaration says; so do we.
         self.parser = expat.ParserCreate(encoding="utf-8")
@@ -313,7 +313,7 @@ class Reader:
 
         The nodes are not yet handed out, so they get their values in place; a text
         the field cannot read is kept as :class:`~mjcf_model.values.Unparsed`, as
-        :func:`~serializers.building.build_element` keeps it.
+        :func:`~serializers.parsed_elements.build_element` keeps it.
         """
         deferred, self.deferred = self.deferred, []
         for node, line, path, (field, name, text, convert) in deferred:

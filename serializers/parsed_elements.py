@@ -23,8 +23,8 @@ from mjcf_model.nodes.base import (
     build_node,
     field_table,
 )
-from mjcf_model.nodes.declaring import NodeInfo, tuple_getter
 from mjcf_model.nodes.layout import Layout, LayoutDetail, detail
+from mjcf_model.nodes.node_info import NodeInfo, tuple_getter
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.values import Unparsed
 

@@ -1,9 +1,9 @@
 """Reading MJCF: text and files into nodes.
 
 :func:`load` and :func:`loads` read the main document with the expat reader
-(:mod:`serializers.expat_reading`) and, with ``inline_includes``, every file it
+(:mod:`serializers.parsing`) and, with ``inline_includes``, every file it
 includes (:mod:`serializers.includes`). :func:`from_etree` lives in
-:mod:`serializers.etree_reading` and is importable from here too.
+:mod:`serializers.etree` and is importable from here too.
 
 >>> model = loads('<mujoco model="m"><worldbody><geom size="0.1"/></worldbody></mujoco>')
 >>> model.model, model.worldbody.geoms[0].size
@@ -27,8 +27,7 @@ from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tree.traversal import with_children
 from serializers.collector import collector_paused
-from serializers.etree_reading import from_etree
-from serializers.expat_reading import Reader
+from serializers.etree import from_etree
 from serializers.includes import (
     STRING_FILENAME,
     Document,
@@ -38,6 +37,7 @@ from serializers.includes import (
     resolve_include,
     splice,
 )
+from serializers.parsing import Reader
 
 __all__ = ["from_etree", "load", "loads"]
 
@@ -127,7 +127,6 @@ def loads(
     inline_includes: bool = False,
     base_dir: str | os.PathLike[str] | None = None,
     filename: str | None = None,
-    inline_attachments: bool = False,
 ) -> Mujoco:
     """Read an MJCF model from text.
 
@@ -138,8 +137,6 @@ def loads(
             :class:`~mjcf_model.Include` nodes and written back as includes.
         base_dir: Where included files are looked for; the main model's directory.
         filename: The name errors should report (default ``"<string>"``).
-        inline_attachments: Replace each ``<attach>`` by what MuJoCo attaches there
-            (see :func:`mjcf_model.transforms.composition.inlining.inlined_attachments`).
 
     Raises:
         MjcfSyntaxError: The text is not well-formed XML or its root is not ``<mujoco>``.
@@ -155,34 +152,25 @@ def loads(
     session = Session(
         inline_includes=inline_includes, main_dir=Path(base_dir) if base_dir is not None else None
     )
-    return _attachments_inlined(
-        _read(text, filename or STRING_FILENAME, session), inline_attachments
-    )
-
-
-def _attachments_inlined(model: Mujoco, inline: bool) -> Mujoco:
-    if not inline:
-        return model
-    from mjcf_model.transforms.composition.inlining import inlined_attachments
-
-    return inlined_attachments(model)
+    return _read(text, filename or STRING_FILENAME, session)
 
 
 def load(
     source: str | os.PathLike[str] | IO[bytes] | IO[str],
     *,
     inline_includes: bool = False,
-    inline_attachments: bool = False,
 ) -> Mujoco:
     """Read an MJCF model from a file path or an open file.
+
+    Reading never compiles: ``<attach>`` elements are kept as they are. To have
+    what MuJoCo attaches there instead, compose the steps:
+    ``mjcf_model.inlined_attachments(load(path))``.
 
     Args:
         source: A path, or a file object opened for reading.
         inline_includes: Replace each ``<include>`` by the elements of the file it
             names, looked up beside the main file first and then beside the
             including file, as MuJoCo does. Include cycles raise.
-        inline_attachments: Replace each ``<attach>`` by what MuJoCo attaches there
-            (see :func:`mjcf_model.transforms.composition.inlining.inlined_attachments`).
 
     Examples:
         >>> import tempfile, pathlib
@@ -204,7 +192,7 @@ def load(
             main_dir=Path(os.path.abspath(path)).parent,
             main_file=path,
         )
-        return _attachments_inlined(_read(data, str(path), session), inline_attachments)
+        return _read(data, str(path), session)
     name = getattr(source, "name", None)
     filename = name if isinstance(name, str) else STRING_FILENAME
     base = Path(filename).parent if filename != STRING_FILENAME else None
@@ -213,5 +201,4 @@ def load(
         inline_includes=inline_includes,
         base_dir=base,
         filename=filename,
-        inline_attachments=inline_attachments,
     )

@@ -72,8 +72,8 @@ def _model(node: AnyElement) -> Mujoco:
 
 def _checked(model: AnyElement) -> Mujoco:
     """``model``, once MuJoCo has compiled it (else :class:`Failed` with MuJoCo's reason)."""
+    from mjcf_model.bridge.compiling import compiled
     from mjcf_model.errors import MjcfCompileError
-    from mjcf_model.files.compiling import compiled
 
     try:
         compiled(_model(model))
