@@ -109,6 +109,7 @@ def suite_folder(name: str) -> Path:
             SOURCE_TREE / folder, suite / folder, ignore=shutil.ignore_patterns("__pycache__")
         )
     shutil.copy(SOURCE_TREE / "pyproject.toml", suite)  # pytest's settings
+    shutil.copy(SOURCE_TREE / "ARCHITECTURE.md", suite)  # the layer table the import contract reads
     return suite
 
 

@@ -2,12 +2,14 @@
 
 The table is read from ARCHITECTURE.md itself, so the document and the contract cannot
 drift apart. Every ``import`` in ``mjcf_model`` and ``serializers`` counts: at module
-level, inside functions and under ``TYPE_CHECKING``.
+level, inside functions and under ``TYPE_CHECKING``. The modules read are the ones Python
+imports (the installed wheel, when ``tests/run_installed.py`` runs the suite).
 """
 
 from __future__ import annotations
 
 import ast
+import importlib.util
 import subprocess
 import sys
 from collections.abc import Iterator
@@ -23,8 +25,11 @@ def _modules() -> dict[str, Path]:
     """Every module of the two packages by dotted name (a package by its own name)."""
     found = {}
     for package in PACKAGES:
-        for path in sorted((ROOT / package).rglob("*.py")):
-            parts = list(path.relative_to(ROOT).with_suffix("").parts)
+        spec = importlib.util.find_spec(package)
+        assert spec is not None and spec.origin is not None, f"{package} is not importable"
+        top = Path(spec.origin).parent.parent
+        for path in sorted((top / package).rglob("*.py")):
+            parts = list(path.relative_to(top).with_suffix("").parts)
             if parts[-1] == "__init__":
                 parts.pop()
             found[".".join(parts)] = path
