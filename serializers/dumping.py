@@ -80,7 +80,7 @@ def dumps(node: Node, *, indent: str = "  ", canonical: bool = False) -> str:
     if canonical or not isinstance(node, Element) or node.layout is None:
         write_canonical(node, indent, out)
     else:
-        write_kept(node, out)  # type: ignore[arg-type]
+        write_kept(node, out)
     return "".join(out)
 
 

@@ -23,7 +23,7 @@ import attrs
 
 from mjcf_model.errors import MjcfIncludeError
 from mjcf_model.files.provenance import FILE_TAGS
-from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
+from mjcf_model.nodes.base import AnyElement, Element, Node
 from mjcf_model.nodes.root import Include, Mujoco
 from mjcf_model.tree.traversal import map_tree, with_children
 
@@ -94,7 +94,7 @@ def record_origins(
     stack = list(nodes)
     while stack:
         node = stack.pop()
-        if isinstance(node, (TypedElement, GenericElement)):
+        if isinstance(node, Element):
             if node.tag in FILE_TAGS and id(node) not in origins:
                 origins[id(node)] = (node, folder)
             stack.extend(node.children)
@@ -107,9 +107,7 @@ def splice(document: Document) -> Mujoco | AnyElement:
     found = document.found
 
     def expand(node: Node) -> Node:
-        if isinstance(node, (TypedElement, GenericElement)) and any(
-            id(c) in found for c in node.children
-        ):
+        if isinstance(node, Element) and any(id(c) in found for c in node.children):
             children: list[Node] = []
             for child in node.children:
                 children.extend(found.get(id(child), (child,)))

@@ -22,7 +22,7 @@ from mjcf_model.errors import (
     unreadable_file,
 )
 from mjcf_model.files.provenance import with_included_paths
-from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, TypedElement
+from mjcf_model.nodes.base import AnyElement, Comment, Element
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tree.traversal import with_children
@@ -56,9 +56,9 @@ def _parse(
     roots = [n for n in top if not isinstance(n, Comment)]
     root = roots[0] if roots else None
     if root is None or (include_context is None and not isinstance(root, Mujoco)):
-        found = root.tag if isinstance(root, (TypedElement, GenericElement)) else "nothing"
+        found = root.tag if isinstance(root, Element) else "nothing"
         raise MjcfSyntaxError(f"expected a <mujoco> root element, found <{found}>", file=filename)
-    assert isinstance(root, (TypedElement, GenericElement))
+    assert isinstance(root, Element)
     index = top.index(root)
     before = top[:index]
     after = [n for n in top[index + 1 :] if isinstance(n, Comment)]

@@ -25,7 +25,7 @@ from mjcf_model.errors import (
     MjcfSyntaxError,
     MjcfValueError,
 )
-from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, Node, TypedElement
+from mjcf_model.nodes.base import AnyElement, Comment, Element, Node, TypedElement
 from mjcf_model.nodes.layout import DocumentText, Layout, SourceText
 from mjcf_model.nodes.root import Include
 from mjcf_model.values import Unparsed
@@ -402,7 +402,7 @@ class Reader:
         """Give the root's layout the text around the root, up to byte ``stop``."""
         comments = [n for n in self.top if isinstance(n, Comment)]
         root = next((n for n in self.top if not isinstance(n, Comment)), None)
-        if not isinstance(root, (TypedElement, GenericElement)) or root.layout is None:
+        if not isinstance(root, Element) or root.layout is None:
             return
         count = self.top.index(root)
         origin = root.layout.origin

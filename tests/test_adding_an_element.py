@@ -4,8 +4,9 @@ A new element (say MuJoCo adds ``<sensor><jointcurrent joint="..."/>``) takes:
 
 1. its row in ``mjcf_model/schema/namespaces.py`` (attributes, names it declares,
    references and their namespaces);
-2. its class in the section module under ``mjcf_model/nodes/`` (``@node``, a
-   field helper per attribute, ``reference(namespace)`` for each reference);
+2. its class in the section module under ``mjcf_model/nodes/`` (``@node``,
+   ``schema_keys`` naming its rows, a field helper per attribute: ``text()`` for
+   names and references; the tag and the namespaces come from the table);
 3. its name in ``mjcf_model/nodes/__init__.py``.
 
 Everything else is derived: the registry, scaling (no lengths unless a rule
@@ -17,11 +18,11 @@ schema by ``tests/test_schema.py``, which names the table too.
 
 from __future__ import annotations
 
-import attrs
 import pytest
 
 import mjcf_model
 from mjcf_model import nodes
+from mjcf_model.nodes.declaring import _set_tag
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import SCHEMA
 
@@ -52,16 +53,37 @@ def test_every_declared_class_is_exported() -> None:
 
 
 @pytest.mark.parametrize("key", sorted(CLASS_BY_KEY))
-def test_each_reference_is_declared_in_both_places(key: str) -> None:
-    """Steps 1 and 2 agree: a table reference is a ``reference(namespace)`` field, and back."""
+def test_each_name_and_reference_is_held_as_text(key: str) -> None:
+    """Step 2 follows step 1: an attribute the table says names something holds any text.
+
+    The table is the one source of what declares and what refers: the class does not
+    repeat it, but a reference field that converted or checked its value (a number, a
+    keyword) would refuse names MuJoCo takes.
+    """
     cls, spec = CLASS_BY_KEY[key], SCHEMA[key]
-    fields = {f.name: f for f in attrs.fields(cls)}
-    for xml, field_name in cls.__node_info__.table.items():
-        if xml not in spec.attributes:
-            continue
-        declared = fields[field_name].metadata.get("namespace")
-        expected = spec.references.get(xml)
-        assert declared == expected, (
-            f"{key} {xml!r}: the table ({_TABLE}) says {expected!r}, the class "
-            f"{cls.__name__} ({cls.__module__}) says {declared!r}; make them agree"
-        )
+    info = cls.__node_info__
+    named = {*spec.references, *spec.declares}
+    wrong = sorted(
+        xml for xml in named if xml in info.table and info.table[xml] not in info.plain_text
+    )
+    assert not wrong, (
+        f"{key}: the table ({_TABLE}) says {wrong} name elements; declare them with text() "
+        f"in {cls.__name__} ({cls.__module__})"
+    )
+
+
+def test_a_class_takes_its_tag_from_its_schema_keys() -> None:
+    """Step 2 writes no tag: ``@node`` reads it from the keys, which must agree.
+
+    The classes here only go through the tag step, so no test class joins the
+    declared classes the registry and the dict form read.
+    """
+    assert all(cls.tag == key.rsplit("/", 1)[-1] for key, cls in CLASS_BY_KEY.items())
+    assert all(cls.__node_info__.tag == cls.tag for cls in CLASS_BY_KEY.values())
+    gizmo = type("Gizmo", (), {"schema_keys": ("body/gizmo", "default/gizmo")})
+    _set_tag(gizmo)
+    assert gizmo.tag == "gizmo"  # type: ignore[attr-defined]
+    with pytest.raises(TypeError, match="more than one tag"):
+        _set_tag(type("Muddle", (), {"schema_keys": ("body/gizmo", "body/widget")}))
+    with pytest.raises(TypeError, match="comes from schema_keys"):
+        _set_tag(type("Twice", (), {"tag": "gizmo", "schema_keys": ("body/gizmo",)}))

@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 from mjcf_model import Geom, Joint
 from mjcf_model.nodes.base import TypedElement, build_node
 from mjcf_model.nodes.declaring import declared_classes, node
-from mjcf_model.nodes.fields import reference, vec3
+from mjcf_model.nodes.fields import text, vec3
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.strategies import element_values, elements
@@ -123,7 +123,7 @@ def test_a_declared_class_gets_sparse_fields_and_its_info() -> None:
     class Thing(TypedElement):
         tag: ClassVar[str] = "thing"
         pos: tuple[float, ...] | None = vec3()
-        body: str | None = reference("body", xml="attachedto")
+        body: str | None = text(xml="attachedto")
 
     thing = Thing(pos=[1, 2, 3], body="torso")
     assert thing.pos == (1.0, 2.0, 3.0) and thing.body == "torso"

@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING
 import attrs
 
 from mjcf_model.errors import MjcfCompileError, MjcfError
-from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement, attribute_text
+from mjcf_model.nodes.base import AnyElement, Element, attribute_text
 from mjcf_model.nodes.layout import Layout, SourceText
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tree.traversal import Path, keyed_walk, walk
@@ -208,12 +208,10 @@ def _in_model(model: Mujoco, written: tuple[Path, AnyElement]) -> tuple[AnyEleme
         if index >= len(children):
             return None
         child = children[index]
-        if not isinstance(child, (TypedElement, GenericElement)):
+        if not isinstance(child, Element):
             return None
         same = sum(
-            1
-            for c in children[: index + 1]
-            if isinstance(c, (TypedElement, GenericElement)) and c.tag == child.tag
+            1 for c in children[: index + 1] if isinstance(c, Element) and c.tag == child.tag
         )
         name = attribute_text(child, "name")
         steps.append("/" + element_step(child.tag, [("name", name)] if name else [], same))

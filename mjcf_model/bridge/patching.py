@@ -29,13 +29,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
 from mjcf_model.errors import MjcfRecompiledWarning
-from mjcf_model.nodes.base import (
-    AnyElement,
-    GenericElement,
-    TypedElement,
-    attribute_items,
-    get_attribute,
-)
+from mjcf_model.nodes.base import AnyElement, Element, attribute_items, get_attribute
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import child_key
 from mjcf_model.tree.traversal import keyed_walk
@@ -46,8 +40,6 @@ if TYPE_CHECKING:
 
 __all__ = ["FIELDS", "patched"]
 
-#: The classes of elements (children that are not comments).
-_ELEMENT_TYPES = (TypedElement, GenericElement)
 
 #: The compiled array of each attribute that maps one for one, by element key: a
 #: prefix of the array's row takes the written numbers.
@@ -291,7 +283,7 @@ def _sections(model: Mujoco, tag: str) -> list[dict[str, object]]:
 
 def _elements(element: AnyElement) -> list[AnyElement]:
     """The element children of ``element`` (comments left out)."""
-    return [child for child in element.children if isinstance(child, _ELEMENT_TYPES)]
+    return [child for child in element.children if isinstance(child, Element)]
 
 
 class _Rows:

@@ -31,9 +31,8 @@ from mjcf_model.nodes.asset import Material, Texture
 from mjcf_model.nodes.base import (
     AnyElement,
     AttributeMap,
-    GenericElement,
+    Element,
     Node,
-    TypedElement,
     get_attribute,
     ordered_node,
     with_attributes,
@@ -89,7 +88,7 @@ TEXTURE_FILES: Mapping[str, str] = MappingProxyType(
 #: Side of the flat texture made for an RGBA colour, in pixels (robosuite's PNG is 100 x 100).
 _FLAT_SIZE = 100
 
-_E = TypeVar("_E", bound=TypedElement | GenericElement)
+_E = TypeVar("_E", bound=Element)
 
 
 def _to_texture(value: object) -> str | Floats | None:
@@ -339,7 +338,7 @@ def with_material(
     def visit(current: Node) -> Node:
         nonlocal used
         if (
-            isinstance(current, (TypedElement, GenericElement))
+            isinstance(current, Element)
             and geom_role(current) == "visual"
             and get_attribute(current, "material") is None
         ):

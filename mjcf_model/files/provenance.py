@@ -41,9 +41,8 @@ import attrs
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import (
     AnyElement,
-    GenericElement,
+    Element,
     Node,
-    TypedElement,
     attribute_items,
     get_attribute,
     with_attributes,
@@ -401,7 +400,7 @@ def with_folders(model: Mujoco, folders: Folders) -> Mujoco:
         return model
     children: list[Node] = []
     for child in model.children:
-        if isinstance(child, (TypedElement, GenericElement)) and child.tag == "compiler":
+        if isinstance(child, Element) and child.tag == "compiler":
             changes = written if child is sections[-1] else dict.fromkeys(written)
             child = with_attributes(child, changes)
             if not attribute_items(child) and not child.children:

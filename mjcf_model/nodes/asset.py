@@ -16,7 +16,6 @@ from mjcf_model.nodes.fields import (
     integers,
     number,
     numbers,
-    reference,
     text,
     vec2,
     vec3,
@@ -41,7 +40,6 @@ __all__ = [
 class Asset(TypedElement):
     """Section of assets: meshes, textures, materials, height fields, skins, models."""
 
-    tag: ClassVar[str] = "asset"
     schema_keys: ClassVar[tuple[str, ...]] = ("asset",)
 
     @property
@@ -79,12 +77,11 @@ class Asset(TypedElement):
 class Mesh(TypedElement):
     """A mesh asset, from a file, inline vertices or a built-in shape."""
 
-    tag: ClassVar[str] = "mesh"
     schema_keys: ClassVar[tuple[str, ...]] = ("asset/mesh", "default/mesh")
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
+    dclass: str | None = text(xml="class")
     #: Procedurally generated content.
     builtin: str | None = text()
     #: MIME type of the file.
@@ -96,7 +93,7 @@ class Mesh(TypedElement):
     #: How inertia is computed from the mesh.
     inertia: str | None = text()
     #: Name of the material asset used for rendering.
-    material: str | None = reference("material")
+    material: str | None = text()
     #: Maximum number of convex-hull vertices.
     maxhullvert: int | None = integer()
     #: Vertex normals.
@@ -121,7 +118,6 @@ class Mesh(TypedElement):
 class Hfield(TypedElement):
     """A height-field asset."""
 
-    tag: ClassVar[str] = "hfield"
     schema_keys: ClassVar[tuple[str, ...]] = ("asset/hfield",)
     #: Name, unique within its namespace.
     name: str | None = text()
@@ -143,7 +139,6 @@ class Hfield(TypedElement):
 class Skin(TypedElement):
     """A skinned mesh deformed by bones."""
 
-    tag: ClassVar[str] = "skin"
     schema_keys: ClassVar[tuple[str, ...]] = ("asset/skin", "deformable/skin")
     #: Name, unique within its namespace.
     name: str | None = text()
@@ -156,7 +151,7 @@ class Skin(TypedElement):
     #: Distance by which skin vertices are pushed out along their normals.
     inflate: float | None = number()
     #: Name of the material asset used for rendering.
-    material: str | None = reference("material")
+    material: str | None = text()
     #: Colour and transparency (r, g, b, a).
     rgba: Floats | None = vec4()
     #: Texture coordinates.
@@ -169,14 +164,13 @@ class Skin(TypedElement):
 class Bone(TypedElement):
     """A bone of a skin: a body and the vertices it moves."""
 
-    tag: ClassVar[str] = "bone"
     schema_keys: ClassVar[tuple[str, ...]] = ("asset/skin/bone", "deformable/skin/bone")
     #: Bind position of the bone.
     bindpos: Floats | None = numbers()
     #: Bind orientation of the bone.
     bindquat: Floats | None = vec4()
     #: Name of the body.
-    body: str | None = reference("body")
+    body: str | None = text()
     #: Indices of the skin vertices this bone moves.
     vertid: Ints | None = integers()
     #: Weights of the skin vertices this bone moves.
@@ -187,12 +181,11 @@ class Bone(TypedElement):
 class Texture(TypedElement):
     """A texture asset, from files or built in."""
 
-    tag: ClassVar[str] = "texture"
     schema_keys: ClassVar[tuple[str, ...]] = ("asset/texture", "default/texture")
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
+    dclass: str | None = text(xml="class")
     #: Element type keyword.
     type: str | None = text()
     #: Procedurally generated content.
@@ -247,12 +240,11 @@ class Texture(TypedElement):
 class Material(TypedElement):
     """A material asset."""
 
-    tag: ClassVar[str] = "material"
     schema_keys: ClassVar[tuple[str, ...]] = ("asset/material", "default/material")
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
+    dclass: str | None = text(xml="class")
     #: Emission, as a multiple of the colour.
     emission: float | None = number()
     #: Metallic value for physically based rendering.
@@ -270,7 +262,7 @@ class Material(TypedElement):
     #: How many times the texture repeats.
     texrepeat: Floats | None = vec2()
     #: Name of the texture asset.
-    texture: str | None = reference("texture")
+    texture: str | None = text()
     #: Whether texture repetition is in world units.
     texuniform: bool | None = boolean()
 
@@ -279,19 +271,17 @@ class Material(TypedElement):
 class MaterialLayer(TypedElement):
     """A texture layer of a material."""
 
-    tag: ClassVar[str] = "layer"
     schema_keys: ClassVar[tuple[str, ...]] = ("asset/material/layer", "default/material/layer")
     #: Role of the texture layer.
     role: str | None = text()
     #: Name of the texture asset.
-    texture: str | None = reference("texture")
+    texture: str | None = text()
 
 
 @node
 class Model(TypedElement):
     """A model asset (another MJCF file) for ``<attach>``."""
 
-    tag: ClassVar[str] = "model"
     schema_keys: ClassVar[tuple[str, ...]] = ("asset/model",)
     #: Name, unique within its namespace.
     name: str | None = text()

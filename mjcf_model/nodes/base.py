@@ -17,7 +17,7 @@ equality: two elements that differ only in attribute order are equal).
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from typing import TYPE_CHECKING, Any, ClassVar, SupportsIndex, TypeVar
+from typing import TYPE_CHECKING, Any, ClassVar, SupportsIndex, TypeVar, cast
 
 import attrs
 
@@ -132,8 +132,14 @@ def _optional_text(_instance: Any, _attribute: Any, value: str | None) -> None:
 
 @node
 class Element(Node):
-    """Base of every element node, typed or generic."""
+    """Base of every element node, typed or generic.
 
+    ``isinstance(node, Element)`` tells elements from comments; every element has a ``tag``.
+    """
+
+    #: The XML tag: a class variable of a typed class (from its schema keys), a field
+    #: of a generic element.
+    tag: ClassVar[str]
     #: Child elements and comments, in document order (compared as a :class:`Subtree`).
     children: tuple[Node, ...] = attrs.field(default=(), converter=to_children, eq=Subtree)
     #: Character data inside the element, unless it is only white space.
@@ -168,6 +174,10 @@ class Element(Node):
             return state
         return {"layout": layout.without_old_children(self.children), **state}
 
+    def _repr_frame(self) -> tuple[str, str]:
+        """The repr before and after the children (each element class writes its own)."""
+        raise NotImplementedError
+
     def _of_type(self, cls: type[_T]) -> tuple[_T, ...]:
         return tuple(c for c in self.children if isinstance(c, cls))
 
@@ -180,20 +190,19 @@ class Element(Node):
     @property
     def elements(self) -> tuple[AnyElement, ...]:
         """The child elements, comments left out."""
-        return tuple(c for c in self.children if isinstance(c, (TypedElement, GenericElement)))
+        return tuple(c for c in self.children if isinstance(c, Element))
 
 
 @node
 class TypedElement(Element):
     """Base of the typed element classes (``Geom``, ``Body``, ...).
 
-    Subclasses set the class variable ``tag`` and declare one field per MJCF
+    Subclasses set the class variable ``schema_keys`` (the rows of the schema table
+    they model; their ``tag`` is the last part) and declare one field per MJCF
     attribute, spelled as in MJCF (``class`` is ``dclass``). ``None`` means
     "not written".
     """
 
-    #: The XML tag of this element type.
-    tag: ClassVar[str]
     #: Attributes this class does not model, in source order, as text.
     extra: AttributeMap = attrs.field(default=EMPTY_ATTRIBUTES, converter=to_attribute_map)
     #: XML attribute names in the order they stood in the source (ignored by ``==``).
@@ -245,7 +254,7 @@ class GenericElement(Element):
     """
 
     #: The XML tag.
-    tag: str = attrs.field(validator=_check_tag, kw_only=True)
+    tag: str = attrs.field(validator=_check_tag, kw_only=True)  # type: ignore[misc]
     #: All attributes, as text, in source order.
     attributes: AttributeMap = attrs.field(default=EMPTY_ATTRIBUTES, converter=to_attribute_map)
 
@@ -303,12 +312,12 @@ def full_repr(node: Node) -> str:
         "Body(name='arm', children=(Geom(name='g0'), "
 
     """
-    if isinstance(node, (TypedElement, GenericElement)):
+    if isinstance(node, Element):
         return _tree_repr(node)
     return repr(node)
 
 
-def _tree_repr(node: TypedElement | GenericElement) -> str:
+def _tree_repr(node: Element) -> str:
     """The repr of ``node``, built with an explicit stack so that any depth prints.
 
     It is the repr recursion would give: each element's own fields, then its
@@ -321,7 +330,7 @@ def _tree_repr(node: TypedElement | GenericElement) -> str:
         if isinstance(item, str):
             out.append(item)
             continue
-        if not isinstance(item, (TypedElement, GenericElement)):
+        if not isinstance(item, Element):
             out.append(repr(item))  # a comment, or a node subclass of someone else's
             continue
         head, tail = item._repr_frame()
@@ -339,11 +348,11 @@ def _tree_repr(node: TypedElement | GenericElement) -> str:
 
 
 #: Either kind of element.
-AnyElement = TypedElement | GenericElement
-_E = TypeVar("_E", bound=TypedElement | GenericElement)
+AnyElement = Element
+_E = TypeVar("_E", bound=Element)
 
 
-def field_table(cls: type[TypedElement]) -> dict[str, str]:
+def field_table(cls: type[Element]) -> dict[str, str]:
     """Map each MJCF attribute name a typed class models to its field name.
 
     Examples:
@@ -373,21 +382,22 @@ def attribute_items(element: AnyElement) -> list[tuple[str, Value]]:
     """
     if isinstance(element, GenericElement):
         return list(element.attributes.items())
-    info = type(element).__node_info__
+    typed = cast(TypedElement, element)
+    info = type(typed).__node_info__
     rank = info.rank
     present = [
         (rank[field], value)
-        for field, value in element.__dict__.items()
+        for field, value in typed.__dict__.items()
         if value is not None and field in rank
     ]  # only the fields the node stores: a few, not every field of the class
     present.sort(key=_first_item)
     names = info.names
     values: dict[str, Value] = {names[index]: value for index, value in present}
-    if element.extra:
-        values.update(element.extra)
-    if not element.attribute_order:
+    if typed.extra:
+        values.update(typed.extra)
+    if not typed.attribute_order:
         return list(values.items())
-    ordered = [(k, values.pop(k)) for k in element.attribute_order if k in values]
+    ordered = [(k, values.pop(k)) for k in typed.attribute_order if k in values]
     ordered.extend(values.items())
     return ordered
 
@@ -403,11 +413,12 @@ def get_attribute(element: AnyElement, name: str) -> Value | None:
     """
     if isinstance(element, GenericElement):
         return element.attributes.get(name)
-    field = field_table(type(element)).get(name)
+    typed = cast(TypedElement, element)
+    field = field_table(type(typed)).get(name)
     if field is not None:
-        value: Value | None = getattr(element, field)
+        value: Value | None = getattr(typed, field)
         return value
-    return element.extra.get(name)
+    return typed.extra.get(name)
 
 
 def attribute_text(element: AnyElement, name: str) -> str | None:

@@ -18,7 +18,6 @@ from mjcf_model.nodes.fields import (
     keyword,
     number,
     numbers,
-    reference,
     text,
     vec1to2,
     vec1to5,
@@ -93,7 +92,6 @@ class TreeViews:
 class Inertial(Oriented):
     """Mass and inertia of a body."""
 
-    tag: ClassVar[str] = "inertial"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/inertial",)
     #: Diagonal of the inertia matrix in the inertial frame.
     diaginertia: Floats | None = vec3()
@@ -107,12 +105,11 @@ class Inertial(Oriented):
 class Joint(TypedElement):
     """A joint: a degree of freedom between a body and its parent."""
 
-    tag: ClassVar[str] = "joint"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/joint", "default/joint")
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
+    dclass: str | None = text(xml="class")
     #: Element type keyword.
     type: str | None = keyword(JOINT_TYPES)
     #: Position (x, y, z) in the parent frame, in length units.
@@ -165,7 +162,6 @@ class Joint(TypedElement):
 class FreeJoint(TypedElement):
     """A free joint: six degrees of freedom."""
 
-    tag: ClassVar[str] = "freejoint"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/freejoint",)
     #: Name, unique within its namespace.
     name: str | None = text()
@@ -179,14 +175,13 @@ class FreeJoint(TypedElement):
 class Attach(TypedElement):
     """Attaches a body of a model asset here."""
 
-    tag: ClassVar[str] = "attach"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/attach",)
     #: Name of the body.
     body: str | None = text()
     #: Name of the frame to attach.
     frame: str | None = text()
     #: Name of the model asset.
-    model: str | None = reference("model")
+    model: str | None = text()
     #: Prefix added to the names of the attached elements.
     prefix: str | None = text()
 
@@ -195,7 +190,6 @@ class Attach(TypedElement):
 class Worldbody(TypedElement, TreeViews):
     """The world body: root of the kinematic tree."""
 
-    tag: ClassVar[str] = "worldbody"
     schema_keys: ClassVar[tuple[str, ...]] = ("worldbody",)
 
 
@@ -203,12 +197,11 @@ class Worldbody(TypedElement, TreeViews):
 class Body(Oriented, TreeViews):
     """A rigid body."""
 
-    tag: ClassVar[str] = "body"
     schema_keys: ClassVar[tuple[str, ...]] = ("body",)
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class for all descendants that do not set their own ``class``.
-    childclass: str | None = reference("class")
+    childclass: str | None = text()
     #: Whether this static body may be fused into its parent.
     fuse: str | None = text()
     #: Gravity compensation factor.
@@ -232,19 +225,17 @@ class Body(Oriented, TreeViews):
 class Frame(Oriented, TreeViews):
     """A coordinate frame that places its children; not a body."""
 
-    tag: ClassVar[str] = "frame"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/frame",)
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class for all descendants that do not set their own ``class``.
-    childclass: str | None = reference("class")
+    childclass: str | None = text()
 
 
 @node
 class Replicate(TypedElement, TreeViews):
     """Repeats its children with an offset and rotation."""
 
-    tag: ClassVar[str] = "replicate"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/replicate",)
     #: Orientation as Euler angles in the compiler's ``eulerseq``.
     euler: Floats | None = vec3()

@@ -20,7 +20,6 @@ __all__ = ["Compiler", "LengthRange", "Option", "OptionFlag", "Size", "Statistic
 class Compiler(TypedElement):
     """Compiler settings: angle units, asset directories, inertia handling."""
 
-    tag: ClassVar[str] = "compiler"
     schema_keys: ClassVar[tuple[str, ...]] = ("compiler",)
     #: Compiler setting ``alignfree``; see the MuJoCo XML reference.
     alignfree: str | None = text()
@@ -76,7 +75,6 @@ class Compiler(TypedElement):
 class LengthRange(TypedElement):
     """How actuator length ranges are computed."""
 
-    tag: ClassVar[str] = "lengthrange"
     schema_keys: ClassVar[tuple[str, ...]] = ("compiler/lengthrange",)
     #: Compiler setting ``accel``; see the MuJoCo XML reference.
     accel: str | None = text()
@@ -104,7 +102,6 @@ class LengthRange(TypedElement):
 class Option(TypedElement):
     """Simulation options: timestep, gravity, solver, integrator."""
 
-    tag: ClassVar[str] = "option"
     schema_keys: ClassVar[tuple[str, ...]] = ("option",)
     #: Simulation option ``actuatorgroupdisable``; see the MuJoCo XML reference.
     actuatorgroupdisable: Ints | None = integers()
@@ -166,7 +163,6 @@ class Option(TypedElement):
 class OptionFlag(TypedElement):
     """Enable or disable parts of the simulation pipeline."""
 
-    tag: ClassVar[str] = "flag"
     schema_keys: ClassVar[tuple[str, ...]] = ("option/flag",)
     #: Enable or disable ``actuation`` (``enable``/``disable``).
     actuation: str | None = text()
@@ -230,7 +226,6 @@ class OptionFlag(TypedElement):
 class Size(TypedElement):
     """Memory and array size hints."""
 
-    tag: ClassVar[str] = "size"
     schema_keys: ClassVar[tuple[str, ...]] = ("size",)
     #: Size setting ``memory``; see the MuJoCo XML reference.
     memory: str | None = text()
@@ -266,7 +261,6 @@ class Size(TypedElement):
 class Statistic(TypedElement):
     """Model statistics that override the computed ones."""
 
-    tag: ClassVar[str] = "statistic"
     schema_keys: ClassVar[tuple[str, ...]] = ("statistic",)
     #: Model statistic ``center``; see the MuJoCo XML reference.
     center: Floats | None = vec3()

@@ -10,7 +10,7 @@ from typing import ClassVar
 
 from mjcf_model.nodes.base import TypedElement
 from mjcf_model.nodes.declaring import node
-from mjcf_model.nodes.fields import integer, number, numbers, reference, text, vec1to2, vec1to5
+from mjcf_model.nodes.fields import integer, number, numbers, text, vec1to2, vec1to5
 from mjcf_model.values import Floats
 
 __all__ = ["Contact", "Exclude", "Pair"]
@@ -20,7 +20,6 @@ __all__ = ["Contact", "Exclude", "Pair"]
 class Contact(TypedElement):
     """Section of explicit contact pairs and exclusions."""
 
-    tag: ClassVar[str] = "contact"
     schema_keys: ClassVar[tuple[str, ...]] = ("contact",)
 
 
@@ -28,12 +27,11 @@ class Contact(TypedElement):
 class Pair(TypedElement):
     """An explicit contact pair of two geoms."""
 
-    tag: ClassVar[str] = "pair"
     schema_keys: ClassVar[tuple[str, ...]] = ("contact/pair", "default/pair")
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
+    dclass: str | None = text(xml="class")
     #: Adhesion force parameter.
     adhesion: str | None = text()
     #: Dimensionality of the contact space (1, 3, 4 or 6).
@@ -43,9 +41,9 @@ class Pair(TypedElement):
     #: Part of the margin within which contacts are not generated.
     gap: float | None = number()
     #: Name of the first geom.
-    geom1: str | None = reference("geom")
+    geom1: str | None = text()
     #: Name of the second geom.
-    geom2: str | None = reference("geom")
+    geom2: str | None = text()
     #: Distance at which contacts (or limits) become active.
     margin: float | None = number()
     #: Constraint solver impedance parameters.
@@ -60,11 +58,10 @@ class Pair(TypedElement):
 class Exclude(TypedElement):
     """Excludes contacts between two bodies."""
 
-    tag: ClassVar[str] = "exclude"
     schema_keys: ClassVar[tuple[str, ...]] = ("contact/exclude",)
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Name of the first body.
-    body1: str | None = reference("body")
+    body1: str | None = text()
     #: Name of the second body.
-    body2: str | None = reference("body")
+    body2: str | None = text()

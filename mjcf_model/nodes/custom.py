@@ -10,7 +10,7 @@ from typing import ClassVar
 
 from mjcf_model.nodes.base import TypedElement
 from mjcf_model.nodes.declaring import node
-from mjcf_model.nodes.fields import integer, numbers, reference, text
+from mjcf_model.nodes.fields import integer, numbers, text
 from mjcf_model.values import Floats
 
 __all__ = ["Custom", "Numeric", "Text", "Tuple", "TupleElement"]
@@ -20,7 +20,6 @@ __all__ = ["Custom", "Numeric", "Text", "Tuple", "TupleElement"]
 class Custom(TypedElement):
     """Section of custom numeric, text and tuple data."""
 
-    tag: ClassVar[str] = "custom"
     schema_keys: ClassVar[tuple[str, ...]] = ("custom",)
 
 
@@ -28,7 +27,6 @@ class Custom(TypedElement):
 class Numeric(TypedElement):
     """A named array of numbers."""
 
-    tag: ClassVar[str] = "numeric"
     schema_keys: ClassVar[tuple[str, ...]] = ("custom/numeric",)
     #: Name, unique within its namespace.
     name: str | None = text()
@@ -42,7 +40,6 @@ class Numeric(TypedElement):
 class Text(TypedElement):
     """A named string."""
 
-    tag: ClassVar[str] = "text"
     schema_keys: ClassVar[tuple[str, ...]] = ("custom/text",)
     #: Name, unique within its namespace.
     name: str | None = text()
@@ -54,7 +51,6 @@ class Text(TypedElement):
 class Tuple(TypedElement):
     """A named list of object references."""
 
-    tag: ClassVar[str] = "tuple"
     schema_keys: ClassVar[tuple[str, ...]] = ("custom/tuple",)
     #: Name, unique within its namespace.
     name: str | None = text()
@@ -64,10 +60,9 @@ class Tuple(TypedElement):
 class TupleElement(TypedElement):
     """One object reference of a tuple."""
 
-    tag: ClassVar[str] = "element"
     schema_keys: ClassVar[tuple[str, ...]] = ("custom/tuple/element",)
     #: Name of the referenced object.
-    objname: str | None = reference("@objtype")
+    objname: str | None = text()
     #: Type of the referenced object.
     objtype: str | None = text()
     #: Real-valued parameter of the tuple element.

@@ -4,14 +4,15 @@ Every node class is written as::
 
     @node
     class Geom(Oriented):
-        tag: ClassVar[str] = "geom"
         schema_keys: ClassVar[tuple[str, ...]] = ("body/geom", "default/geom")
         #: Size parameters; their number and meaning depend on ``type``.
         size: Floats | None = vec1to3()
 
 :func:`node` (with the field helpers of :mod:`mjcf_model.nodes.fields`) makes
 the class a frozen attrs class whose instances store only the fields that were
-given (absent fields read their default from the class), and builds its
+given (absent fields read their default from the class), sets its ``tag`` (the last
+part of its schema keys, the rows of :mod:`mjcf_model.schema.namespaces` it models), and
+builds its
 :class:`~mjcf_model.nodes.node_info.NodeInfo` once: the MJCF attribute table,
 converters, validators and defaults that the readers, writers and the fast builder use.
 
@@ -91,12 +92,13 @@ def declare(cls: _C) -> _C:
         >>> from mjcf_model.nodes.fields import vec3
         >>> @node
         ... class Thing(TypedElement):
-        ...     tag: ClassVar[str] = "thing"
+        ...     schema_keys: ClassVar[tuple[str, ...]] = ("body/thing",)
         ...     size: tuple[float, ...] | None = vec3()
-        >>> Thing(size=[1, 2, 3]).size, Thing().size
-        ((1.0, 2.0, 3.0), None)
+        >>> Thing(size=[1, 2, 3]).size, Thing().size, Thing.tag
+        ((1.0, 2.0, 3.0), None, 'thing')
 
     """
+    _set_tag(cls)
     own_repr = any(_hand_written(klass.__dict__.get("__repr__")) for klass in cls.__mro__[:-1])
     # attrs generates no __init__, __eq__ or __hash__: one implementation of each,
     # over the class's NodeInfo, serves every class (and import stays fast).
@@ -112,6 +114,21 @@ def declare(cls: _C) -> _C:
     made.__node_info__ = info  # type: ignore[attr-defined]
     _DECLARED.append(made)
     return made
+
+
+def _set_tag(cls: type) -> None:
+    """Give a class that models schema rows its XML tag: the last part of every key.
+
+    The tag is not written in the class, so the table's keys are its one source.
+    """
+    keys = cls.__dict__.get("schema_keys", ())
+    tags = {key.rsplit("/", 1)[-1] for key in keys}
+    if len(tags) > 1:
+        raise TypeError(f"{cls.__name__}: schema keys {keys} name more than one tag")
+    if "tag" in cls.__dict__ and tags:
+        raise TypeError(f"{cls.__name__}: the tag comes from schema_keys; do not set it")
+    if tags:
+        cls.tag = tags.pop()  # type: ignore[attr-defined]
 
 
 def _parameter(field: attrs.Attribute[Any]) -> inspect.Parameter:

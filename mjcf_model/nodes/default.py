@@ -25,7 +25,6 @@ __all__ = ["Default"]
 class Default(TypedElement):
     """A default class: attribute values its members take unless they set their own."""
 
-    tag: ClassVar[str] = "default"
     schema_keys: ClassVar[tuple[str, ...]] = ("default",)
     #: Default class whose values this element takes (XML ``class``).
     dclass: str | None = text(xml="class")

@@ -15,7 +15,6 @@ from mjcf_model.nodes.fields import (
     integers,
     number,
     numbers,
-    reference,
     text,
     vec1to2,
     vec1to3,
@@ -42,7 +41,6 @@ __all__ = [
 class Flexcomp(Oriented):
     """A flex generated from a grid, mesh or points."""
 
-    tag: ClassVar[str] = "flexcomp"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/flexcomp",)
     #: Name, unique within its namespace.
     name: str | None = text()
@@ -69,9 +67,9 @@ class Flexcomp(Oriented):
     #: Mass.
     mass: float | None = number()
     #: Name of the material asset used for rendering.
-    material: str | None = reference("material")
+    material: str | None = text()
     #: Name of the mesh asset.
-    mesh: str | None = reference("mesh")
+    mesh: str | None = text()
     #: Origin of the flexcomp.
     origin: str | None = text()
     #: Point coordinates.
@@ -94,7 +92,6 @@ class Flexcomp(Oriented):
 class FlexcompEdge(TypedElement):
     """Edge properties of a flexcomp."""
 
-    tag: ClassVar[str] = "edge"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/flexcomp/edge",)
     #: Damping (coefficients of a polynomial in MuJoCo 4).
     damping: Floats | None = numbers()
@@ -112,7 +109,6 @@ class FlexcompEdge(TypedElement):
 class FlexElasticity(TypedElement):
     """Elasticity of a flex."""
 
-    tag: ClassVar[str] = "elasticity"
     schema_keys: ClassVar[tuple[str, ...]] = (
         "body/flexcomp/elasticity",
         "deformable/flex/elasticity",
@@ -141,7 +137,6 @@ class FlexElasticity(TypedElement):
 class FlexContact(TypedElement):
     """Contact properties of a flex."""
 
-    tag: ClassVar[str] = "contact"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/flexcomp/contact", "deformable/flex/contact")
     #: Number of active collision layers.
     activelayers: str | None = text()
@@ -175,7 +170,6 @@ class FlexContact(TypedElement):
 class FlexcompPin(TypedElement):
     """Points of a flexcomp pinned in place."""
 
-    tag: ClassVar[str] = "pin"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/flexcomp/pin",)
     #: Grid coordinates of pinned points.
     grid: Ints | None = integers()
@@ -191,7 +185,6 @@ class FlexcompPin(TypedElement):
 class Deformable(TypedElement):
     """Section of flexes and skins."""
 
-    tag: ClassVar[str] = "deformable"
     schema_keys: ClassVar[tuple[str, ...]] = ("deformable",)
 
 
@@ -199,12 +192,11 @@ class Deformable(TypedElement):
 class Flex(TypedElement):
     """A flex: a deformable collection of elements."""
 
-    tag: ClassVar[str] = "flex"
     schema_keys: ClassVar[tuple[str, ...]] = ("deformable/flex",)
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Names of the bodies the vertices belong to, separated by spaces.
-    body: str | None = reference("body")
+    body: str | None = text()
     #: Number of cells.
     cellcount: str | None = text()
     #: Dimension.
@@ -220,9 +212,9 @@ class Flex(TypedElement):
     #: Integer group, used for visualization filters and by convention.
     group: int | None = integer()
     #: Name of the material asset used for rendering.
-    material: str | None = reference("material")
+    material: str | None = text()
     #: Names of the bodies used as nodes.
-    node: str | None = reference("body")
+    node: str | None = text()
     #: Node coordinates.
     nodecoord: Floats | None = numbers()
     #: Radius of the flex elements.
@@ -239,7 +231,6 @@ class Flex(TypedElement):
 class FlexEdge(TypedElement):
     """Edge properties of a flex."""
 
-    tag: ClassVar[str] = "edge"
     schema_keys: ClassVar[tuple[str, ...]] = ("deformable/flex/edge",)
     #: Damping (coefficients of a polynomial in MuJoCo 4).
     damping: Floats | None = numbers()

@@ -14,7 +14,6 @@ from mjcf_model.nodes.fields import (
     boolean,
     number,
     numbers,
-    reference,
     text,
     vec1to2,
     vec1to5,
@@ -40,7 +39,6 @@ __all__ = [
 class Equality(TypedElement):
     """Section of equality constraints."""
 
-    tag: ClassVar[str] = "equality"
     schema_keys: ClassVar[tuple[str, ...]] = ("equality",)
 
 
@@ -63,14 +61,13 @@ class EqualityElement(EqualitySettings):
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
+    dclass: str | None = text(xml="class")
 
 
 @node
 class DefaultEquality(EqualitySettings):
     """Default values for equality constraints (``<default><equality>``)."""
 
-    tag: ClassVar[str] = "equality"
     schema_keys: ClassVar[tuple[str, ...]] = ("default/equality",)
 
 
@@ -78,38 +75,36 @@ class DefaultEquality(EqualitySettings):
 class Connect(EqualityElement):
     """Connects two bodies at a point (ball joint constraint)."""
 
-    tag: ClassVar[str] = "connect"
     schema_keys: ClassVar[tuple[str, ...]] = ("equality/connect",)
     #: Anchor point of the constraint.
     anchor: Floats | None = vec3()
     #: Name of the first body.
-    body1: str | None = reference("body")
+    body1: str | None = text()
     #: Name of the second body.
-    body2: str | None = reference("body")
+    body2: str | None = text()
     #: Name of the first site.
-    site1: str | None = reference("site")
+    site1: str | None = text()
     #: Name of the second site.
-    site2: str | None = reference("site")
+    site2: str | None = text()
 
 
 @node
 class Weld(EqualityElement):
     """Welds two bodies together."""
 
-    tag: ClassVar[str] = "weld"
     schema_keys: ClassVar[tuple[str, ...]] = ("equality/weld",)
     #: Anchor point of the constraint.
     anchor: Floats | None = vec3()
     #: Name of the first body.
-    body1: str | None = reference("body")
+    body1: str | None = text()
     #: Name of the second body.
-    body2: str | None = reference("body")
+    body2: str | None = text()
     #: Relative pose of the welded bodies.
     relpose: Floats | None = numbers()
     #: Name of the first site.
-    site1: str | None = reference("site")
+    site1: str | None = text()
     #: Name of the second site.
-    site2: str | None = reference("site")
+    site2: str | None = text()
     #: Scale of rotational relative to translational residual.
     torquescale: float | None = number()
 
@@ -118,12 +113,11 @@ class Weld(EqualityElement):
 class EqualityJoint(EqualityElement):
     """Couples two joints with a polynomial."""
 
-    tag: ClassVar[str] = "joint"
     schema_keys: ClassVar[tuple[str, ...]] = ("equality/joint",)
     #: Name of the first joint.
-    joint1: str | None = reference("joint")
+    joint1: str | None = text()
     #: Name of the second joint.
-    joint2: str | None = reference("joint")
+    joint2: str | None = text()
     #: Polynomial coefficients of the coupling.
     polycoef: Floats | None = numbers()
 
@@ -132,33 +126,30 @@ class EqualityJoint(EqualityElement):
 class EqualityTendon(EqualityElement):
     """Couples two tendons with a polynomial."""
 
-    tag: ClassVar[str] = "tendon"
     schema_keys: ClassVar[tuple[str, ...]] = ("equality/tendon",)
     #: Polynomial coefficients of the coupling.
     polycoef: Floats | None = numbers()
     #: Name of the first tendon.
-    tendon1: str | None = reference("tendon")
+    tendon1: str | None = text()
     #: Name of the second tendon.
-    tendon2: str | None = reference("tendon")
+    tendon2: str | None = text()
 
 
 @node
 class EqualityFlex(EqualityElement):
     """Fixes the edge lengths of a flex."""
 
-    tag: ClassVar[str] = "flex"
     schema_keys: ClassVar[tuple[str, ...]] = ("equality/flex",)
     #: Name of the flex.
-    flex: str | None = reference("flex")
+    flex: str | None = text()
 
 
 @node
 class EqualityFlexStrain(EqualityElement):
     """Constrains the strain of a flex."""
 
-    tag: ClassVar[str] = "flexstrain"
     schema_keys: ClassVar[tuple[str, ...]] = ("equality/flexstrain",)
     #: Index of the cell.
     cell: str | None = text()
     #: Name of the flex.
-    flex: str | None = reference("flex")
+    flex: str | None = text()

@@ -39,7 +39,6 @@ __all__ = [
     "keyword",
     "number",
     "numbers",
-    "reference",
     "text",
     "vec1to2",
     "vec1to3",
@@ -79,17 +78,6 @@ def keyword(choices: Collection[str], *, xml: str | None = None) -> Any:
 
     """
     return _field(to_str, xml, validator=one_of(choices))
-
-
-def reference(namespace: str, *, xml: str | None = None) -> Any:
-    """A text attribute that names an element of ``namespace`` (``"joint"``, ``"class"``...).
-
-    Examples:
-        >>> reference("mesh").metadata["namespace"]
-        'mesh'
-
-    """
-    return _field(to_str, xml, metadata={"namespace": namespace})
 
 
 def number() -> Any:

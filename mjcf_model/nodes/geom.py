@@ -17,7 +17,6 @@ from mjcf_model.nodes.fields import (
     keyword,
     number,
     numbers,
-    reference,
     text,
     vec1to2,
     vec1to3,
@@ -55,12 +54,11 @@ class Oriented(TypedElement):
 class Geom(Oriented):
     """A geometric shape used for collision, rendering and inertia."""
 
-    tag: ClassVar[str] = "geom"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/geom", "default/geom")
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
+    dclass: str | None = text(xml="class")
     #: Element type keyword.
     type: str | None = keyword(GEOM_TYPES)
     #: Size parameters; their number and meaning depend on ``type``.
@@ -92,15 +90,15 @@ class Geom(Oriented):
     #: Integer group, used for visualization filters and by convention.
     group: int | None = integer()
     #: Name of the height-field asset.
-    hfield: str | None = reference("hfield")
+    hfield: str | None = text()
     #: Distance at which contacts (or limits) become active.
     margin: float | None = number()
     #: Mass.
     mass: float | None = number()
     #: Name of the material asset used for rendering.
-    material: str | None = reference("material")
+    material: str | None = text()
     #: Name of the mesh asset.
-    mesh: str | None = reference("mesh")
+    mesh: str | None = text()
     #: Contact priority.
     priority: int | None = integer()
     #: Colour and transparency (r, g, b, a).
@@ -123,12 +121,11 @@ class Geom(Oriented):
 class Site(Oriented):
     """A site: a frame of interest that does not collide."""
 
-    tag: ClassVar[str] = "site"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/site", "default/site")
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
+    dclass: str | None = text(xml="class")
     #: Element type keyword.
     type: str | None = text()
     #: Size parameters; their number and meaning depend on ``type``.
@@ -138,9 +135,9 @@ class Site(Oriented):
     #: Integer group, used for visualization filters and by convention.
     group: int | None = integer()
     #: Name of the material asset used for rendering.
-    material: str | None = reference("material")
+    material: str | None = text()
     #: Name of the mesh asset.
-    mesh: str | None = reference("mesh")
+    mesh: str | None = text()
     #: Colour and transparency (r, g, b, a).
     rgba: Floats | None = vec4()
     #: Custom user data (numbers).
@@ -151,12 +148,11 @@ class Site(Oriented):
 class Camera(Oriented):
     """A camera."""
 
-    tag: ClassVar[str] = "camera"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/camera", "default/camera")
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
+    dclass: str | None = text(xml="class")
     #: Focal length in length units.
     focal: Floats | None = vec2()
     #: Focal length in pixels.
@@ -180,7 +176,7 @@ class Camera(Oriented):
     #: Physical sensor size.
     sensorsize: Floats | None = vec2()
     #: Name of the body a tracking camera or light targets.
-    target: str | None = reference("body")
+    target: str | None = text()
     #: Custom user data (numbers).
     user: Floats | None = numbers()
 
@@ -189,12 +185,11 @@ class Camera(Oriented):
 class Light(TypedElement):
     """A light."""
 
-    tag: ClassVar[str] = "light"
     schema_keys: ClassVar[tuple[str, ...]] = ("body/light", "default/light")
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
+    dclass: str | None = text(xml="class")
     #: Element type keyword.
     type: str | None = keyword(LIGHT_TYPES)
     #: Position (x, y, z) in the parent frame, in length units.
@@ -230,6 +225,6 @@ class Light(TypedElement):
     #: Specular colour or intensity.
     specular: Floats | None = vec3()
     #: Name of the body a tracking camera or light targets.
-    target: str | None = reference("body")
+    target: str | None = text()
     #: Name of the texture asset.
-    texture: str | None = reference("texture")
+    texture: str | None = text()

@@ -20,7 +20,6 @@ __all__ = ["Key", "Keyframe"]
 class Keyframe(TypedElement):
     """Section of keyframes."""
 
-    tag: ClassVar[str] = "keyframe"
     schema_keys: ClassVar[tuple[str, ...]] = ("keyframe",)
 
     @property
@@ -33,7 +32,6 @@ class Keyframe(TypedElement):
 class Key(TypedElement):
     """A keyframe: a stored simulation state."""
 
-    tag: ClassVar[str] = "key"
     schema_keys: ClassVar[tuple[str, ...]] = ("keyframe/key",)
     #: Name, unique within its namespace.
     name: str | None = text()

@@ -10,7 +10,7 @@ from typing import ClassVar
 
 from mjcf_model.nodes.base import TypedElement
 from mjcf_model.nodes.declaring import node
-from mjcf_model.nodes.fields import reference, text
+from mjcf_model.nodes.fields import text
 
 __all__ = ["Extension", "ExtensionPlugin", "Plugin", "PluginConfig", "PluginInstance", "PluginUse"]
 
@@ -19,7 +19,6 @@ __all__ = ["Extension", "ExtensionPlugin", "Plugin", "PluginConfig", "PluginInst
 class Extension(TypedElement):
     """Section that declares engine plugins."""
 
-    tag: ClassVar[str] = "extension"
     schema_keys: ClassVar[tuple[str, ...]] = ("extension",)
 
 
@@ -27,7 +26,6 @@ class Extension(TypedElement):
 class ExtensionPlugin(TypedElement):
     """An engine plugin used by the model."""
 
-    tag: ClassVar[str] = "plugin"
     schema_keys: ClassVar[tuple[str, ...]] = ("extension/plugin",)
     #: Identifier of the plugin library.
     plugin: str | None = text()
@@ -37,7 +35,6 @@ class ExtensionPlugin(TypedElement):
 class PluginInstance(TypedElement):
     """A named, configured instance of a plugin."""
 
-    tag: ClassVar[str] = "instance"
     schema_keys: ClassVar[tuple[str, ...]] = ("extension/plugin/instance",)
     #: Name, unique within its namespace.
     name: str | None = text()
@@ -47,7 +44,6 @@ class PluginInstance(TypedElement):
 class PluginConfig(TypedElement):
     """One key/value configuration entry of a plugin."""
 
-    tag: ClassVar[str] = "config"
     schema_keys: ClassVar[tuple[str, ...]] = (
         "extension/plugin/instance/config",
         "asset/mesh/plugin/config",
@@ -68,7 +64,7 @@ class PluginUse(TypedElement):
     """Elements that attach a plugin, by library or by instance."""
 
     #: Name of the plugin instance.
-    instance: str | None = reference("plugin")
+    instance: str | None = text()
     #: Identifier of the plugin library.
     plugin: str | None = text()
 
@@ -77,7 +73,6 @@ class PluginUse(TypedElement):
 class Plugin(PluginUse):
     """A plugin attached to a body, geom, mesh or flexcomp."""
 
-    tag: ClassVar[str] = "plugin"
     schema_keys: ClassVar[tuple[str, ...]] = (
         "asset/mesh/plugin",
         "body/geom/plugin",

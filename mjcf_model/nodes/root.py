@@ -50,7 +50,6 @@ __all__ = ["Include", "Mujoco"]
 class Include(TypedElement):
     """Includes another MJCF file's elements here."""
 
-    tag: ClassVar[str] = "include"
     schema_keys: ClassVar[tuple[str, ...]] = ("include",)
     #: File name, relative to the model (or asset) directory.
     file: str | None = text()
@@ -60,7 +59,6 @@ class Include(TypedElement):
 class Mujoco(TypedElement):
     """The root of an MJCF model."""
 
-    tag: ClassVar[str] = "mujoco"
     schema_keys: ClassVar[tuple[str, ...]] = ("mujoco",)
     #: Name of the model asset.
     model: str | None = text()

@@ -15,7 +15,6 @@ from mjcf_model.nodes.fields import (
     keyword,
     number,
     numbers,
-    reference,
     text,
     vec1to2,
     vec1to5,
@@ -43,7 +42,6 @@ __all__ = [
 class Tendon(TypedElement):
     """Section of tendons."""
 
-    tag: ClassVar[str] = "tendon"
     schema_keys: ClassVar[tuple[str, ...]] = ("tendon",)
 
 
@@ -94,17 +92,16 @@ class TendonElement(TendonSettings):
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
+    dclass: str | None = text(xml="class")
 
 
 @node
 class DefaultTendon(TendonSettings):
     """Default values for tendons (``<default><tendon>``)."""
 
-    tag: ClassVar[str] = "tendon"
     schema_keys: ClassVar[tuple[str, ...]] = ("default/tendon",)
     #: Name of the material asset used for rendering.
-    material: str | None = reference("material")
+    material: str | None = text()
     #: Colour and transparency (r, g, b, a).
     rgba: Floats | None = vec4()
     #: Width.
@@ -115,10 +112,9 @@ class DefaultTendon(TendonSettings):
 class Spatial(TendonElement):
     """A spatial tendon: a path through sites and around geoms."""
 
-    tag: ClassVar[str] = "spatial"
     schema_keys: ClassVar[tuple[str, ...]] = ("tendon/spatial",)
     #: Name of the material asset used for rendering.
-    material: str | None = reference("material")
+    material: str | None = text()
     #: Colour and transparency (r, g, b, a).
     rgba: Floats | None = vec4()
     #: Width.
@@ -129,7 +125,6 @@ class Spatial(TendonElement):
 class Fixed(TendonElement):
     """A fixed tendon: a linear combination of joint positions."""
 
-    tag: ClassVar[str] = "fixed"
     schema_keys: ClassVar[tuple[str, ...]] = ("tendon/fixed",)
 
     @property
@@ -142,29 +137,26 @@ class Fixed(TendonElement):
 class TendonSite(TypedElement):
     """A site the spatial tendon passes through."""
 
-    tag: ClassVar[str] = "site"
     schema_keys: ClassVar[tuple[str, ...]] = ("tendon/spatial/site",)
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
 
 
 @node
 class TendonGeom(TypedElement):
     """A geom the spatial tendon wraps around."""
 
-    tag: ClassVar[str] = "geom"
     schema_keys: ClassVar[tuple[str, ...]] = ("tendon/spatial/geom",)
     #: MJCF attribute ``geom``; see the MuJoCo XML reference.
-    geom: str | None = reference("geom")
+    geom: str | None = text()
     #: Name of the site that chooses the wrapping side.
-    sidesite: str | None = reference("site")
+    sidesite: str | None = text()
 
 
 @node
 class Pulley(TypedElement):
     """Starts a new branch of a spatial tendon."""
 
-    tag: ClassVar[str] = "pulley"
     schema_keys: ClassVar[tuple[str, ...]] = ("tendon/spatial/pulley",)
     #: Divisor of the tendon length of the branch after the pulley.
     divisor: float | None = number()
@@ -174,9 +166,8 @@ class Pulley(TypedElement):
 class TendonJoint(TypedElement):
     """A joint and its coefficient in a fixed tendon."""
 
-    tag: ClassVar[str] = "joint"
     schema_keys: ClassVar[tuple[str, ...]] = ("tendon/fixed/joint",)
     #: Coefficient of the joint in the fixed tendon.
     coef: float | None = number()
     #: Name of the joint.
-    joint: str | None = reference("joint")
+    joint: str | None = text()

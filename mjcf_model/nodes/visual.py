@@ -27,7 +27,6 @@ __all__ = [
 class Visual(TypedElement):
     """Visualization settings section."""
 
-    tag: ClassVar[str] = "visual"
     schema_keys: ClassVar[tuple[str, ...]] = ("visual",)
 
 
@@ -35,7 +34,6 @@ class Visual(TypedElement):
 class VisualGlobal(TypedElement):
     """Global visualization settings."""
 
-    tag: ClassVar[str] = "global"
     schema_keys: ClassVar[tuple[str, ...]] = ("visual/global",)
     #: Visualization setting ``azimuth``; see the MuJoCo XML reference.
     azimuth: str | None = text()
@@ -69,7 +67,6 @@ class VisualGlobal(TypedElement):
 class VisualQuality(TypedElement):
     """Rendering quality settings."""
 
-    tag: ClassVar[str] = "quality"
     schema_keys: ClassVar[tuple[str, ...]] = ("visual/quality",)
     #: Visualization setting ``numquads``; see the MuJoCo XML reference.
     numquads: str | None = text()
@@ -87,7 +84,6 @@ class VisualQuality(TypedElement):
 class VisualHeadlight(TypedElement):
     """The headlight."""
 
-    tag: ClassVar[str] = "headlight"
     schema_keys: ClassVar[tuple[str, ...]] = ("visual/headlight",)
     #: Whether the element is active initially.
     active: str | None = text()
@@ -103,7 +99,6 @@ class VisualHeadlight(TypedElement):
 class VisualMap(TypedElement):
     """Mapping of model quantities to visual ones."""
 
-    tag: ClassVar[str] = "map"
     schema_keys: ClassVar[tuple[str, ...]] = ("visual/map",)
     #: Visualization setting ``actuatortendon``; see the MuJoCo XML reference.
     actuatortendon: str | None = text()
@@ -137,7 +132,6 @@ class VisualMap(TypedElement):
 class VisualScale(TypedElement):
     """Sizes of decorative elements."""
 
-    tag: ClassVar[str] = "scale"
     schema_keys: ClassVar[tuple[str, ...]] = ("visual/scale",)
     #: Visualization setting ``actuatorlength``; see the MuJoCo XML reference.
     actuatorlength: str | None = text()
@@ -179,7 +173,6 @@ class VisualScale(TypedElement):
 class VisualRgba(TypedElement):
     """Colours of decorative elements."""
 
-    tag: ClassVar[str] = "rgba"
     schema_keys: ClassVar[tuple[str, ...]] = ("visual/rgba",)
     #: Name of the actuator.
     actuator: str | None = text()

@@ -35,7 +35,7 @@ import attrs
 
 from mjcf_model.nodes.base import (
     AnyElement,
-    GenericElement,
+    Element,
     Node,
     TypedElement,
     attribute_items,
@@ -231,7 +231,7 @@ def _comparable(value: Value | None, element: AnyElement) -> object:
 
 def _elements(root: Node) -> Iterator[_Seen]:
     """Every element of ``root`` with its identity, in document order."""
-    if not isinstance(root, (TypedElement, GenericElement)):
+    if not isinstance(root, Element):
         return
     base_dir = root.base_dir if isinstance(root, Mujoco) else None
     # One level per parent: keyed by its ``Ancestors`` object (one per parent it walks into,

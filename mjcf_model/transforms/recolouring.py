@@ -11,14 +11,19 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any, TypeVar, cast
 
-from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, with_attributes
+from mjcf_model.nodes.base import (
+    AnyElement,
+    Element,
+    Node,
+    with_attributes,
+)
 from mjcf_model.tree.queries import geom_role
 from mjcf_model.tree.traversal import map_tree
 from mjcf_model.values import Value
 
 __all__ = ["with_collision_colour"]
 
-_E = TypeVar("_E", bound=TypedElement | GenericElement)
+_E = TypeVar("_E", bound=Element)
 
 
 def with_collision_colour(
@@ -43,7 +48,7 @@ def with_collision_colour(
 
     def visit(current: Node) -> Node:
         if (
-            isinstance(current, (TypedElement, GenericElement))
+            isinstance(current, Element)
             and geom_role(current) == "collision"
             and (exclude is None or not exclude(current))
         ):

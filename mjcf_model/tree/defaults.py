@@ -17,12 +17,13 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
 from types import MappingProxyType
-from typing import Any
+from typing import Any, cast
 
 import attrs
 
 from mjcf_model.nodes.base import (
     AnyElement,
+    Element,
     GenericElement,
     Node,
     TypedElement,
@@ -91,8 +92,7 @@ class DefaultClasses:
         parents: dict[str, str | None] = {MAIN: None}
         settings: dict[tuple[str, str], AnyElement] = {}
 
-        elements = (TypedElement, GenericElement)
-        tops = [c for c in model.children if isinstance(c, elements) and c.tag == "default"]
+        tops = [c for c in model.children if isinstance(c, Element) and c.tag == "default"]
         for top in tops if model.tag == "mujoco" else []:
             parents[MAIN] = None
             # Each level: the children of a <default> still to read, and its class name;
@@ -101,7 +101,7 @@ class DefaultClasses:
             while stack:
                 pending, name = stack[-1]
                 for child in pending:
-                    if not isinstance(child, elements):
+                    if not isinstance(child, Element):
                         continue
                     if child.tag == "default":
                         inner = get_attribute(child, "class")
@@ -356,7 +356,9 @@ def _writes(setting: AnyElement) -> bool:
     if isinstance(setting, GenericElement):
         return bool(setting.attributes)
     info = type(setting).__node_info__
-    return bool(setting.extra) or any(value is not None for value in info.getter(setting))
+    return bool(cast(TypedElement, setting).extra) or any(
+        value is not None for value in info.getter(setting)
+    )
 
 
 def _value(found: tuple[Value, str] | None) -> Value | None:

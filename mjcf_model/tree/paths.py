@@ -18,9 +18,8 @@ from typing import TypeVar
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import (
     AnyElement,
-    GenericElement,
+    Element,
     Node,
-    TypedElement,
     with_attributes,
 )
 from mjcf_model.tree.traversal import Path, with_children, with_mapped_children
@@ -29,9 +28,7 @@ from mjcf_model.values import Value
 __all__ = ["appended_at", "edited_at", "replaced_at", "subtree_at"]
 
 _N = TypeVar("_N", bound=Node)
-_A = TypeVar("_A", bound=TypedElement | GenericElement)
-#: Either kind of element, for ``isinstance``.
-_ELEMENTS = (TypedElement, GenericElement)
+_A = TypeVar("_A", bound=Element)
 
 
 def subtree_at(node: AnyElement, path: Path) -> AnyElement:
@@ -46,7 +43,7 @@ def subtree_at(node: AnyElement, path: Path) -> AnyElement:
     current = node
     for index in path:
         child = current.children[index]
-        if not isinstance(child, _ELEMENTS):
+        if not isinstance(child, Element):
             raise MjcfValueError(f"no element at {path}: child {index} is a {type(child).__name__}")
         current = child
     return current
@@ -69,7 +66,7 @@ def replaced_at(node: _A, path: Path, new: Sequence[Node]) -> _A:
     chain: list[AnyElement] = [node]
     for index in path[:-1]:
         inner = chain[-1].children[index]
-        assert isinstance(inner, (TypedElement, GenericElement))
+        assert isinstance(inner, Element)
         chain.append(inner)
     replacement: list[Node] = list(new)
     for holder, index in zip(reversed(chain), reversed(path), strict=True):
@@ -111,7 +108,7 @@ def edited_at(node: _N, edits: Mapping[Path, Mapping[str, Value | None]]) -> _N:
         ('top', ['a', 'c'], True)
 
     """
-    if not edits or not isinstance(node, _ELEMENTS):
+    if not edits or not isinstance(node, Element):
         return node
     touched = {path[:depth] for path in edits for depth in range(len(path) + 1)}
 
@@ -129,7 +126,7 @@ def edited_at(node: _N, edits: Mapping[Path, Mapping[str, Value | None]]) -> _N:
         element, path, mapped, pending = stack[-1]
         for index, child in pending:
             below = (*path, index)
-            if below not in touched or not isinstance(child, _ELEMENTS):
+            if below not in touched or not isinstance(child, Element):
                 mapped.append(child)
             elif child.children:
                 stack.append((child, below, [], iter(enumerate(child.children))))

@@ -20,10 +20,11 @@ from __future__ import annotations
 
 import operator
 from collections.abc import Callable, Collection, Iterator
-from typing import Literal
+from typing import Literal, cast
 
 from mjcf_model.nodes.base import (
     AnyElement,
+    Element,
     GenericElement,
     Node,
     TypedElement,
@@ -75,7 +76,7 @@ def attribute_values(element: AnyElement, names: tuple[str, ...]) -> tuple[Value
 
 
 def _reader(
-    cls: type[TypedElement], names: tuple[str, ...]
+    cls: type[Element], names: tuple[str, ...]
 ) -> Callable[[AnyElement], tuple[Value | None, ...]]:
     table = cls.__node_info__.table
     fields = tuple(table.get(name) for name in names)
@@ -84,7 +85,7 @@ def _reader(
     pairs = tuple(zip(names, fields, strict=True))
 
     def read(element: AnyElement) -> tuple[Value | None, ...]:
-        extra = element.extra  # type: ignore[union-attr]
+        extra = cast(TypedElement, element).extra
         return tuple(
             [extra.get(name) if field is None else getattr(element, field) for name, field in pairs]
         )

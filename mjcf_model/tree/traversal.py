@@ -24,9 +24,7 @@ from mjcf_model.errors import Advice, MjcfValueError
 from mjcf_model.nodes.base import (
     AnyElement,
     Element,
-    GenericElement,
     Node,
-    TypedElement,
     build_node,
     get_attribute,
     to_children,
@@ -58,7 +56,7 @@ ElementVisitor = Callable[[AnyElement, str | None, Sequence[AnyElement]], AnyEle
 
 _E = TypeVar("_E", bound=Element)
 _N = TypeVar("_N", bound=Node)
-_A = TypeVar("_A", bound=TypedElement | GenericElement)
+_A = TypeVar("_A", bound=Element)
 
 #: What to do with a model whose ``<include>`` elements were kept as they are.
 INCLUDES_NOT_READ = Advice(
@@ -90,10 +88,6 @@ def with_children(element: _E, children: Sequence[Node]) -> _E:
     if len(old) == len(children) and all(map(operator.is_, old, children)):
         return element
     return build_node(type(element), {"children": to_children(children)}, element)
-
-
-def _is_element(node: Node) -> bool:
-    return isinstance(node, (TypedElement, GenericElement))
 
 
 def map_tree(fn: Callable[[Node], Node], node: _N) -> Node:
@@ -176,9 +170,6 @@ def map_elements(
     return _map_elements(fn, node, context, kept)  # type: ignore[return-value]
 
 
-#: Either kind of element, for ``isinstance``.
-_ELEMENTS = (TypedElement, GenericElement)
-
 #: ``child_key`` answers, by ``(context, tag)``: the walks ask it for every element.
 _KEYS: dict[tuple[str | None, str], str | None] = {}
 #: How many answers :data:`_KEYS` keeps (tags are open-ended in untrusted files).
@@ -227,7 +218,7 @@ def _map_elements(
     while True:
         element, key, inner, ancestors, below, mapped, pending = stack[-1]
         for child in pending:
-            if not isinstance(child, _ELEMENTS):
+            if not isinstance(child, Element):
                 mapped.append(child)
                 continue
             child_key = keys.get((inner, child.tag), unknown)
@@ -324,9 +315,9 @@ def walk(node: Node) -> Iterator[tuple[Path, AnyElement]]:
     stack: list[tuple[Path, Node]] = [((), node)]
     while stack:
         path, current = stack.pop()
-        if not _is_element(current):
+        if not isinstance(current, Element):
             continue
-        assert isinstance(current, (TypedElement, GenericElement))
+        assert isinstance(current, Element)
         yield path, current
         stack.extend(
             ((*path, index), child) for index, child in reversed(list(enumerate(current.children)))
@@ -354,7 +345,7 @@ def keyed_walk(
     while stack:
         pending, parent_context, ancestors = stack[-1]
         for element in pending:
-            if not isinstance(element, _ELEMENTS):
+            if not isinstance(element, Element):
                 continue
             key = keys.get((parent_context, element.tag), unknown)
             if key is unknown:

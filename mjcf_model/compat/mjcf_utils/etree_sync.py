@@ -105,7 +105,7 @@ def preorder(node: Node) -> Iterator[tuple[AnyElement | None, Node, Path]]:
     while stack:
         parent, current, path = stack.pop()
         yield parent, current, path
-        if isinstance(current, (TypedElement, GenericElement)):
+        if isinstance(current, Element):
             stack.extend(
                 (current, child, (*path, index))
                 for index, child in reversed(list(enumerate(current.children)))
@@ -119,9 +119,9 @@ def sync_element(element: ET.Element, old: Node, new: Node) -> None:
     does), a removed one is deleted; attributes other code added to the live
     element stay, after the model's own.
     """
-    if new is old or not isinstance(new, (TypedElement, GenericElement)):
+    if new is old or not isinstance(new, Element):
         return
-    before = attribute_texts(old) if isinstance(old, (TypedElement, GenericElement)) else []
+    before = attribute_texts(old) if isinstance(old, Element) else []
     after = attribute_texts(new)
     if before != after:
         _sync_attributes(element, dict(before), after)

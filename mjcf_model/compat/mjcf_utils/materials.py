@@ -27,7 +27,7 @@ from mjcf_model.compat.mjcf_utils.etree_sync import (
 from mjcf_model.compat.mjcf_utils.naming import already_prefixed
 from mjcf_model.compat.mjcf_utils.text import array_to_string, parse_numbers, xml_path_completion
 from mjcf_model.files.png import png_bytes
-from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
+from mjcf_model.nodes.base import AnyElement, Element, Node
 from mjcf_model.transforms.recolouring import with_collision_colour
 from mjcf_model.tree.paths import edited_at
 
@@ -166,7 +166,7 @@ def add_material(
         )
     used = False
     node = node_of(root)
-    if isinstance(node, (TypedElement, GenericElement)):
+    if isinstance(node, Element):
         name = custom_material.name
         marker = FrozenMaterial(texture=None, tex_name=name, mat_name=name, shared=True)
         result = with_material(node, marker)
@@ -182,7 +182,7 @@ def recolored(node: Node, rgba: Any, exclude: Callable[[AnyElement], Any] | None
 
     robosuite formats the colour only when a geom takes it (and fails only then).
     """
-    if not isinstance(node, (TypedElement, GenericElement)):
+    if not isinstance(node, Element):
         return node
     return with_collision_colour(node, lambda: array_to_string(rgba), exclude)
 

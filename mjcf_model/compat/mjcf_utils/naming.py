@@ -13,7 +13,7 @@ from mjcf_model.compat.mjcf_utils.etree_sync import (
     preorder,
     write_back,
 )
-from mjcf_model.nodes.base import GenericElement, Node, TypedElement, attribute_items
+from mjcf_model.nodes.base import Element, GenericElement, Node, TypedElement, attribute_items
 from mjcf_model.tree.paths import edited_at
 
 __all__ = ["add_prefix", "already_prefixed", "prefixed_attributes"]
@@ -50,9 +50,7 @@ def prefixed_attributes(
     """
     edits: dict[tuple[int, ...], dict[str, str | None]] = {}
     for _parent, current, path in preorder(node):
-        if tags is not None and not (
-            isinstance(current, (TypedElement, GenericElement)) and current.tag in tags
-        ):
+        if tags is not None and not (isinstance(current, Element) and current.tag in tags):
             continue
         if exclude is not None and exclude(current):
             continue

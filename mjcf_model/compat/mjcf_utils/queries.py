@@ -20,7 +20,7 @@ from mjcf_model.compat.mjcf_utils.etree_sync import (
     preorder,
     shallow_node,
 )
-from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement
+from mjcf_model.nodes.base import AnyElement, Element, Node
 from mjcf_model.tree.queries import find_all, geom_role, parent_of
 from mjcf_model.tree.traversal import walk
 
@@ -41,7 +41,7 @@ __all__ = [
 
 def _tag(node: Node | None) -> str | None:
     """The tag of an element node, else ``None``."""
-    return node.tag if isinstance(node, (TypedElement, GenericElement)) else None
+    return node.tag if isinstance(node, Element) else None
 
 
 def filter_key(
@@ -68,7 +68,7 @@ def filter_key(
     if is_sensor:
         return "sensors"
     if tag == "geom":
-        assert isinstance(node, (TypedElement, GenericElement))
+        assert isinstance(node, Element)
         return {"collision": "contact_geoms", "visual": "visual_geoms"}.get(geom_role(node) or "")
     return None
 
@@ -238,7 +238,7 @@ def typed_pairs(
     return [
         (parent, current)
         for parent, current, _path in preorder(node)
-        if isinstance(current, (TypedElement, GenericElement))
+        if isinstance(current, Element)
         and current.tag == element_type
         and (parent is not None or include_root)
     ]
@@ -347,8 +347,6 @@ def categorized(node: AnyElement) -> Categories:
         if key is not None:
             found[key].append(element)
         stack.extend(
-            (child, element)
-            for child in reversed(element.children)
-            if isinstance(child, (TypedElement, GenericElement))
+            (child, element) for child in reversed(element.children) if isinstance(child, Element)
         )
     return Categories(**found)

@@ -18,7 +18,7 @@ import numpy.typing as npt
 
 from mjcf_model.compat.mjcf_utils.etree_sync import attribute, shallow_node, sync_element
 from mjcf_model.compat.mjcf_utils.text import array_to_string, normalize_scale_array, parse_numbers
-from mjcf_model.nodes.base import GenericElement, Node, TypedElement, with_attributes
+from mjcf_model.nodes.base import Element, Node, with_attributes
 
 __all__ = [
     "scale_body_element",
@@ -37,7 +37,7 @@ __all__ = [
 
 def _changed(node: Node, changes: dict[str, str]) -> Node:
     """``node`` with ``changes`` (if any) applied."""
-    if not changes or not isinstance(node, (TypedElement, GenericElement)):
+    if not changes or not isinstance(node, Element):
         return node
     return with_attributes(node, changes)
 

@@ -36,7 +36,7 @@ from typing import Any, ClassVar, Generic, TypeGuard, TypeVar
 
 from mjcf_model.compat.mjcf_utils.etree_sync import attribute, sync_element
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import AnyElement, Comment, GenericElement, Node, TypedElement
+from mjcf_model.nodes.base import AnyElement, Comment, Element, Node
 from mjcf_model.tree.paths import appended_at, replaced_at, subtree_at
 from mjcf_model.tree.queries import find
 from mjcf_model.tree.traversal import Path, walk, with_children
@@ -143,7 +143,7 @@ class RobosuiteCompatible:
 
 def is_element(node: object, tag: str | None = None) -> TypeGuard[AnyElement]:
     """Whether ``node`` is an element (not a comment), with the tag ``tag`` if given."""
-    return isinstance(node, (TypedElement, GenericElement)) and tag in (None, node.tag)
+    return isinstance(node, Element) and tag in (None, node.tag)
 
 
 def as_node(value: object) -> AnyElement:

@@ -23,7 +23,7 @@ from mjcf_model.compat.mjcf_utils.naming import already_prefixed
 from mjcf_model.compat.mjcf_utils.queries import categorized
 from mjcf_model.compat.objects.document import Memo
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, attribute_items
+from mjcf_model.nodes.base import AnyElement, Element, GenericElement, Node, attribute_items
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.transforms.naming.renaming import prefixed
 from mjcf_model.transforms.naming.repeated import PrefixPlan
@@ -69,7 +69,7 @@ def naming_skeleton(node: AnyElement) -> Hashable:
 
 
 def _skeleton(node: Node, depth: int) -> Hashable:
-    if not isinstance(node, (TypedElement, GenericElement)):
+    if not isinstance(node, Element):
         return ()
     if node.tag in _GENERATORS or depth > _DEPTH:
         return None

@@ -12,7 +12,6 @@ from mjcf_model.nodes.fields import (
     keyword,
     number,
     numbers,
-    reference,
     text,
     vec2,
 )
@@ -31,7 +30,6 @@ __all__ = [
 class Actuator(TypedElement):
     """Section of actuators."""
 
-    tag: ClassVar[str] = "actuator"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator",)
 
 
@@ -42,7 +40,7 @@ class ActuatorElement(TypedElement):
     #: Name, unique within its namespace.
     name: str | None = text()
     #: Default class whose values this element takes (XML ``class``).
-    dclass: str | None = reference("class", xml="class")
+    dclass: str | None = text(xml="class")
     #: Range of the control.
     ctrlrange: Floats | None = vec2()
     #: Delay, in time units.
@@ -66,28 +64,27 @@ class TransmissionActuator(ActuatorElement):
     #: Length of the slider-crank rod.
     cranklength: float | None = number()
     #: Name of the crank site of a slider-crank.
-    cranksite: str | None = reference("site")
+    cranksite: str | None = text()
     #: Damping (coefficients of a polynomial in MuJoCo 4).
     damping: Floats | None = numbers()
     #: Gear ratio(s) of the transmission.
     gear: Floats | None = numbers()
     #: Name of the joint.
-    joint: str | None = reference("joint")
+    joint: str | None = text()
     #: Name of the joint in the parent frame (for ball-joint transmissions).
-    jointinparent: str | None = reference("joint")
+    jointinparent: str | None = text()
     #: Range of the actuator length.
     lengthrange: Floats | None = vec2()
     #: Name of the slider site of a slider-crank.
-    slidersite: str | None = reference("site")
+    slidersite: str | None = text()
     #: Name of the tendon.
-    tendon: str | None = reference("tendon")
+    tendon: str | None = text()
 
 
 @node
 class General(TransmissionActuator):
     """A general actuator with configurable dynamics, gain and bias."""
 
-    tag: ClassVar[str] = "general"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/general", "default/general")
     #: Dimension of the activation state.
     actdim: int | None = integer()
@@ -102,7 +99,7 @@ class General(TransmissionActuator):
     #: Bias type.
     biastype: str | None = text()
     #: Name of the body.
-    body: str | None = reference("body")
+    body: str | None = text()
     #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
     ctrllimited: str | None = keyword(LIMITED)
     #: Activation dynamics parameters.
@@ -124,8 +121,8 @@ class General(TransmissionActuator):
     #: Input mode of the controller.
     input: str | None = text()
     #: Name of the reference site of a Cartesian transmission.
-    refsite: str | None = reference("site")
+    refsite: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
     #: Range of the velocity.
     velrange: Floats | None = vec2()

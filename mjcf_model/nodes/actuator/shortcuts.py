@@ -10,7 +10,6 @@ from mjcf_model.nodes.fields import (
     keyword,
     number,
     numbers,
-    reference,
     text,
     vec2,
     vec3,
@@ -35,7 +34,6 @@ __all__ = [
 class Motor(TransmissionActuator):
     """A direct-drive motor."""
 
-    tag: ClassVar[str] = "motor"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/motor", "default/motor")
     #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
     ctrllimited: str | None = keyword(LIMITED)
@@ -44,16 +42,15 @@ class Motor(TransmissionActuator):
     #: Range of the force.
     forcerange: Floats | None = vec2()
     #: Name of the reference site of a Cartesian transmission.
-    refsite: str | None = reference("site")
+    refsite: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
 
 
 @node
 class Position(TransmissionActuator):
     """A position servo."""
 
-    tag: ClassVar[str] = "position"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/position", "default/position")
     #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
     ctrllimited: str | None = keyword(LIMITED)
@@ -70,9 +67,9 @@ class Position(TransmissionActuator):
     #: Velocity gain.
     kv: float | None = number()
     #: Name of the reference site of a Cartesian transmission.
-    refsite: str | None = reference("site")
+    refsite: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
     #: Time constant(s).
     timeconst: float | None = number()
 
@@ -81,7 +78,6 @@ class Position(TransmissionActuator):
 class Velocity(TransmissionActuator):
     """A velocity servo."""
 
-    tag: ClassVar[str] = "velocity"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/velocity", "default/velocity")
     #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
     ctrllimited: str | None = keyword(LIMITED)
@@ -92,16 +88,15 @@ class Velocity(TransmissionActuator):
     #: Velocity gain.
     kv: float | None = number()
     #: Name of the reference site of a Cartesian transmission.
-    refsite: str | None = reference("site")
+    refsite: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
 
 
 @node
 class IntVelocity(TransmissionActuator):
     """An integrated-velocity servo."""
 
-    tag: ClassVar[str] = "intvelocity"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/intvelocity", "default/intvelocity")
     #: Whether the activation is clamped: ``true``, ``false`` or ``auto``.
     actlimited: str | None = keyword(LIMITED)
@@ -122,16 +117,15 @@ class IntVelocity(TransmissionActuator):
     #: Velocity gain.
     kv: float | None = number()
     #: Name of the reference site of a Cartesian transmission.
-    refsite: str | None = reference("site")
+    refsite: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
 
 
 @node
 class Pid(TransmissionActuator):
     """A PID controller."""
 
-    tag: ClassVar[str] = "pid"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/pid", "default/pid")
     #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
     ctrllimited: str | None = keyword(LIMITED)
@@ -158,9 +152,9 @@ class Pid(TransmissionActuator):
     #: Range of the position error.
     posrange: Floats | None = numbers()
     #: Name of the reference site of a Cartesian transmission.
-    refsite: str | None = reference("site")
+    refsite: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
     #: Maximum rate of change of the control.
     slewmax: float | None = number()
     #: Range of the velocity.
@@ -171,7 +165,6 @@ class Pid(TransmissionActuator):
 class Damper(TransmissionActuator):
     """An active damper."""
 
-    tag: ClassVar[str] = "damper"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/damper", "default/damper")
     #: Whether the force is clamped: ``true``, ``false`` or ``auto``.
     forcelimited: str | None = keyword(LIMITED)
@@ -180,16 +173,15 @@ class Damper(TransmissionActuator):
     #: Velocity gain.
     kv: float | None = number()
     #: Name of the reference site of a Cartesian transmission.
-    refsite: str | None = reference("site")
+    refsite: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
 
 
 @node
 class Cylinder(TransmissionActuator):
     """A pneumatic or hydraulic cylinder."""
 
-    tag: ClassVar[str] = "cylinder"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/cylinder", "default/cylinder")
     #: Cylinder area.
     area: float | None = number()
@@ -204,9 +196,9 @@ class Cylinder(TransmissionActuator):
     #: Range of the force.
     forcerange: Floats | None = vec2()
     #: Name of the reference site of a Cartesian transmission.
-    refsite: str | None = reference("site")
+    refsite: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
     #: Time constant(s).
     timeconst: float | None = number()
 
@@ -215,7 +207,6 @@ class Cylinder(TransmissionActuator):
 class Muscle(TransmissionActuator):
     """A muscle."""
 
-    tag: ClassVar[str] = "muscle"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/muscle", "default/muscle")
     #: Whether the control is clamped: ``true``, ``false`` or ``auto``.
     ctrllimited: str | None = keyword(LIMITED)
@@ -249,7 +240,6 @@ class Muscle(TransmissionActuator):
 class DcMotor(TransmissionActuator):
     """A DC motor model."""
 
-    tag: ClassVar[str] = "dcmotor"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/dcmotor", "default/dcmotor")
     #: MJCF attribute ``cogging``; see the MuJoCo XML reference.
     cogging: str | None = text()
@@ -268,12 +258,12 @@ class DcMotor(TransmissionActuator):
     #: MJCF attribute ``nominal``; see the MuJoCo XML reference.
     nominal: str | None = text()
     #: Name of the reference site of a Cartesian transmission.
-    refsite: str | None = reference("site")
+    refsite: str | None = text()
     #: MJCF attribute ``resistance``; see the MuJoCo XML reference.
     resistance: str | None = text()
     #: MJCF attribute ``saturation``; see the MuJoCo XML reference.
     saturation: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
     #: MJCF attribute ``thermal``; see the MuJoCo XML reference.
     thermal: str | None = text()

@@ -12,7 +12,6 @@ from mjcf_model.nodes.fields import (
     keyword,
     number,
     numbers,
-    reference,
     text,
     vec2,
 )
@@ -30,7 +29,6 @@ __all__ = [
 class ActuatorPlugin(TransmissionActuator):
     """An actuator implemented by a plugin."""
 
-    tag: ClassVar[str] = "plugin"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/plugin",)
     #: Dimension of the activation state.
     actdim: int | None = integer()
@@ -51,18 +49,17 @@ class ActuatorPlugin(TransmissionActuator):
     #: Range of the force.
     forcerange: Floats | None = vec2()
     #: Name of the plugin instance.
-    instance: str | None = reference("plugin")
+    instance: str | None = text()
     #: Identifier of the plugin library.
     plugin: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
 
 
 @node
 class Orientation(ActuatorElement):
     """An orientation servo."""
 
-    tag: ClassVar[str] = "orientation"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/orientation", "default/orientation")
     #: Damping ratio (instead of ``kv``).
     dampratio: float | None = number()
@@ -73,25 +70,24 @@ class Orientation(ActuatorElement):
     #: Input mode of the controller.
     input: str | None = text()
     #: Name of the joint.
-    joint: str | None = reference("joint")
+    joint: str | None = text()
     #: Position gain.
     kp: float | None = number()
     #: Velocity gain.
     kv: float | None = number()
     #: Name of the reference site of a Cartesian transmission.
-    refsite: str | None = reference("site")
+    refsite: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
 
 
 @node
 class Adhesion(ActuatorElement):
     """An adhesion actuator."""
 
-    tag: ClassVar[str] = "adhesion"
     schema_keys: ClassVar[tuple[str, ...]] = ("actuator/adhesion", "default/adhesion")
     #: Name of the body.
-    body: str | None = reference("body")
+    body: str | None = text()
     #: Whether the force is clamped: ``true``, ``false`` or ``auto``.
     forcelimited: str | None = keyword(LIMITED)
     #: Range of the force.

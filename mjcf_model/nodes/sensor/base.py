@@ -21,7 +21,6 @@ __all__ = [
 class Sensor(TypedElement):
     """Section of sensors."""
 
-    tag: ClassVar[str] = "sensor"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor",)
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import ClassVar
 
 from mjcf_model.nodes.declaring import node
-from mjcf_model.nodes.fields import integer, reference, text
+from mjcf_model.nodes.fields import integer, text
 from mjcf_model.nodes.sensor.base import NoisySensor
 
 __all__ = [
@@ -38,7 +38,7 @@ class ObjectSensor(NoisySensor):
     """Sensors that read a frame of an object of any type."""
 
     #: Name of the referenced object.
-    objname: str | None = reference("@objtype")
+    objname: str | None = text()
     #: Type of the referenced object.
     objtype: str | None = text()
 
@@ -48,7 +48,7 @@ class FrameSensor(ObjectSensor):
     """Frame sensors that may report relative to another frame."""
 
     #: Name of the reference frame object.
-    refname: str | None = reference("@reftype")
+    refname: str | None = text()
     #: Type of the reference frame object.
     reftype: str | None = text()
 
@@ -57,7 +57,6 @@ class FrameSensor(ObjectSensor):
 class FramePos(FrameSensor):
     """Position of an object's frame."""
 
-    tag: ClassVar[str] = "framepos"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framepos",)
 
 
@@ -65,7 +64,6 @@ class FramePos(FrameSensor):
 class FrameQuat(FrameSensor):
     """Orientation of an object's frame."""
 
-    tag: ClassVar[str] = "framequat"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framequat",)
 
 
@@ -73,7 +71,6 @@ class FrameQuat(FrameSensor):
 class FrameXAxis(FrameSensor):
     """X axis of an object's frame."""
 
-    tag: ClassVar[str] = "framexaxis"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framexaxis",)
 
 
@@ -81,7 +78,6 @@ class FrameXAxis(FrameSensor):
 class FrameYAxis(FrameSensor):
     """Y axis of an object's frame."""
 
-    tag: ClassVar[str] = "frameyaxis"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/frameyaxis",)
 
 
@@ -89,7 +85,6 @@ class FrameYAxis(FrameSensor):
 class FrameZAxis(FrameSensor):
     """Z axis of an object's frame."""
 
-    tag: ClassVar[str] = "framezaxis"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framezaxis",)
 
 
@@ -97,7 +92,6 @@ class FrameZAxis(FrameSensor):
 class FrameLinVel(FrameSensor):
     """Linear velocity of an object's frame."""
 
-    tag: ClassVar[str] = "framelinvel"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framelinvel",)
 
 
@@ -105,7 +99,6 @@ class FrameLinVel(FrameSensor):
 class FrameAngVel(FrameSensor):
     """Angular velocity of an object's frame."""
 
-    tag: ClassVar[str] = "frameangvel"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/frameangvel",)
 
 
@@ -113,7 +106,6 @@ class FrameAngVel(FrameSensor):
 class FrameLinAcc(ObjectSensor):
     """Linear acceleration of an object's frame."""
 
-    tag: ClassVar[str] = "framelinacc"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/framelinacc",)
 
 
@@ -121,7 +113,6 @@ class FrameLinAcc(ObjectSensor):
 class FrameAngAcc(ObjectSensor):
     """Angular acceleration of an object's frame."""
 
-    tag: ClassVar[str] = "frameangacc"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/frameangacc",)
 
 
@@ -130,14 +121,13 @@ class SubtreeSensor(NoisySensor):
     """Sensors that read the subtree rooted at a body."""
 
     #: Name of the body.
-    body: str | None = reference("body")
+    body: str | None = text()
 
 
 @node
 class SubtreeCom(SubtreeSensor):
     """Centre of mass of a subtree."""
 
-    tag: ClassVar[str] = "subtreecom"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/subtreecom",)
 
 
@@ -145,7 +135,6 @@ class SubtreeCom(SubtreeSensor):
 class SubtreeLinVel(SubtreeSensor):
     """Linear velocity of a subtree's centre of mass."""
 
-    tag: ClassVar[str] = "subtreelinvel"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/subtreelinvel",)
 
 
@@ -153,7 +142,6 @@ class SubtreeLinVel(SubtreeSensor):
 class SubtreeAngMom(SubtreeSensor):
     """Angular momentum of a subtree."""
 
-    tag: ClassVar[str] = "subtreeangmom"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/subtreeangmom",)
 
 
@@ -161,12 +149,11 @@ class SubtreeAngMom(SubtreeSensor):
 class InsideSite(ObjectSensor):
     """Whether an object is inside a site's volume."""
 
-    tag: ClassVar[str] = "insidesite"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/insidesite",)
     #: Which objects count as enclosed.
     enclosed: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
 
 
 @node
@@ -174,20 +161,19 @@ class GeomPairSensor(NoisySensor):
     """Sensors that measure between two geoms or bodies."""
 
     #: Name of the first body.
-    body1: str | None = reference("body")
+    body1: str | None = text()
     #: Name of the second body.
-    body2: str | None = reference("body")
+    body2: str | None = text()
     #: Name of the first geom.
-    geom1: str | None = reference("geom")
+    geom1: str | None = text()
     #: Name of the second geom.
-    geom2: str | None = reference("geom")
+    geom2: str | None = text()
 
 
 @node
 class Distance(GeomPairSensor):
     """Distance between two geoms or bodies."""
 
-    tag: ClassVar[str] = "distance"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/distance",)
 
 
@@ -195,7 +181,6 @@ class Distance(GeomPairSensor):
 class Normal(GeomPairSensor):
     """Normal between two geoms or bodies."""
 
-    tag: ClassVar[str] = "normal"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/normal",)
 
 
@@ -203,7 +188,6 @@ class Normal(GeomPairSensor):
 class FromTo(GeomPairSensor):
     """Segment between the nearest points of two geoms or bodies."""
 
-    tag: ClassVar[str] = "fromto"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/fromto",)
 
 
@@ -211,7 +195,6 @@ class FromTo(GeomPairSensor):
 class ContactSensor(GeomPairSensor):
     """Contacts matching a filter."""
 
-    tag: ClassVar[str] = "contact"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/contact",)
     #: Data values.
     data: str | None = text()
@@ -220,8 +203,8 @@ class ContactSensor(GeomPairSensor):
     #: How contacts are reduced.
     reduce: str | None = text()
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
     #: Name of the root body of the first subtree.
-    subtree1: str | None = reference("body")
+    subtree1: str | None = text()
     #: Name of the root body of the second subtree.
-    subtree2: str | None = reference("body")
+    subtree2: str | None = text()

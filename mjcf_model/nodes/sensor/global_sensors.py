@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import ClassVar
 
 from mjcf_model.nodes.declaring import node
-from mjcf_model.nodes.fields import integer, number, reference, text
+from mjcf_model.nodes.fields import integer, number, text
 from mjcf_model.nodes.sensor.base import NoisySensor, SampledSensor, SensorElement
 
 __all__ = [
@@ -22,7 +22,6 @@ __all__ = [
 class EPotential(NoisySensor):
     """Potential energy."""
 
-    tag: ClassVar[str] = "e_potential"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/e_potential",)
 
 
@@ -30,7 +29,6 @@ class EPotential(NoisySensor):
 class EKinetic(NoisySensor):
     """Kinetic energy."""
 
-    tag: ClassVar[str] = "e_kinetic"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/e_kinetic",)
 
 
@@ -38,7 +36,6 @@ class EKinetic(NoisySensor):
 class Clock(NoisySensor):
     """Simulation time."""
 
-    tag: ClassVar[str] = "clock"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/clock",)
 
 
@@ -46,19 +43,17 @@ class Clock(NoisySensor):
 class Tactile(SampledSensor):
     """Tactile sensor over a mesh."""
 
-    tag: ClassVar[str] = "tactile"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tactile",)
     #: MJCF attribute ``geom``; see the MuJoCo XML reference.
-    geom: str | None = reference("geom")
+    geom: str | None = text()
     #: Name of the mesh asset.
-    mesh: str | None = reference("mesh")
+    mesh: str | None = text()
 
 
 @node
 class UserSensor(SensorElement):
     """A sensor computed by user callbacks."""
 
-    tag: ClassVar[str] = "user"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/user",)
     #: Data type of the user sensor.
     datatype: str | None = text()
@@ -69,7 +64,7 @@ class UserSensor(SensorElement):
     #: Standard deviation of noise (informational).
     noise: float | None = number()
     #: Name of the referenced object.
-    objname: str | None = reference("@objtype")
+    objname: str | None = text()
     #: Type of the referenced object.
     objtype: str | None = text()
 
@@ -78,17 +73,16 @@ class UserSensor(SensorElement):
 class SensorPlugin(SensorElement):
     """A sensor implemented by a plugin."""
 
-    tag: ClassVar[str] = "plugin"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/plugin",)
     #: Name of the plugin instance.
-    instance: str | None = reference("plugin")
+    instance: str | None = text()
     #: Name of the referenced object.
-    objname: str | None = reference("@objtype")
+    objname: str | None = text()
     #: Type of the referenced object.
     objtype: str | None = text()
     #: Identifier of the plugin library.
     plugin: str | None = text()
     #: Name of the reference frame object.
-    refname: str | None = reference("@reftype")
+    refname: str | None = text()
     #: Type of the reference frame object.
     reftype: str | None = text()

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import ClassVar
 
 from mjcf_model.nodes.declaring import node
-from mjcf_model.nodes.fields import reference, text
+from mjcf_model.nodes.fields import text
 from mjcf_model.nodes.sensor.base import NoisySensor
 
 __all__ = [
@@ -47,14 +47,13 @@ class SiteSensor(NoisySensor):
     """Sensors attached to a site."""
 
     #: Name of the site.
-    site: str | None = reference("site")
+    site: str | None = text()
 
 
 @node
 class Touch(SiteSensor):
     """Sum of normal contact forces in the site's volume."""
 
-    tag: ClassVar[str] = "touch"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/touch",)
 
 
@@ -62,7 +61,6 @@ class Touch(SiteSensor):
 class Accelerometer(SiteSensor):
     """Linear acceleration at a site."""
 
-    tag: ClassVar[str] = "accelerometer"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/accelerometer",)
 
 
@@ -70,7 +68,6 @@ class Accelerometer(SiteSensor):
 class Velocimeter(SiteSensor):
     """Linear velocity at a site."""
 
-    tag: ClassVar[str] = "velocimeter"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/velocimeter",)
 
 
@@ -78,7 +75,6 @@ class Velocimeter(SiteSensor):
 class Gyro(SiteSensor):
     """Angular velocity at a site."""
 
-    tag: ClassVar[str] = "gyro"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/gyro",)
 
 
@@ -86,7 +82,6 @@ class Gyro(SiteSensor):
 class Force(SiteSensor):
     """Interaction force at a site."""
 
-    tag: ClassVar[str] = "force"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/force",)
 
 
@@ -94,7 +89,6 @@ class Force(SiteSensor):
 class Torque(SiteSensor):
     """Interaction torque at a site."""
 
-    tag: ClassVar[str] = "torque"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/torque",)
 
 
@@ -102,7 +96,6 @@ class Torque(SiteSensor):
 class Magnetometer(SiteSensor):
     """Magnetic flux at a site."""
 
-    tag: ClassVar[str] = "magnetometer"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/magnetometer",)
 
 
@@ -110,20 +103,18 @@ class Magnetometer(SiteSensor):
 class CamProjection(SiteSensor):
     """Projection of a site onto a camera image."""
 
-    tag: ClassVar[str] = "camprojection"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/camprojection",)
     #: Name of the camera.
-    camera: str | None = reference("camera")
+    camera: str | None = text()
 
 
 @node
 class Rangefinder(SiteSensor):
     """Distance to the nearest surface along a ray."""
 
-    tag: ClassVar[str] = "rangefinder"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/rangefinder",)
     #: Name of the camera.
-    camera: str | None = reference("camera")
+    camera: str | None = text()
     #: Data values.
     data: str | None = text()
 
@@ -133,14 +124,13 @@ class JointSensor(NoisySensor):
     """Sensors that read a joint."""
 
     #: Name of the joint.
-    joint: str | None = reference("joint")
+    joint: str | None = text()
 
 
 @node
 class JointPos(JointSensor):
     """Joint position."""
 
-    tag: ClassVar[str] = "jointpos"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/jointpos",)
 
 
@@ -148,7 +138,6 @@ class JointPos(JointSensor):
 class JointVel(JointSensor):
     """Joint velocity."""
 
-    tag: ClassVar[str] = "jointvel"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/jointvel",)
 
 
@@ -157,14 +146,13 @@ class TendonSensor(NoisySensor):
     """Sensors that read a tendon."""
 
     #: Name of the tendon.
-    tendon: str | None = reference("tendon")
+    tendon: str | None = text()
 
 
 @node
 class TendonPos(TendonSensor):
     """Tendon length."""
 
-    tag: ClassVar[str] = "tendonpos"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tendonpos",)
 
 
@@ -172,7 +160,6 @@ class TendonPos(TendonSensor):
 class TendonVel(TendonSensor):
     """Tendon velocity."""
 
-    tag: ClassVar[str] = "tendonvel"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tendonvel",)
 
 
@@ -181,14 +168,13 @@ class ActuatorSensor(NoisySensor):
     """Sensors that read an actuator."""
 
     #: Name of the actuator.
-    actuator: str | None = reference("actuator")
+    actuator: str | None = text()
 
 
 @node
 class ActuatorPos(ActuatorSensor):
     """Actuator length."""
 
-    tag: ClassVar[str] = "actuatorpos"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/actuatorpos",)
 
 
@@ -196,7 +182,6 @@ class ActuatorPos(ActuatorSensor):
 class ActuatorVel(ActuatorSensor):
     """Actuator velocity."""
 
-    tag: ClassVar[str] = "actuatorvel"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/actuatorvel",)
 
 
@@ -204,7 +189,6 @@ class ActuatorVel(ActuatorSensor):
 class ActuatorFrc(ActuatorSensor):
     """Actuator force."""
 
-    tag: ClassVar[str] = "actuatorfrc"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/actuatorfrc",)
 
 
@@ -212,7 +196,6 @@ class ActuatorFrc(ActuatorSensor):
 class JointActuatorFrc(JointSensor):
     """Total actuator force at a joint."""
 
-    tag: ClassVar[str] = "jointactuatorfrc"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/jointactuatorfrc",)
 
 
@@ -220,7 +203,6 @@ class JointActuatorFrc(JointSensor):
 class TendonActuatorFrc(TendonSensor):
     """Total actuator force at a tendon."""
 
-    tag: ClassVar[str] = "tendonactuatorfrc"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tendonactuatorfrc",)
 
 
@@ -228,7 +210,6 @@ class TendonActuatorFrc(TendonSensor):
 class BallQuat(JointSensor):
     """Orientation of a ball joint."""
 
-    tag: ClassVar[str] = "ballquat"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/ballquat",)
 
 
@@ -236,7 +217,6 @@ class BallQuat(JointSensor):
 class BallAngVel(JointSensor):
     """Angular velocity of a ball joint."""
 
-    tag: ClassVar[str] = "ballangvel"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/ballangvel",)
 
 
@@ -244,7 +224,6 @@ class BallAngVel(JointSensor):
 class JointLimitPos(JointSensor):
     """Joint limit distance."""
 
-    tag: ClassVar[str] = "jointlimitpos"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/jointlimitpos",)
 
 
@@ -252,7 +231,6 @@ class JointLimitPos(JointSensor):
 class JointLimitVel(JointSensor):
     """Joint limit velocity."""
 
-    tag: ClassVar[str] = "jointlimitvel"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/jointlimitvel",)
 
 
@@ -260,7 +238,6 @@ class JointLimitVel(JointSensor):
 class JointLimitFrc(JointSensor):
     """Joint limit force."""
 
-    tag: ClassVar[str] = "jointlimitfrc"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/jointlimitfrc",)
 
 
@@ -268,7 +245,6 @@ class JointLimitFrc(JointSensor):
 class TendonLimitPos(TendonSensor):
     """Tendon limit distance."""
 
-    tag: ClassVar[str] = "tendonlimitpos"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tendonlimitpos",)
 
 
@@ -276,7 +252,6 @@ class TendonLimitPos(TendonSensor):
 class TendonLimitVel(TendonSensor):
     """Tendon limit velocity."""
 
-    tag: ClassVar[str] = "tendonlimitvel"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tendonlimitvel",)
 
 
@@ -284,5 +259,4 @@ class TendonLimitVel(TendonSensor):
 class TendonLimitFrc(TendonSensor):
     """Tendon limit force."""
 
-    tag: ClassVar[str] = "tendonlimitfrc"
     schema_keys: ClassVar[tuple[str, ...]] = ("sensor/tendonlimitfrc",)

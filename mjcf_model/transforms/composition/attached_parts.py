@@ -43,14 +43,7 @@ from collections.abc import Iterator, Sequence
 import attrs
 
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.nodes.base import (
-    AnyElement,
-    GenericElement,
-    Node,
-    TypedElement,
-    get_attribute,
-    with_attributes,
-)
+from mjcf_model.nodes.base import AnyElement, Element, Node, get_attribute, with_attributes
 from mjcf_model.nodes.body import Worldbody
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import SCHEMA, reference_namespace
@@ -232,7 +225,7 @@ def _kept_outside_the_tree(
     kept: dict[int, list[Node]] = {}
     for tag in _FILTERED:
         for index, section in enumerate(sections):
-            if not isinstance(section, (TypedElement, GenericElement)) or section.tag != tag:
+            if not isinstance(section, Element) or section.tag != tag:
                 continue
             children: list[Node] = []
             for node in section.elements:
@@ -292,7 +285,7 @@ def attached_part(
                 continue
             section = world
         elif index in kept:
-            assert isinstance(section, (TypedElement, GenericElement))
+            assert isinstance(section, Element)
             section = with_children(section, kept[index])
         result.append(section)
     return attrs.evolve(child, children=result)

@@ -18,9 +18,8 @@ from collections.abc import Sequence
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import (
     AnyElement,
-    GenericElement,
+    Element,
     Node,
-    TypedElement,
     attribute_items,
     get_attribute,
     with_attributes,
@@ -86,8 +85,8 @@ def merged_settings(defaults: Sequence[AnyElement]) -> list[Node]:
             merged.append(node)
         elif tag in first:
             earlier = merged[first[tag]]
-            assert isinstance(earlier, (TypedElement, GenericElement))
-            assert isinstance(node, (TypedElement, GenericElement))
+            assert isinstance(earlier, Element)
+            assert isinstance(node, Element)
             merged[first[tag]] = with_attributes(earlier, dict(attribute_items(node)))
         else:
             first[tag] = len(merged)
@@ -132,7 +131,7 @@ def classed(nodes: Sequence[Node], main: Default, section: str) -> list[Node]:
     settings = frozenset(e.tag for e in main.elements if e.tag != "default")
     result: list[Node] = []
     for node in nodes:
-        if isinstance(node, (TypedElement, GenericElement)):
+        if isinstance(node, Element):
             key = f"{section}/{node.tag}"
             if section == "body" and node.tag in ("body", "frame"):
                 node = _with_class(node, "childclass", main.dclass)

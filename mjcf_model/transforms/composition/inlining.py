@@ -66,14 +66,7 @@ from mjcf_model.errors import (
     MjcfLookupError,
     MjcfValueError,
 )
-from mjcf_model.nodes.base import (
-    AnyElement,
-    GenericElement,
-    Node,
-    TypedElement,
-    get_attribute,
-    with_attributes,
-)
+from mjcf_model.nodes.base import AnyElement, Element, Node, get_attribute, with_attributes
 from mjcf_model.nodes.body import Frame
 from mjcf_model.nodes.compiler import Compiler
 from mjcf_model.nodes.keyframe import Key, Keyframe
@@ -205,7 +198,7 @@ def _in_radians(model: Mujoco) -> Mujoco:
     compilers = [
         (index, with_attributes(section, {"angle": "radian"}))
         for index, section in enumerate(model.children)
-        if isinstance(section, (TypedElement, GenericElement)) and section.tag == "compiler"
+        if isinstance(section, Element) and section.tag == "compiler"
     ] or [(0, Compiler(angle="radian"))]
     target = attrs.evolve(model, children=[section for _, section in compilers])
     sections = list(in_conventions(model, target).children)
@@ -274,12 +267,12 @@ def _without_model_assets(model: Mujoco) -> Mujoco:
     """``model`` without asset ``<model>`` elements (and asset sections left empty by that)."""
     sections: list[Node] = []
     for section in model.children:
-        if isinstance(section, (TypedElement, GenericElement)) and section.tag == "asset":
+        if isinstance(section, Element) and section.tag == "asset":
             if not any(e.tag == "model" for e in section.elements):
                 sections.append(section)
                 continue
             kept = [n for n in section.children if getattr(n, "tag", None) != "model"]
-            if any(isinstance(n, (TypedElement, GenericElement)) for n in kept):
+            if any(isinstance(n, Element) for n in kept):
                 sections.append(with_children(section, kept))
             continue
         sections.append(section)
@@ -314,7 +307,7 @@ def _with_attached_keys(expanded: Mujoco, original: Mujoco) -> Mujoco:
     sections = list(expanded.children)
     for index in range(len(sections) - 1, -1, -1):
         section = sections[index]
-        if isinstance(section, (TypedElement, GenericElement)) and section.tag == "keyframe":
+        if isinstance(section, Element) and section.tag == "keyframe":
             sections[index] = with_children(section, [*section.children, *added])
             break
     else:

@@ -34,14 +34,7 @@ from collections.abc import Iterator, Sequence
 
 import attrs
 
-from mjcf_model.nodes.base import (
-    AnyElement,
-    GenericElement,
-    Node,
-    TypedElement,
-    get_attribute,
-    with_attributes,
-)
+from mjcf_model.nodes.base import AnyElement, Element, Node, get_attribute, with_attributes
 from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.transforms.composition.defaults import classed, merged_settings, sets_values
@@ -70,7 +63,7 @@ def _classed_world(nodes: Sequence[Node], main: Default) -> list[Node]:
     while True:
         pending, done, owner = stack[-1]
         for node in pending:
-            if isinstance(node, (TypedElement, GenericElement)) and node.tag in _TRANSPARENT:
+            if isinstance(node, Element) and node.tag in _TRANSPARENT:
                 stack.append((iter(classed(node.children, main, "body")), [], node))
                 break
             done.append(node)
@@ -125,7 +118,7 @@ def with_main_as_class(model: Mujoco, name: str) -> Mujoco:
             if not any(getattr(s, "tag", None) == "default" for s in sections):
                 sections.append(Default(children=[main]))
             continue
-        if isinstance(section, (TypedElement, GenericElement)):
+        if isinstance(section, Element):
             if tag == "worldbody":
                 section = with_children(section, _classed_world(section.children, main))
             elif tag in CLASSED_SECTIONS:

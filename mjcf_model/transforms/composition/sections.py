@@ -22,7 +22,7 @@ from collections.abc import Collection, Mapping, Sequence
 from pathlib import Path
 
 from mjcf_model.errors import MjcfDroppedSettingWarning, MjcfValueError
-from mjcf_model.nodes.base import AnyElement, GenericElement, Node, TypedElement, attribute_items
+from mjcf_model.nodes.base import AnyElement, Element, Node, attribute_items
 from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.nodes.root import Mujoco
@@ -65,7 +65,7 @@ def by_tag(model: Mujoco) -> dict[str, list[AnyElement]]:
     """The model's sections by tag, in order."""
     found: dict[str, list[AnyElement]] = {}
     for section in model.children:
-        if isinstance(section, (TypedElement, GenericElement)):
+        if isinstance(section, Element):
             found.setdefault(section.tag, []).append(section)
     return found
 
@@ -94,7 +94,7 @@ def _settings(sections: Sequence[Node]) -> dict[tuple[str, str], str]:
     """Every attribute the sections write, by (element path, attribute); later ones win."""
     found: dict[tuple[str, str], str] = {}
     for section in sections:
-        if not isinstance(section, (TypedElement, GenericElement)):
+        if not isinstance(section, Element):
             continue
         for element, _, ancestors in keyed_walk(section, "mujoco"):
             tags = "><".join([*(a.tag for a in ancestors), element.tag])
@@ -149,7 +149,7 @@ def merged_into(sections: list[Node], tag: str, nodes: list[Node]) -> None:
     """Append ``nodes`` to the last ``tag`` section, or add a new section at the end."""
     for index in range(len(sections) - 1, -1, -1):
         section = sections[index]
-        if isinstance(section, (TypedElement, GenericElement)) and section.tag == tag:
+        if isinstance(section, Element) and section.tag == tag:
             sections[index] = with_children(section, [*section.children, *nodes])
             return
     sections.append(CLASS_BY_KEY[tag](children=nodes))
@@ -161,7 +161,7 @@ def with_keys(sections: list[Node], keys: list[Node]) -> list[Node]:
     if not found:
         return [*sections, Keyframe(children=keys)] if keys else sections
     first = sections[found[0]]
-    assert isinstance(first, (TypedElement, GenericElement))
+    assert isinstance(first, Element)
     kept = [c for i, c in enumerate(sections) if i == found[0] or i not in found]
     kept[found[0]] = with_children(first, keys)
     return kept

@@ -28,8 +28,8 @@ from mjcf_model.nodes.base import (
     AnyElement,
     AttributeMap,
     Comment,
+    Element,
     GenericElement,
-    TypedElement,
     attribute_items,
     build_node,
     field_table,
@@ -46,7 +46,7 @@ MARK = "\ue000"
 #: How deep a plan follows a tree; deeper trees are prefixed the ordinary way.
 _DEPTH = 200
 
-_E = TypeVar("_E", bound=TypedElement | GenericElement)
+_E = TypeVar("_E", bound=Element)
 
 #: Prefixing: the tree and the prefix in, the prefixed tree out.
 Prefixer = Callable[[AnyElement, str], AnyElement]
@@ -201,8 +201,8 @@ def _traced(before: AnyElement, after: AnyElement, by_name: bool, depth: int) ->
             if child != marked:
                 raise _Untraceable
             continue
-        assert isinstance(child, (TypedElement, GenericElement))
-        assert isinstance(marked, (TypedElement, GenericElement))
+        assert isinstance(child, Element)
+        assert isinstance(marked, Element)
         step = _traced(child, marked, by_name, depth + 1)
         if step[0] or step[1]:
             steps.append((index, step))
@@ -245,7 +245,7 @@ def _applied(element: _E, step: _Step, prefix: str, keep: Callable[[str], bool] 
         children = list(element.children)
         for index, inner in steps:
             child = children[index]
-            assert isinstance(child, (TypedElement, GenericElement))
+            assert isinstance(child, Element)
             children[index] = _applied(child, inner, prefix, keep)
         fields["children"] = tuple(children)
     return build_node(type(element), fields, element) if fields else element

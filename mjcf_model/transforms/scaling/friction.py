@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement, get_attribute
+from mjcf_model.nodes.base import AnyElement, Element, get_attribute
 from mjcf_model.nodes.contact import Pair
 from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.deformable import FlexContact
@@ -47,8 +47,6 @@ _FIRST_LENGTH = {"geom": 1, "pair": 2, "flex": 1}
 _DEFAULTS: dict[str, type[Geom] | type[Pair]] = {"geom": Geom, "pair": Pair}
 #: The schema keys of the elements whose friction MuJoCo completes from its defaults.
 _MEMBERS = {"body/geom": "geom", "contact/pair": "pair"}
-#: Either kind of element.
-_ELEMENTS = (TypedElement, GenericElement)
 #: The sections a new ``<default>`` is written after.
 _HEAD = frozenset({"compiler", "option", "size", "visual", "statistic", "extension", "custom"})
 
@@ -158,7 +156,7 @@ def with_friction_defaults(model: AnyElement, context: ScaleContext) -> AnyEleme
     if not written:
         return model
     children = list(model.children)
-    elements = [(i, c) for i, c in enumerate(children) if isinstance(c, _ELEMENTS)]
+    elements = [(i, c) for i, c in enumerate(children) if isinstance(c, Element)]
     for index, child in elements:
         if child.tag == "default":
             children[index] = with_children(child, [*written, *child.children])
