@@ -99,8 +99,8 @@ def spec_physical_variant(spec: Any, rng: np.random.Generator) -> Any:
     geoms = [geom for body in bodies for geom in body.geoms]
     weighed = [body for body in bodies if body.explicitinertial]
     rgba, friction, mass = _physical_draws(rng, len(geoms), len(weighed))
-    for geom, colour, slide in zip(geoms, rgba, friction, strict=True):
-        geom.rgba = colour
+    for geom, color, slide in zip(geoms, rgba, friction, strict=True):
+        geom.rgba = color
         geom.friction = [slide, 0.005, 0.0001]
     for body, factor in zip(weighed, mass, strict=True):
         body.mass = body.mass * factor
@@ -128,7 +128,7 @@ def our_physical_variant(model: Any, rng: np.random.Generator) -> Any:
     geoms = [c for b in bodies for c in b.children if getattr(c, "tag", None) == "geom"]
     weighed = [b for b in bodies if _inertial(b) is not None]
     rgba, friction, mass = _physical_draws(rng, len(geoms), len(weighed))
-    colours = {
+    colors = {
         id(g): (tuple(c), (float(f), 0.005, 0.0001))
         for g, c, f in zip(geoms, rgba, friction, strict=True)
     }
@@ -139,8 +139,8 @@ def our_physical_variant(model: Any, rng: np.random.Generator) -> Any:
         for child in body.children:
             tag = getattr(child, "tag", None)
             if tag == "geom":
-                colour, slide = colours[id(child)]
-                child = with_attributes(child, {"rgba": colour, "friction": slide})
+                color, slide = colors[id(child)]
+                child = with_attributes(child, {"rgba": color, "friction": slide})
             elif tag == "inertial" and id(body) in factors:
                 mass_value = float(get_attribute(child, "mass")) * factors[id(body)]
                 child = with_attributes(child, {"mass": mass_value})

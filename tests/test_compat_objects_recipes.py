@@ -289,12 +289,12 @@ def test_a_cone_refuses_what_is_not_a_material() -> None:
         ours.ConeObject("c", material="steel_mat")
 
 
-def test_a_numpy_pot_colour_works_here() -> None:
+def test_a_numpy_pot_color_works_here() -> None:
     """A numpy colour gives the tuple's pot (robosuite reads its truth value: ``ValueError``)."""
-    colour = np.array([1.0, 1.0, 0.0, 1.0])
+    color = np.array([1.0, 1.0, 0.0, 1.0])
     with pytest.raises(ValueError, match="truth value"):
-        rs.PotWithHandlesObject("pot", rgba_body=colour, use_texture=False)
-    mine = ours.PotWithHandlesObject("pot", rgba_body=colour, use_texture=False)
+        rs.PotWithHandlesObject("pot", rgba_body=color, use_texture=False)
+    mine = ours.PotWithHandlesObject("pot", rgba_body=color, use_texture=False)
     same = ours.PotWithHandlesObject("pot", rgba_body=(1.0, 1.0, 0.0, 1.0), use_texture=False)
     assert text_of(mine.get_obj()) == text_of(same.get_obj())
 

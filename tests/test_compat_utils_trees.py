@@ -71,7 +71,7 @@ scales = (
     | st.lists(st.floats(0.1, 10), min_size=3, max_size=3)
     | st.lists(st.integers(1, 3), min_size=3, max_size=3).map(np.array)
 )
-colours = st.lists(st.floats(0, 1), min_size=4, max_size=4) | st.lists(
+colors = st.lists(st.floats(0, 1), min_size=4, max_size=4) | st.lists(
     st.floats(0, 1), min_size=4, max_size=4
 ).map(np.array)
 
@@ -345,12 +345,12 @@ def test_prefixed_attributes_of_a_typed_model_is_robosuites_add_prefix(
 @given(
     messy_trees(aim=("geom", "material", "asset")),
     st.floats(0, 1) | st.integers(0, 1),
-    colours,
+    colors,
     name_sets,
     prefixes,
     st.data(),
 )
-def test_colour_functions_match_robosuite_on_generated_trees(
+def test_color_functions_match_robosuite_on_generated_trees(
     tree: tuple[ET.Element, tuple[int, ...]],
     alpha: float,
     rgba: Any,

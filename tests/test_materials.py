@@ -454,7 +454,7 @@ def test_robosuite_corpus_is_covered() -> None:
 
 @settings(max_examples=30, deadline=None)
 @given(models())
-def test_recoloured_drawn_models_compile_with_only_collision_colours_changed(
+def test_recolored_drawn_models_compile_with_only_collision_colors_changed(
     model: Mujoco,
 ) -> None:
     """MuJoCo compiles every recoloured drawn model; only geoms' colours and materials change.
@@ -468,16 +468,16 @@ def test_recoloured_drawn_models_compile_with_only_collision_colours_changed(
     compiled array is unchanged.
     """
     rgba = (1.0, 0.0, 0.0, 1.0)
-    colour = np.float32(rgba)
+    color = np.float32(rgba)
     before = mujoco.MjModel.from_xml_string(dumps(model))
     after = mujoco.MjModel.from_xml_string(dumps(recolored_collision_geoms(model, rgba)))
     for index, group in enumerate(before.geom_group):
-        painted = (after.geom_rgba[index] == colour).all() and after.geom_matid[index] == -1
+        painted = (after.geom_rgba[index] == color).all() and after.geom_matid[index] == -1
         if group == 0:
             assert painted
         else:
             kept = (after.geom_rgba[index] == before.geom_rgba[index]).all() and (
                 after.geom_matid[index] == before.geom_matid[index]
             )
-            assert kept or (after.geom_rgba[index] == colour).all()
+            assert kept or (after.geom_rgba[index] == color).all()
     assert model_differences(before, after, ignore={"geom_rgba", "geom_matid"}) == []

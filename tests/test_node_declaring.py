@@ -92,7 +92,7 @@ def test_building_an_unknown_field_raises_like_the_constructor() -> None:
     with pytest.raises(TypeError, match="Geom has no field 'colour'"):
         build_node(Geom, {"colour": "red"})
     with pytest.raises(TypeError):
-        Geom(colour="red")  # type: ignore[call-arg]
+        Geom(color="red")  # type: ignore[call-arg]
 
 
 def test_building_converts_and_validates_like_the_constructor() -> None:

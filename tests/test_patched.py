@@ -92,23 +92,23 @@ def test_patched_corpus_variants_are_compiled_variants(path: Path) -> None:
     assert all(any(why in reason for why in allowed) for reason in reasons), reasons
 
 
-def _recoloured(model: Mujoco, seed: int) -> Mujoco:
+def _recolored(model: Mujoco, seed: int) -> Mujoco:
     """``model`` with only its geoms' written colours drawn again."""
     rng = np.random.default_rng(seed)
 
-    def recolour(element: AnyElement, key: str | None, ancestors: Any) -> AnyElement:
+    def recolor(element: AnyElement, key: str | None, ancestors: Any) -> AnyElement:
         if key != "body/geom" or get_attribute(element, "rgba") is None:
             return element
         return with_attributes(element, {"rgba": _changed_value("rgba", (0,) * 4, rng)})
 
-    return map_elements(recolour, model)
+    return map_elements(recolor, model)
 
 
 def _patched_in_turn(before: Mujoco, seed: int) -> None:
     """Every value changed, then only colours, then nothing: each patched into one scratch model."""
     model = compiled(before)
     scratch = copy.copy(model)
-    for after in (variant(before, seed)[0], _recoloured(before, seed + 1), before):
+    for after in (variant(before, seed)[0], _recolored(before, seed + 1), before):
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", MjcfRecompiledWarning)
             result = patched(model, before, after, into=scratch)
@@ -133,7 +133,7 @@ def test_corpus_variants_patched_in_turn_into_one_model_are_compiled_variants(pa
     _patched_in_turn(load(path, inline_includes=True), 7)
 
 
-def test_a_model_with_a_replicated_geom_patches_colours_elsewhere() -> None:
+def test_a_model_with_a_replicated_geom_patches_colors_elsewhere() -> None:
     """The copy that numbers the rows labels nothing a ``<replicate>`` copies (found by CI).
 
     MuJoCo names a replicated ``g1`` ``g10`` and ``g11``: with a dozen geoms, labels clashed.
@@ -145,7 +145,7 @@ def test_a_model_with_a_replicated_geom_patches_colours_elsewhere() -> None:
         '</body><body name="b"><inertial pos="0 0 0" mass="1" diaginertia="1 1 1"/>'
         f"{geoms}</body></worldbody></mujoco>"
     )
-    after = _recoloured(before, 0)  # colours: patched on every MuJoCo release
+    after = _recolored(before, 0)  # colours: patched on every MuJoCo release
     result, expected, reasons = _patched_and_expected(before, after)
     assert reasons == [] and model_differences(result, expected) == []
 

@@ -19,7 +19,7 @@ SCENE = """<mujoco model="scene">
     <light pos="0 0 3" dir="0 0 -1"/>
     <camera name="top" pos="0 0 2" xyaxes="1 0 0 0 1 0"/>
     <geom name="floor" type="plane" size="1 1 0.1" rgba="0.9 0.9 0.9 1"/>
-    <body name="ball" pos="0 0 0.2"><geom type="sphere" size="0.2" rgba="{colour}"/></body>
+    <body name="ball" pos="0 0 0.2"><geom type="sphere" size="0.2" rgba="{color}"/></body>
   </worldbody>
 </mujoco>
 """
@@ -38,9 +38,9 @@ def render(
     )
 
 
-def _scene(folder: Path, name: str, colour: str) -> Path:
+def _scene(folder: Path, name: str, color: str) -> Path:
     path = folder / f"{name}.xml"
-    path.write_text(SCENE.format(colour=colour))
+    path.write_text(SCENE.format(color=color))
     return path
 
 

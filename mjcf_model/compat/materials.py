@@ -26,6 +26,7 @@ from typing import Any, Generic, NamedTuple, TypeVar, cast
 import attrs
 
 from mjcf_model.compat.assets import assets_root
+from mjcf_model.compat.geom_roles import geom_role, with_collision_color
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.asset import Material, Texture
 from mjcf_model.nodes.base import (
@@ -38,8 +39,6 @@ from mjcf_model.nodes.base import (
     with_attributes,
 )
 from mjcf_model.nodes.tendon import TendonGeom
-from mjcf_model.transforms.recolouring import with_collision_colour
-from mjcf_model.tree.queries import geom_role
 from mjcf_model.tree.traversal import map_tree
 from mjcf_model.values import Floats, Value, format_value, plain_value, to_floats, to_vec4
 
@@ -376,10 +375,10 @@ def recolored_collision_geoms(
         ((0.0, 0.5, 0.0, 1.0), None, True)
 
     """
-    colour: Value | None = to_vec4(rgba)
-    assert colour is not None, "to_vec4 refuses None: rgba is required"
+    color: Value | None = to_vec4(rgba)
+    assert color is not None, "to_vec4 refuses None: rgba is required"
 
     def left_alone(element: AnyElement) -> bool:
         return isinstance(element, TendonGeom) or (exclude is not None and exclude(element))
 
-    return with_collision_colour(node, lambda: colour, left_alone)
+    return with_collision_color(node, lambda: color, left_alone)

@@ -18,7 +18,7 @@ import numpy.typing as npt
 __all__ = ["png_bytes"]
 
 #: PNG's colour type for each number of channels.
-_COLOUR_TYPES = {3: 2, 4: 6}
+_COLOR_TYPES = {3: 2, 4: 6}
 
 
 def png_bytes(pixels: npt.NDArray[Any]) -> bytes:
@@ -29,10 +29,10 @@ def png_bytes(pixels: npt.NDArray[Any]) -> bytes:
 
     """
     image = np.ascontiguousarray(pixels, dtype=np.uint8)
-    if image.ndim != 3 or image.shape[2] not in _COLOUR_TYPES:
+    if image.ndim != 3 or image.shape[2] not in _COLOR_TYPES:
         raise ValueError(f"expected (height, width, 3 or 4) pixels, found shape {pixels.shape}")
     height, width, channels = image.shape
-    header = struct.pack(">IIBBBBB", width, height, 8, _COLOUR_TYPES[channels], 0, 0, 0)
+    header = struct.pack(">IIBBBBB", width, height, 8, _COLOR_TYPES[channels], 0, 0, 0)
     rows = b"".join(b"\x00" + row.tobytes() for row in image)  # filter 0: each row as it is
     return (
         b"\x89PNG\r\n\x1a\n"

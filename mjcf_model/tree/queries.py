@@ -1,4 +1,4 @@
-"""Looking things up in a node tree: find elements and parents, and a geom's role.
+"""Looking things up in a node tree: find elements and parents.
 
 All queries are read-only: they return nodes of the tree itself (so ``is`` works
 on the results), in document order.
@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import operator
 from collections.abc import Callable, Collection, Iterator
-from typing import Literal, cast
+from typing import cast
 
 from mjcf_model.nodes.base import (
     AnyElement,
@@ -28,16 +28,13 @@ from mjcf_model.nodes.base import (
     GenericElement,
     Node,
     TypedElement,
-    attribute_text,
     get_attribute,
 )
 from mjcf_model.tree.traversal import walk
 from mjcf_model.values import Value, format_value, plain_value
 
 __all__ = [
-    "GeomRole",
     "attribute_values",
-    "geom_role",
     "find",
     "find_all",
     "parent_of",
@@ -201,30 +198,3 @@ def parent_of(root: Node, node: Node) -> AnyElement | None:
         if any(child is node for child in element.children):
             return element
     return None
-
-
-#: A geom's role in robosuite's convention, which the library follows.
-GeomRole = Literal["collision", "visual"]
-#: The categories of the two roles.
-_ROLE_CATEGORIES = {"collision": "contact_geoms", "visual": "visual_geoms"}
-
-
-def geom_role(element: AnyElement) -> GeomRole | None:
-    """``"collision"`` for a geom in group 0 or none, ``"visual"`` in group 1, else ``None``.
-
-    robosuite's convention (MuJoCo gives groups no meaning), which recolouring,
-    materials and categories follow; the group is compared as written text, so
-    ``group="1.0"`` has no role, as in robosuite.
-
-    Examples:
-        >>> from mjcf_model import Geom, Site
-        >>> geom_role(Geom()), geom_role(Geom(group=1)), geom_role(Geom(group=3)), geom_role(Site())
-        ('collision', 'visual', None, None)
-
-    """
-    if element.tag != "geom":
-        return None
-    group = attribute_text(element, "group")
-    if group is None or group == "0":
-        return "collision"
-    return "visual" if group == "1" else None

@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from mjcf_model.compat.geom_roles import with_collision_color
 from mjcf_model.compat.materials import DEFAULT_MATERIAL, with_material
 from mjcf_model.compat.materials import CustomMaterial as FrozenMaterial
 from mjcf_model.compat.mjcf_utils.builders import new_element
@@ -28,7 +29,6 @@ from mjcf_model.compat.mjcf_utils.naming import already_prefixed
 from mjcf_model.compat.mjcf_utils.text import array_to_string, parse_numbers, xml_path_completion
 from mjcf_model.files.png import png_bytes
 from mjcf_model.nodes.base import AnyElement, Element, Node
-from mjcf_model.transforms.recolouring import with_collision_colour
 from mjcf_model.tree.paths import edited_at
 
 __all__ = [
@@ -184,7 +184,7 @@ def recolored(node: Node, rgba: Any, exclude: Callable[[AnyElement], Any] | None
     """
     if not isinstance(node, Element):
         return node
-    return with_collision_colour(node, lambda: array_to_string(rgba), exclude)
+    return with_collision_color(node, lambda: array_to_string(rgba), exclude)
 
 
 def recolor_collision_geoms(

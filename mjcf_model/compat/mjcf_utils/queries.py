@@ -11,6 +11,7 @@ from typing import Any
 
 import attrs
 
+from mjcf_model.compat.geom_roles import geom_role
 from mjcf_model.compat.mjcf_utils.constants import SENSOR_TYPES
 from mjcf_model.compat.mjcf_utils.etree_sync import (
     attribute,
@@ -21,7 +22,7 @@ from mjcf_model.compat.mjcf_utils.etree_sync import (
     shallow_node,
 )
 from mjcf_model.nodes.base import AnyElement, Element, Node
-from mjcf_model.tree.queries import find_all, geom_role, parent_of
+from mjcf_model.tree.queries import find_all, parent_of
 from mjcf_model.tree.traversal import walk
 
 __all__ = [
@@ -50,7 +51,7 @@ def filter_key(
     """The category robosuite gives ``node`` under ``parent`` (``"joints"``...), or ``None``.
 
     Any child of ``<actuator>`` (comments too) is ``"actuators"``; a geom is contact or
-    visual by its :func:`~mjcf_model.tree.queries.geom_role`. A sensor is an element
+    visual by its :func:`~mjcf_model.compat.geom_roles.geom_role`. A sensor is an element
     whose tag is in ``sensor_tags`` (robosuite's list), or with ``None`` any child of
     ``<sensor>`` (the newer sensors too).
     """

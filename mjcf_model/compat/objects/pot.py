@@ -27,7 +27,7 @@ from mjcf_model.compat.objects.recipes import (
 __all__ = ["PotWithHandlesObject"]
 
 
-def _colour(given: Any, default: list[float]) -> Any:
+def _color(given: Any, default: list[float]) -> Any:
     """A given colour as an array (robosuite's), or ``default`` for none (or an empty one)."""
     return default if given is None or len(given) == 0 else np.array(given)
 
@@ -82,9 +82,9 @@ class PotWithHandlesObject(CompositeObject):
         self.handle_friction = handle_friction
         self.density = density
         self.use_texture = use_texture
-        self.rgba_body = _colour(rgba_body, RED)
-        self.rgba_handle_0 = _colour(rgba_handle_0, GREEN)
-        self.rgba_handle_1 = _colour(rgba_handle_1, BLUE)
+        self.rgba_body = _color(rgba_body, RED)
+        self.rgba_handle_0 = _color(rgba_handle_0, GREEN)
+        self.rgba_handle_1 = _color(rgba_handle_1, BLUE)
         self.solid_handle = solid_handle
         self._handles: tuple[list[str], list[str]] = ([], [])
         self.pot_base = ["base"]
@@ -114,9 +114,9 @@ class PotWithHandlesObject(CompositeObject):
             add_geom(arguments, f"body{i}", "box", (x, y, 0), wall, turn, **body)
         height = half[2] - radius
         sites: list[dict[str, Any]] = []
-        colours = (self.rgba_handle_0, self.rgba_handle_1)
+        colors = (self.rgba_handle_0, self.rgba_handle_1)
         for i, (names, side, rgba) in enumerate(
-            zip(self._handles, (1.0, -1.0), colours, strict=True)
+            zip(self._handles, (1.0, -1.0), colors, strict=True)
         ):
             names.clear()
             centre = np.array((0, side * (half[1] + length), height))

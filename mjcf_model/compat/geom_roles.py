@@ -1,0 +1,82 @@
+"""robosuite's geom roles, and recoloring by role.
+
+MuJoCo gives geom groups no meaning; robosuite reads group 0 (or none) as a collision
+geom and group 1 as a visual one. Its materials, categories and recoloring follow that
+convention, and so does this module; the core library does not.
+
+>>> from mjcf_model import Body, Geom
+>>> body = Body(children=[Geom(name="c"), Geom(name="v", group=1)])
+>>> [geom_role(g) for g in body.geoms]
+['collision', 'visual']
+>>> with_collision_color(body, lambda: (0.5, 0.0, 0.0, 1.0)).geoms[0].rgba
+(0.5, 0.0, 0.0, 1.0)
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any, Literal, TypeVar, cast
+
+from mjcf_model.nodes.base import AnyElement, Element, Node, attribute_text, with_attributes
+from mjcf_model.tree.traversal import map_tree
+from mjcf_model.values import Value
+
+__all__ = ["GeomRole", "geom_role", "with_collision_color"]
+
+_E = TypeVar("_E", bound=Element)
+
+#: A geom's role in robosuite's convention.
+GeomRole = Literal["collision", "visual"]
+
+
+def geom_role(element: AnyElement) -> GeomRole | None:
+    """``"collision"`` for a geom in group 0 or none, ``"visual"`` in group 1, else ``None``.
+
+    The group is compared as written text, so ``group="1.0"`` has no role, as in
+    robosuite.
+
+    Examples:
+        >>> from mjcf_model import Geom, Site
+        >>> geom_role(Geom()), geom_role(Geom(group=1)), geom_role(Geom(group=3)), geom_role(Site())
+        ('collision', 'visual', None, None)
+
+    """
+    if element.tag != "geom":
+        return None
+    group = attribute_text(element, "group")
+    if group is None or group == "0":
+        return "collision"
+    return "visual" if group == "1" else None
+
+
+def with_collision_color(
+    node: _E, color: Callable[[], Value], exclude: Callable[[AnyElement], Any] | None = None
+) -> _E:
+    """Paint every collision geom not excluded ``color()`` and remove its ``material``.
+
+    Collision geoms are those :func:`geom_role` says so of; unchanged subtrees are the
+    input's own. ``color`` is called once, at the first such geom (never when there is
+    none), so its value may be text or numbers, as the caller writes colours.
+
+    Examples:
+        >>> from mjcf_model import Body, Geom
+        >>> body = Body(children=[Geom(name="c"), Geom(name="v", group=1)])
+        >>> new = with_collision_color(body, lambda: "1 0 0 1")
+        >>> new.geoms[0].rgba, new.geoms[1] is body.geoms[1]
+        ((1.0, 0.0, 0.0, 1.0), True)
+
+    """
+    made: list[Value] = []
+
+    def visit(current: Node) -> Node:
+        if (
+            isinstance(current, Element)
+            and geom_role(current) == "collision"
+            and (exclude is None or not exclude(current))
+        ):
+            if not made:
+                made.append(color())
+            return with_attributes(current, {"rgba": made[0], "material": None})
+        return current
+
+    return cast(_E, map_tree(visit, node))
