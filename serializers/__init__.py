@@ -9,6 +9,7 @@
 True
 """
 
+from serializers.collector import collector_paused
 from serializers.dicts import from_dict, to_dict
 from serializers.dumping import dump, dumps
 from serializers.etree import from_etree, to_etree
@@ -16,6 +17,7 @@ from serializers.exporting import export
 from serializers.loading import load, loads
 
 __all__ = [
+    "collector_paused",
     "dump",
     "dumps",
     "export",

@@ -26,7 +26,6 @@ from mjcf_model.nodes.base import AnyElement, Comment, Element
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tree.traversal import with_children
-from serializers.collector import collector_paused
 from serializers.etree import from_etree
 from serializers.includes import (
     STRING_FILENAME,
@@ -72,15 +71,9 @@ def _read(data: str | bytes, filename: str, session: Session) -> Mujoco:
 
     Included files are read one after another from an explicit stack, not by
     recursion, so an include chain as long as MuJoCo follows (it has no limit)
-    is read too. The garbage collector is paused meanwhile (see
-    :mod:`serializers.collector`).
+    is read too. The garbage collector is left alone: a caller who reads big models
+    while holding others can pause it (:func:`serializers.collector_paused`).
     """
-    with collector_paused():
-        return _read_documents(data, filename, session)
-
-
-def _read_documents(data: str | bytes, filename: str, session: Session) -> Mujoco:
-    """:func:`_read` itself."""
     stack = [_parse(data, filename, session)]
     reading = {path: 0 for path in session.include_chain} if stack[0].includes else {}
     origins: dict[int, tuple[AnyElement, Path]] = {}
