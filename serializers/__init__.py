@@ -10,7 +10,7 @@ True
 """
 
 from serializers.collector import collector_paused
-from serializers.dicts import from_dict, to_dict
+from serializers.dicts import from_dict, make_converter, to_dict
 from serializers.dumping import dump, dumps
 from serializers.etree import from_etree, to_etree
 from serializers.exporting import export
@@ -25,6 +25,7 @@ __all__ = [
     "from_etree",
     "load",
     "loads",
+    "make_converter",
     "to_dict",
     "to_etree",
 ]

@@ -8,6 +8,11 @@ result passes ``json.dumps(..., allow_nan=False)``; an
 :class:`~mjcf_model.values.Unparsed` value becomes ``{"_unparsed": text}``.
 Both directions walk the tree with an explicit stack: any depth converts.
 
+The converter is a value the caller may own: :func:`make_converter` gives a new one
+(its hooks yours to change, nobody else's), and ``to_dict``/``from_dict`` take it as
+``converter=``. Without it they use a default one, built on first use and built again
+when more node classes have been declared since.
+
 >>> from mjcf_model import Geom
 >>> to_dict(Geom(name="g", size=[0.1]))
 {'name': 'g', 'size': [0.1], '_node': 'Geom'}
@@ -29,17 +34,13 @@ from cattrs.strategies import configure_tagged_union, include_subclasses
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AttributeMap, Element, Node, TypedElement
 from mjcf_model.nodes.building import build_node
+from mjcf_model.nodes.declaring import declared_count
 from mjcf_model.nodes.layout import Layout
 from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import Floats, Unparsed
 from serializers.dict_codec import UNPARSED, Codec, built_directly, is_unparsed, union_members
 
-__all__ = ["converter", "from_dict", "to_dict"]
-
-#: The converter behind :func:`to_dict` and :func:`from_dict`, built on first use
-#: (``serializers.dicts.converter``): configuring the union over every node class
-#: takes longer than importing the whole library, and most programs never need it.
-converter: cattrs.Converter
+__all__ = ["NodeConverter", "default_converter", "from_dict", "make_converter", "to_dict"]
 
 
 def _json_float(value: float) -> float | str:
@@ -65,37 +66,79 @@ def _union(cl: Any, conv: cattrs.Converter) -> None:
     configure_tagged_union(cl, conv, tag_name="_node")
 
 
-def _built_converter() -> cattrs.Converter:
-    return _converter_and_union()[0]
+class NodeConverter(cattrs.Converter):
+    """A cattrs converter configured for node classes (made by :func:`make_converter`).
+
+    It carries the node classes of its ``"_node"`` union and the per-class plans
+    ``to_dict`` and ``from_dict`` read from its hooks, made on first use: register
+    hooks before the first conversion.
+    """
+
+    #: The classes of the ``"_node"`` union, as they were when the converter was made.
+    node_classes: tuple[type, ...]
+    #: The per-class plans read from the converter's hooks, made on first use.
+    codec: Codec | None
 
 
-@functools.cache
-def _converter_and_union() -> tuple[cattrs.Converter, tuple[type, ...]]:
-    """The converter, and the classes of its union of node classes (``"_node"`` tags)."""
-    built = cattrs.Converter(omit_if_default=True, forbid_extra_keys=True)
-    built.register_unstructure_hook(float, _unstructure_float)
-    built.register_unstructure_hook_func(lambda t: t == Floats, _unstructure_floats)
-    built.register_structure_hook_func(
+def make_converter() -> NodeConverter:
+    """A new converter for every node class declared so far, owned by the caller.
+
+    Examples:
+        >>> from mjcf_model import Site
+        >>> mine = make_converter()
+        >>> mine.register_unstructure_hook(str, str.upper)
+        >>> to_dict(Site(name="tip"), converter=mine), to_dict(Site(name="tip"))
+        ({'name': 'TIP', '_node': 'Site'}, {'name': 'tip', '_node': 'Site'})
+
+    """
+    made = NodeConverter(omit_if_default=True, forbid_extra_keys=True)
+    made.register_unstructure_hook(float, _unstructure_float)
+    made.register_unstructure_hook_func(lambda t: t == Floats, _unstructure_floats)
+    made.register_structure_hook_func(
         lambda t: t == Floats, lambda value, _: tuple(map(float, value))
     )
-    built.register_unstructure_hook(AttributeMap, dict)
-    built.register_structure_hook(AttributeMap, lambda value, _: AttributeMap(value))
+    made.register_unstructure_hook(AttributeMap, dict)
+    made.register_structure_hook(AttributeMap, lambda value, _: AttributeMap(value))
     # A layout (how a loaded element was written) is not part of the value: to_dict drops it.
-    built.register_unstructure_hook(Layout, lambda _layout: None)
+    made.register_unstructure_hook(Layout, lambda _layout: None)
     members = union_members()
-    include_subclasses(Node, built, subclasses=members[1:], union_strategy=_union)
-    return built, members
+    include_subclasses(Node, made, subclasses=members[1:], union_strategy=_union)
+    made.node_classes = members
+    made.codec = None
+    return made
 
 
-def __getattr__(name: str) -> Any:
-    if name == "converter":
-        return _built_converter()
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+@functools.lru_cache(maxsize=1)
+def _default_for(declared: int) -> NodeConverter:
+    """The default converter while ``declared`` node classes exist."""
+    return make_converter()
 
 
-@functools.cache
-def _codec() -> Codec:
-    return Codec(*_converter_and_union())
+def default_converter() -> NodeConverter:
+    """The converter ``to_dict`` and ``from_dict`` use when given none.
+
+    It is built on first use (configuring the union over every node class takes longer
+    than importing the library, and most programs never need it), and built again once
+    more node classes have been declared, so it knows them too.
+
+    Examples:
+        >>> default_converter() is default_converter()
+        True
+
+    """
+    return _default_for(declared_count())
+
+
+def _codec(converter: cattrs.Converter | None) -> Codec:
+    """The plans of ``converter`` (the default one for ``None``), made once per converter."""
+    owner = default_converter() if converter is None else converter
+    codec = getattr(owner, "codec", None)
+    if codec is None:
+        members = getattr(owner, "node_classes", None) or union_members()
+        codec = Codec(owner, members)
+        if isinstance(owner, NodeConverter):
+            owner.codec = codec
+    return codec
 
 
 def _children_of(data: Mapping[str, Any], where: Callable[[], str]) -> list[Any]:
@@ -105,8 +148,13 @@ def _children_of(data: Mapping[str, Any], where: Callable[[], str]) -> list[Any]
     return children
 
 
-def to_dict(node: Node) -> dict[str, Any]:
+def to_dict(node: Node, *, converter: cattrs.Converter | None = None) -> dict[str, Any]:
     """Convert a node and its subtree to plain, JSON-safe dicts and lists.
+
+    Args:
+        node: The node.
+        converter: The converter whose hooks write each value (see :func:`make_converter`);
+            :func:`default_converter` by default.
 
     Examples:
         >>> from mjcf_model import Joint
@@ -114,7 +162,7 @@ def to_dict(node: Node) -> dict[str, Any]:
         {'range': [0.0, 'inf'], '_node': 'Joint'}
 
     """
-    codec = _codec()
+    codec = _codec(converter)
     plans = codec.plans
     result: dict[str, Any] = {}
     stack: list[tuple[Node, dict[str, Any]]] = [(node, result)]
@@ -154,8 +202,13 @@ def _unstructured(converter: cattrs.Converter, node: Node) -> dict[str, Any]:
     return out
 
 
-def from_dict(data: Mapping[str, Any]) -> Node:
+def from_dict(data: Mapping[str, Any], *, converter: cattrs.Converter | None = None) -> Node:
     """Rebuild a node from what :func:`to_dict` produced.
+
+    Args:
+        data: The dict.
+        converter: The converter whose hooks read each value (see :func:`make_converter`);
+            :func:`default_converter` by default.
 
     Raises:
         MjcfValueError: The dict does not describe a node; the message says where.
@@ -167,6 +220,7 @@ def from_dict(data: Mapping[str, Any]) -> Node:
     """
     if not isinstance(data, Mapping):
         raise MjcfValueError(f"not a node dict: expected a mapping, found {type(data).__name__}")
+    codec = _codec(converter)
     # Children are rebuilt before their parent, from an explicit stack. Each entry
     # keeps its index in its parent: the path for an error is built only then.
     stack: list[tuple[Mapping[str, Any], int, list[Node], Any]] = []
@@ -185,13 +239,13 @@ def from_dict(data: Mapping[str, Any]) -> Node:
                 raise MjcfValueError(f"not a node dict: {where(index)} is not a mapping")
             grandchildren = child.get("children", _NO_CHILDREN)
             if grandchildren is _NO_CHILDREN or (type(grandchildren) is list and not grandchildren):
-                built.append(_node_from_dict(child, functools.partial(where, index), []))
+                built.append(_node_from_dict(codec, child, functools.partial(where, index), []))
                 continue  # a leaf: built at once, without a stack entry
             stack.append((child, index, [], None))  # on the stack first: errors name it
             stack[-1] = (child, index, [], iter(enumerate(_children_of(child, where))))
             break
         else:
-            node = _node_from_dict(current, where, built)
+            node = _node_from_dict(codec, current, where, built)
             stack.pop()
             if not stack:
                 return node
@@ -199,14 +253,14 @@ def from_dict(data: Mapping[str, Any]) -> Node:
 
 
 def _node_from_dict(
-    data: Mapping[str, Any], where: Callable[[], str], children: list[Node]
+    codec: Codec, data: Mapping[str, Any], where: Callable[[], str], children: list[Node]
 ) -> Node:
     """One node from its dict, its children already rebuilt."""
     try:
-        node = built_directly(_codec(), data, children)
+        node = built_directly(codec, data, children)
     except Exception:  # the converter's way below says what is wrong
         node = None
-    return _node_through_converter(data, where, children) if node is None else node
+    return _node_through_converter(codec, data, where, children) if node is None else node
 
 
 #: What ``from_dict`` reads as the children of a dict without them.
@@ -214,7 +268,7 @@ _NO_CHILDREN: list[Any] = []
 
 
 def _node_through_converter(
-    data: Mapping[str, Any], where: Callable[[], str], children: list[Node]
+    codec: Codec, data: Mapping[str, Any], where: Callable[[], str], children: list[Node]
 ) -> Node:
     """One node from its dict through the converter, which explains what it refuses."""
     shallow = {k: v for k, v in data.items() if k != "children"}
@@ -222,7 +276,7 @@ def _node_through_converter(
     for key in unparsed:
         del shallow[key]
     try:
-        node: Node = _built_converter().structure(shallow, Node)
+        node: Node = codec.converter.structure(shallow, Node)
     except MjcfValueError as error:
         raise MjcfValueError(f"{where()}: {error.detail}") from None
     except (cattrs.BaseValidationError, KeyError, TypeError, ValueError) as error:

@@ -212,7 +212,7 @@ def test_models_equal_after_every_route(model: Mujoco) -> None:
 def _converter_dict(node: Node) -> dict[str, Any]:
     """``to_dict`` as the converter alone writes it: each node unstructured, then its children."""
     shallow = with_children(node, ()) if getattr(node, "children", ()) else node
-    out: dict[str, Any] = dicts.converter.unstructure(shallow, Node)
+    out: dict[str, Any] = dicts.default_converter().unstructure(shallow, Node)
     out.pop("layout", None)
     for key, value in out.items():
         if type(value) is Unparsed:
@@ -242,7 +242,7 @@ def test_dicts_are_the_converters_own(cls: type[TypedElement]) -> None:
         assert _ordered(data) == _ordered(_converter_dict(node))
         json.dumps(data, allow_nan=False)
         rebuilt = from_dict(data)
-        through_converter = dicts.converter.structure(
+        through_converter = dicts.default_converter().structure(
             {k: v for k, v in data.items() if not _is_unparsed(v)}, Node
         )
         assert list(vars(rebuilt)) == [k for k in vars(through_converter)] + [
@@ -281,7 +281,7 @@ def test_stored_defaults_are_left_out_of_dicts() -> None:
 def test_from_dict_reads_values_as_the_converter_does(data: dict[str, Any]) -> None:
     """Each value goes through the converter's hook for its field: ``5`` as a name is ``"5"``."""
     try:
-        expected = dicts.converter.structure(
+        expected = dicts.default_converter().structure(
             {k: v for k, v in data.items() if k != "children"}, Node
         )
     except Exception:  # the converter refuses it: so does from_dict
@@ -376,11 +376,9 @@ def test_a_node_class_whose_types_do_not_resolve_leaves_dicts_working() -> None:
         "    thing: NowhereDefined | None = None\n",
         namespace,
     )
-    dicts._converter_and_union.cache_clear()
-    dicts._codec.cache_clear()
+    dicts._default_for.cache_clear()
     try:
         geom = Geom(name="g", size=[0.1])
         assert from_dict(to_dict(geom)) == geom
     finally:
-        dicts._converter_and_union.cache_clear()
-        dicts._codec.cache_clear()
+        dicts._default_for.cache_clear()

@@ -34,7 +34,7 @@ from mjcf_model.nodes.comparing import Subtree
 from mjcf_model.nodes.node_info import NodeInfo
 from mjcf_model.values import float_key
 
-__all__ = ["declare", "declared_classes", "node"]
+__all__ = ["declare", "declared_classes", "declared_count", "node"]
 
 _C = TypeVar("_C", bound=type)
 
@@ -51,6 +51,17 @@ def declared_classes() -> tuple[type, ...]:
 
     """
     return tuple(_DECLARED)
+
+
+def declared_count() -> int:
+    """How many classes :func:`node` has declared: it grows when a class is declared.
+
+    Examples:
+        >>> declared_count() == len(declared_classes())
+        True
+
+    """
+    return len(_DECLARED)
 
 
 def _compared_as_is() -> frozenset[object]:
