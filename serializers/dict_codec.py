@@ -18,6 +18,7 @@ import attrs
 import cattrs
 from cattrs.fns import identity
 
+from mjcf_model.caching import BoundedCache
 from mjcf_model.nodes.base import Element, Node, TypedElement
 from mjcf_model.nodes.building import build_node
 from mjcf_model.values import Unparsed
@@ -37,8 +38,6 @@ _FieldOut = tuple[str, Callable[[Any], Any] | None, Any]
 _FieldIn = tuple[int, type | None, Callable[[Any], Any], bool]
 #: Fields ``to_dict`` leaves to its walk (``children``) or drops (``layout``).
 _NOT_UNSTRUCTURED = frozenset({"children", "layout"})
-#: Past this many, the per-shape plans are forgotten (hostile input could make any number).
-_MAX_PLANS = 4096
 
 
 class Codec:
@@ -61,8 +60,11 @@ class Codec:
         }
         #: Per class, each field's rank, hook and default (``to_dict``).
         self.fields_out: dict[type, dict[str, tuple[int, Callable[[Any], Any] | None, Any]]] = {}
-        #: Per class and stored fields, what ``to_dict`` writes (``(cls, *keys)``).
-        self.plans: dict[tuple[Any, ...], tuple[str, tuple[_FieldOut, ...]] | None] = {}
+        #: Per class and stored fields, what ``to_dict`` writes (``(cls, *keys)``); hostile
+        #: input could make any number of such shapes, hence the bound.
+        self.plans: BoundedCache[tuple[Any, ...], tuple[str, tuple[_FieldOut, ...]] | None] = (
+            BoundedCache(4096)
+        )
         #: Per class, how ``from_dict`` reads each field (see :meth:`_reader`).
         self.fields_in: dict[type, dict[str, _FieldIn]] = {}
 
@@ -70,11 +72,8 @@ class Codec:
         """The tag and fields ``to_dict`` writes for ``node``; ``None`` outside the union."""
         cls = type(node)
         signature = (cls, *node.__dict__)
-        if len(self.plans) >= _MAX_PLANS:
-            self.plans.clear()
         if cls not in self.tags:
-            self.plans[signature] = None
-            return None
+            return self.plans.remember(signature, None)
         table = self.fields_out.get(cls)
         if table is None:
             table = self.fields_out[cls] = self._fields_out(cls)
@@ -83,8 +82,7 @@ class Codec:
             self.tags[cls],
             tuple((name, table[name][1], table[name][2]) for _, name in stored),
         )
-        self.plans[signature] = plan
-        return plan
+        return self.plans.remember(signature, plan)
 
     def _fields_out(self, cls: type) -> dict[str, tuple[int, Callable[[Any], Any] | None, Any]]:
         table: dict[str, tuple[int, Callable[[Any], Any] | None, Any]] = {}

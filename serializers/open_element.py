@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from mjcf_model.caching import BoundedCache
 from mjcf_model.nodes.base import Node
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import child_key, children_context
@@ -94,17 +95,14 @@ def step_of(context: str | None, tag: str) -> tuple[str | None, str | None, Any]
     """
     key = child_key(context, tag)
     cls = CLASS_BY_KEY.get(key) if key is not None else None
-    if len(STEPS) >= _MAX_STEPS:
-        STEPS.clear()
-    step = STEPS[(context, tag)] = (
+    step = (
         key,
         children_context(key, context),
         cls if cls is not None and cls.tag == tag else None,
     )
-    return step
+    return STEPS.remember((context, tag), step)
 
 
-#: Per parent context and tag, what :func:`step_of` found.
-STEPS: dict[tuple[str | None, str], tuple[str | None, str | None, Any]] = {}
-#: Past this many, the steps are forgotten (hostile text could make any number).
-_MAX_STEPS = 4096
+#: Per parent context and tag, what :func:`step_of` found (hostile text could make any
+#: number of tags, hence the bound).
+STEPS: BoundedCache[tuple[str | None, str], tuple[str | None, str | None, Any]] = BoundedCache(4096)

@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import Any
 
+from mjcf_model.caching import BoundedCache
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.nodes import layout as layouts
 from mjcf_model.nodes.base import (
@@ -287,9 +288,7 @@ def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout)
     key = (cls, detail.names, bool(layout.children), layout.text is not None)
     check = _FAST_CHECKS.get(key)
     if check is None:
-        if len(_FAST_CHECKS) >= _MAX_FAST_CHECKS:
-            _FAST_CHECKS.clear()
-        check = _FAST_CHECKS[key] = _fast_check(info, *key[1:])
+        check = _FAST_CHECKS.remember(key, _fast_check(info, *key[1:]))
     if check is not None and None not in values:
         detail.getter, detail.stored = check
     return values
@@ -397,12 +396,11 @@ def _fast_check(
 
 
 #: Per class, attribute names and kind of content, what :func:`_fast_check` made.
-_FAST_CHECKS: dict[
+#: (Hostile text could make any number of attribute sets, hence the bound.)
+_FAST_CHECKS: BoundedCache[
     tuple[type, tuple[str, ...], bool, bool],
     tuple[Callable[[Any], tuple[Any, ...]], frozenset[str]] | None,
-] = {}
-#: Past this many, the checks are forgotten (hostile text could make any number).
-_MAX_FAST_CHECKS = 4096
+] = BoundedCache(4096)
 
 
 layouts.REDUCE_FROM_TEXT = reduced_from_text  # the node layer pickles what was read through this

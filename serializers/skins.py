@@ -34,6 +34,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from mjcf_model.caching import BoundedCache
 from mjcf_model.errors import MjcfAssetError, MjcfSyntaxError
 from mjcf_model.files.provenance import file_references, file_stem
 from mjcf_model.nodes.asset import Bone, Skin
@@ -101,15 +102,12 @@ def read_skin(path: str | os.PathLike[str]) -> Skin:
     )
     skin = _READ.get(key)
     if skin is None:
-        if len(_READ) >= _MAX_READ:
-            _READ.clear()
-        skin = _READ[key] = _read_skin(path)
+        skin = _READ.remember(key, _read_skin(path))
     return skin
 
 
 #: Skins read, by path, size and modification time (a few: scenes hold few skin files).
-_READ: dict[tuple[str, int, int, int, int], Skin] = {}
-_MAX_READ = 16
+_READ: BoundedCache[tuple[str, int, int, int, int], Skin] = BoundedCache(16)
 
 
 def _read_skin(path: str | os.PathLike[str]) -> Skin:

@@ -28,6 +28,7 @@ import warnings
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
+from mjcf_model.caching import BoundedCache
 from mjcf_model.errors import MjcfRecompiledWarning
 from mjcf_model.nodes.base import AnyElement, Element, attribute_items, get_attribute
 from mjcf_model.nodes.root import Mujoco
@@ -317,7 +318,9 @@ class _Rows:
         return _numbering(self.before).get(path)
 
 
-_NUMBERINGS: dict[int, tuple[Mujoco, dict[tuple[int, ...], int]]] = {}
+#: The numbering of the last few models asked about, by ``id`` (each kept with its model,
+#: so an ``id`` is not reused while its entry stands).
+_NUMBERINGS: BoundedCache[int, tuple[Mujoco, dict[tuple[int, ...], int]]] = BoundedCache(8)
 
 
 def _numbering(before: Mujoco) -> dict[tuple[int, ...], int]:
@@ -348,10 +351,7 @@ def _numbering(before: Mujoco) -> dict[tuple[int, ...], int]:
         row = mujoco.mj_name2id(compiled_model, kinds[kind], label)
         if row >= 0:
             rows[path] = row
-    if len(_NUMBERINGS) >= 8:
-        _NUMBERINGS.pop(next(iter(_NUMBERINGS)))
-    _NUMBERINGS[id(before)] = (before, rows)
-    return rows
+    return _NUMBERINGS.remember(id(before), (before, rows))[1]
 
 
 def _labelled(

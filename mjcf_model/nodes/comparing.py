@@ -12,6 +12,8 @@ import operator
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
+from mjcf_model.caching import BoundedCache
+
 if TYPE_CHECKING:
     from mjcf_model.nodes.node_info import DeclaredNode as Node
 
@@ -50,12 +52,13 @@ def _nothing(_data: dict[str, Any]) -> tuple[()]:
     return ()
 
 
-#: Per class, the shape of each tuple of stored fields, in storage order (``tuple(__dict__)``).
-_SHAPES: dict[type, dict[tuple[str, ...], _Shape]] = {}
-#: The one shape of each class and set of compared fields (``(cls, *sorted names)``).
-_SHAPES_BY_SET: dict[tuple[Any, ...], _Shape] = {}
-#: Past this many, a table is forgotten (hostile text could make any number).
+#: How many shapes each table keeps (hostile text could make any number).
 _MAX_SHAPES = 1024
+#: Per class, the shape of each tuple of stored fields, in storage order (``tuple(__dict__)``).
+_SHAPES: dict[type, BoundedCache[tuple[str, ...], _Shape]] = {}
+#: The one shape of each class and set of compared fields (``(cls, *sorted names)``);
+#: when it empties, older shapes stay valid: only ``is`` between them fails.
+_SHAPES_BY_SET: BoundedCache[tuple[Any, ...], _Shape] = BoundedCache(_MAX_SHAPES)
 #: What ``_SHAPES.get`` gives for a class not met yet (never filled).
 _NO_SHAPES: dict[tuple[str, ...], _Shape] = {}
 
@@ -70,19 +73,15 @@ def _shape_of(node: Node, keys: tuple[str, ...] | None = None) -> _Shape:
         keys = tuple(node.__dict__)
     known = _SHAPES.get(cls)
     if known is None:
-        known = _SHAPES[cls] = {}
+        known = _SHAPES[cls] = BoundedCache(_MAX_SHAPES)
     shape = known.get(keys)
     if shape is None:
-        if len(known) >= _MAX_SHAPES:
-            known.clear()
-        if len(_SHAPES_BY_SET) >= _MAX_SHAPES:
-            _SHAPES_BY_SET.clear()  # older shapes stay valid: only ``is`` between them fails
         skip = cls.__node_info__.not_compared
         compared = tuple(sorted(k for k in keys if k not in skip))
         shape = _SHAPES_BY_SET.get((cls, *compared))
         if shape is None:
-            shape = _SHAPES_BY_SET[(cls, *compared)] = _Shape(cls, compared)
-        known[keys] = shape
+            shape = _SHAPES_BY_SET.remember((cls, *compared), _Shape(cls, compared))
+        known.remember(keys, shape)
     return shape
 
 

@@ -22,6 +22,7 @@ import operator
 from collections.abc import Callable, Collection, Iterator
 from typing import cast
 
+from mjcf_model.caching import BoundedCache
 from mjcf_model.nodes.base import (
     AnyElement,
     Element,
@@ -46,7 +47,9 @@ _KEYWORD_ATTRIBUTES = {"dclass": "class"}
 
 
 #: The reader :func:`attribute_values` made for each typed class and attribute names.
-_READERS: dict[tuple[type, tuple[str, ...]], Callable[[AnyElement], tuple[Value | None, ...]]] = {}
+_READERS: BoundedCache[
+    tuple[type, tuple[str, ...]], Callable[[AnyElement], tuple[Value | None, ...]]
+] = BoundedCache(1024)
 
 
 def attribute_values(element: AnyElement, names: tuple[str, ...]) -> tuple[Value | None, ...]:
@@ -67,8 +70,7 @@ def attribute_values(element: AnyElement, names: tuple[str, ...]) -> tuple[Value
         return tuple([get(name) for name in names])
     reader = _READERS.get((type(element), names))
     if reader is None:
-        reader = _reader(type(element), names)
-        _READERS[(type(element), names)] = reader
+        reader = _READERS.remember((type(element), names), _reader(type(element), names))
     return reader(element)
 
 

@@ -20,6 +20,7 @@ import operator
 from collections.abc import Callable, Collection, Iterator, Sequence
 from typing import TypeVar
 
+from mjcf_model.caching import BoundedCache
 from mjcf_model.errors import Advice, MjcfValueError
 from mjcf_model.nodes.base import (
     AnyElement,
@@ -170,10 +171,9 @@ def map_elements(
     return _map_elements(fn, node, context, kept)  # type: ignore[return-value]
 
 
-#: ``child_key`` answers, by ``(context, tag)``: the walks ask it for every element.
-_KEYS: dict[tuple[str | None, str], str | None] = {}
-#: How many answers :data:`_KEYS` keeps (tags are open-ended in untrusted files).
-_KEYS_KEPT = 4096
+#: ``child_key`` answers, by ``(context, tag)``: the walks ask it for every element
+#: (tags are open-ended in untrusted files, hence the bound).
+_KEYS: BoundedCache[tuple[str | None, str], str | None] = BoundedCache(4096)
 #: What :data:`_KEYS` gives for a question it has no answer to.
 _UNKNOWN = "?"
 
@@ -183,10 +183,7 @@ def _key_of(context: str | None, tag: str) -> str | None:
     try:
         return _KEYS[(context, tag)]
     except KeyError:
-        key = child_key(context, tag)
-        if len(_KEYS) < _KEYS_KEPT:
-            _KEYS[(context, tag)] = key
-        return key
+        return _KEYS.remember((context, tag), child_key(context, tag))
 
 
 def with_mapped_children(element: _A, mapped: list[Node]) -> _A:

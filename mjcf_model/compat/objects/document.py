@@ -34,6 +34,7 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable, Hashable
 from typing import Any, ClassVar, Generic, TypeGuard, TypeVar
 
+from mjcf_model.caching import BoundedCache
 from mjcf_model.compat.mjcf_utils.etree_sync import attribute, sync_element
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, Comment, Element, Node
@@ -88,7 +89,8 @@ class Memo(Generic[_V]):
 
 # -- robosuite's isinstance ---------------------------------------------------------
 
-_FACES: dict[tuple[type, type], type] = {}
+#: The class joining each of ours to its robosuite twin, made once per pair.
+_FACES: BoundedCache[tuple[type, type], type] = BoundedCache(256)
 
 
 def robosuite_face(cls: type) -> type:
@@ -108,7 +110,7 @@ def robosuite_face(cls: type) -> type:
                 "__qualname__": cls.__qualname__,
                 "__doc__": cls.__doc__,
             }
-            face = _FACES[cls, theirs] = type(cls.__name__, (cls, theirs), namespace)
+            face = _FACES.remember((cls, theirs), type(cls.__name__, (cls, theirs), namespace))
         return face
     return cls
 
