@@ -354,6 +354,25 @@ def test_objects_pickle_and_copy() -> None:
         assert_view_matches_model(clone)
 
 
+def test_isinstance_does_not_depend_on_which_was_imported_first() -> None:
+    """Objects made before robosuite is imported pass ``isinstance`` against it once it is.
+
+    This module imports robosuite first; a fresh process makes the objects first.
+    """
+    code = (
+        "from mjcf_model.compat import objects as ours\n"
+        "import sys\n"
+        "assert not any(m.startswith('robosuite') for m in sys.modules)\n"
+        "made = [ours.CanObject('c'), ours.BoxObject('b'), ours.Bin('n')]\n"
+        "import robosuite.models.base as rs_base, robosuite.models.objects as rs\n"
+        "twins = [rs.CanObject, rs.BoxObject, rs.CompositeObject]\n"
+        "print([isinstance(o, t) and isinstance(o, rs_base.MujocoModel) "
+        "for o, t in zip(made, twins)])\n"
+    )
+    found = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert found.stdout.strip() == "[True, True, True]"
+
+
 def test_isinstance_of_robosuite_twins() -> None:
     """Every class passes isinstance against its robosuite twin and robosuite's bases."""
     cases: list[tuple[Any, type]] = [
