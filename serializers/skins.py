@@ -29,7 +29,7 @@ import decimal
 import os
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -38,7 +38,7 @@ from mjcf_model.caching import BoundedCache
 from mjcf_model.errors import MjcfAssetError, MjcfSyntaxError
 from mjcf_model.files.provenance import file_references, file_stem
 from mjcf_model.nodes.asset import Bone, Skin
-from mjcf_model.nodes.base import AnyElement, Comment, get_attribute, with_attributes
+from mjcf_model.nodes.base import AnyElement, Comment, Node, get_attribute, with_attributes
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tree.traversal import SKIN_KEYS, map_elements
@@ -49,8 +49,9 @@ __all__ = [
     "read_skin",
     "skin_bone_names",
     "skin_file_bytes",
-    "with_file_skins_inline",
 ]
+
+_N = TypeVar("_N", bound=Node)
 
 _NAME_BYTES = 40
 
@@ -225,12 +226,16 @@ def skin_bone_names(path: str | os.PathLike[str]) -> tuple[str, ...]:
     return tuple(str(bone.body) for bone in read_skin(path).children if isinstance(bone, Bone))
 
 
-def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str] | None = None) -> Mujoco:
-    """``model`` with every skin read from a file written inline instead.
+def inline_skin_files(node: _N, directory: str | os.PathLike[str] | None = None) -> _N:
+    """``node`` with every skin read from a file written inline instead.
 
     Skin files are found as MuJoCo finds them (:mod:`mjcf_model.files.provenance`):
     under the compiler's ``meshdir`` (or ``assetdir``), from ``directory``, the
-    folder of the model file (by default the model's own ``base_dir``).
+    folder of the model file (by default the model's own ``base_dir``). Returned as
+    it is: a node that is not a whole model, a model that reads no skin from a file,
+    and a model that does not know its folder (built in code, or read from text
+    without ``base_dir``) when ``directory`` is not given. The transforms call it on
+    every model they rename or scale (a skin file names bodies, and holds lengths).
 
     Examples:
         >>> from serializers import loads
@@ -239,10 +244,22 @@ def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str] | None = 
         True
 
     """
+    if not isinstance(node, Mujoco) or (directory is None and node.base_dir is None):
+        return node
+    skin_elements = (  # skins stand only in the top-level sections: no need to walk the bodies
+        element
+        for section in node.elements
+        if section.tag in ("asset", "deformable")
+        for element in section.elements
+        if element.tag == "skin"
+    )
+    if not any(get_attribute(skin, "file") for skin in skin_elements):
+        return node
+    model: Mujoco = node
     located = model if directory is None else build_node(Mujoco, {"base_dir": directory}, model)
     skins = {id(r.element): r for r in file_references(located) if r.key in SKIN_KEYS}
     if not skins:
-        return model
+        return node
 
     def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
         reference = skins.get(id(element))
@@ -267,32 +284,4 @@ def inline_skin_files(model: Mujoco, directory: str | os.PathLike[str] | None = 
         )
         return build_node(type(inline), {"children": (*inline.children, *data.children)}, inline)
 
-    return map_elements(visit, model)
-
-
-def with_file_skins_inline(node: AnyElement) -> AnyElement:
-    """``node`` with its ``.skn`` skins written inline, when it is a model that knows its folder.
-
-    Renaming bodies would lose the bodies a skin file names; a loaded model can
-    read its skin files first (:func:`inline_skin_files`). Any other node, and a
-    model without skin files, is returned as it is.
-
-    Examples:
-        >>> from serializers import loads
-        >>> model = loads("<mujoco/>", base_dir=".")
-        >>> with_file_skins_inline(model) is model
-        True
-
-    """
-    if not isinstance(node, Mujoco) or node.base_dir is None:
-        return node
-    skins = (  # skins stand only in the top-level sections: no need to walk the bodies
-        element
-        for section in node.elements
-        if section.tag in ("asset", "deformable")
-        for element in section.elements
-        if element.tag == "skin"
-    )
-    if not any(get_attribute(skin, "file") for skin in skins):
-        return node
-    return inline_skin_files(node)
+    return map_elements(visit, model)  # type: ignore[return-value]

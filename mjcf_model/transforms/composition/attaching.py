@@ -359,9 +359,9 @@ class _Composer:
         if cached is None or cached[0] is not child:
             for element, key, _ in keyed_walk(child):
                 refuse_opaque(element, key, "attach")
-            from serializers.skins import with_file_skins_inline
+            from serializers.skins import inline_skin_files
 
-            ready = self._in_parent_terms(with_file_skins_inline(child))  # type: ignore[arg-type]
+            ready = self._in_parent_terms(inline_skin_files(child))
             names = declared_names(ready)
             copies = RepeatedPrefixing(
                 ready, lambda node, prefix: prefixed_declared(node, prefix, names)

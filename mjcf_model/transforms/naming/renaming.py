@@ -340,9 +340,9 @@ def prefixed(
     if not prefix:
         return node
     if "body" in chosen:
-        from serializers.skins import with_file_skins_inline
+        from serializers.skins import inline_skin_files
 
-        node = with_file_skins_inline(node)
+        node = inline_skin_files(node)
     excluded = _excluder(exclude)
     if undeclared:
 

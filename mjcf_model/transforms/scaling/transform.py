@@ -138,9 +138,9 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
         raise MjcfValueError(f"mass policy is 'keep' or 'volume', found {mass!r}")
     if factors == (1.0, 1.0, 1.0):
         return node
-    from serializers.skins import with_file_skins_inline
+    from serializers.skins import inline_skin_files
 
-    node = with_file_skins_inline(node)  # a skin file's vertices and bind poses are lengths
+    node = inline_skin_files(node)  # a skin file's vertices and bind poses are lengths
     classes = DefaultClasses.of(node)
     context = ScaleContext(factors=factors, mass=mass, classes=classes, model=node)
 
