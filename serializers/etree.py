@@ -18,7 +18,7 @@ from mjcf_model.schema.namespaces import child_key, children_context, guess_cont
 from serializers.canonical import attribute_texts
 from serializers.parsed_elements import build_element, element_step, element_text
 
-__all__ = ["from_etree", "to_etree"]
+__all__ = ["converted_children", "from_etree", "to_etree"]
 
 
 def from_etree(element: ET.Element, *, context: str | None = None, typed: bool = True) -> Node:
@@ -48,6 +48,24 @@ def from_etree(element: ET.Element, *, context: str | None = None, typed: bool =
     if context is None:
         context = guess_context(element.tag)
     return _from_etree(element, context, typed)
+
+
+def converted_children(element: ET.Element) -> list[ET.Element]:
+    """The children :func:`from_etree` converts, in order: elements and comments.
+
+    Examples:
+        >>> parent = ET.Element("body")
+        >>> parent.extend([ET.Comment(" c "), ET.Element("geom"), ET.ProcessingInstruction("pi")])
+        >>> len(converted_children(parent)), len(parent)
+        (2, 3)
+
+    """
+    return [child for child in element if _converted(child)]
+
+
+def _converted(child: ET.Element) -> bool:
+    """Whether :func:`from_etree` makes a node of ``child`` (not of a processing instruction)."""
+    return child.tag is ET.Comment or isinstance(child.tag, str)  # type: ignore[comparison-overlap]
 
 
 @attrs.define

@@ -1,7 +1,8 @@
 """The boundary between robosuite's live ElementTree elements and the immutable nodes.
 
 Tree functions convert with :func:`node_of`, call a pure function on the nodes, and
-write the result onto the *same* elements with :func:`write_back` (never replacing one).
+write the result onto the *same* elements with :func:`serializers.etree_view.write_back`
+(never replacing one).
 """
 
 from __future__ import annotations
@@ -20,21 +21,17 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.tree.traversal import Path
 from mjcf_model.values import format_value
-from serializers.canonical import attribute_texts
-from serializers.etree import from_etree
+from serializers.etree import converted_children, from_etree
 
 __all__ = [
     "Edits",
     "attribute",
-    "children_of",
     "element_index",
     "node_index",
     "node_of",
     "paired",
     "preorder",
     "shallow_node",
-    "sync_element",
-    "write_back",
 ]
 
 #: Attribute changes by element path (``None`` removes an attribute).
@@ -66,15 +63,6 @@ def shallow_node(element: ET.Element) -> Node:
     return GenericElement(tag=element.tag, attributes=element.attrib)
 
 
-def children_of(element: ET.Element) -> list[ET.Element]:
-    """The children ``from_etree`` converts (elements and comments), in order."""
-    return [
-        child
-        for child in element
-        if child.tag is ET.Comment or isinstance(child.tag, str)  # type: ignore[comparison-overlap]
-    ]
-
-
 def paired(element: ET.Element, node: Node) -> Iterator[tuple[ET.Element, Node]]:
     """``(element, node)`` for the converted element and each descendant, in document order."""
     stack = [(element, node)]
@@ -82,7 +70,7 @@ def paired(element: ET.Element, node: Node) -> Iterator[tuple[ET.Element, Node]]
         current, current_node = stack.pop()
         yield current, current_node
         if isinstance(current_node, Element):
-            pairs = zip(children_of(current), current_node.children, strict=True)
+            pairs = zip(converted_children(current), current_node.children, strict=True)
             stack.extend(reversed(list(pairs)))
 
 
@@ -110,52 +98,3 @@ def preorder(node: Node) -> Iterator[tuple[AnyElement | None, Node, Path]]:
                 (current, child, (*path, index))
                 for index, child in reversed(list(enumerate(current.children)))
             )
-
-
-def sync_element(element: ET.Element, old: Node, new: Node) -> None:
-    """Make ``element``, which shows ``old``, show ``new``'s attributes and text, in place.
-
-    A changed attribute is set where it stands and a new one goes last (as ``set``
-    does), a removed one is deleted; attributes other code added to the live
-    element stay, after the model's own.
-    """
-    if new is old or not isinstance(new, Element):
-        return
-    before = attribute_texts(old) if isinstance(old, Element) else []
-    after = attribute_texts(new)
-    if before != after:
-        _sync_attributes(element, dict(before), after)
-    if getattr(old, "text", None) != new.text:
-        element.text = new.text
-
-
-def _sync_attributes(element: ET.Element, old: dict[str, str], new: list[tuple[str, str]]) -> None:
-    new_values = dict(new)
-    for name in old:
-        if name not in new_values:
-            element.attrib.pop(name, None)
-    for name, text in new:
-        if old.get(name) != text:
-            element.set(name, text)
-    order = [name for name in element.attrib if name in new_values]
-    if order != [name for name, _ in new]:  # reordered: the model's order, then the others'
-        foreign = {k: v for k, v in element.attrib.items() if k not in new_values}
-        mine = {name: element.attrib[name] for name, _ in new}
-        element.attrib.clear()
-        element.attrib.update(mine)
-        element.attrib.update(foreign)
-
-
-def write_back(element: ET.Element, old: Node, new: Node) -> None:
-    """Write the changes from ``old`` (``node_of(element)``) to ``new`` onto the live elements.
-
-    Subtrees ``new`` shares with ``old`` are skipped; the structure must be the same.
-    """
-    stack: list[tuple[ET.Element, Node, Node]] = [(element, old, new)]
-    while stack:
-        current, before, after = stack.pop()
-        if after is before:
-            continue
-        sync_element(current, before, after)
-        if isinstance(before, Element) and isinstance(after, Element):
-            stack.extend(zip(children_of(current), before.children, after.children, strict=True))

@@ -18,18 +18,13 @@ from mjcf_model.compat.materials import DEFAULT_MATERIAL, with_material
 from mjcf_model.compat.materials import CustomMaterial as FrozenMaterial
 from mjcf_model.compat.mjcf_utils.builders import new_element
 from mjcf_model.compat.mjcf_utils.constants import ALL_TEXTURES, TEXTURES
-from mjcf_model.compat.mjcf_utils.etree_sync import (
-    attribute,
-    element_index,
-    node_of,
-    preorder,
-    write_back,
-)
+from mjcf_model.compat.mjcf_utils.etree_sync import attribute, element_index, node_of, preorder
 from mjcf_model.compat.mjcf_utils.naming import already_prefixed
 from mjcf_model.compat.mjcf_utils.text import array_to_string, parse_numbers, xml_path_completion
 from mjcf_model.files.png import png_bytes
 from mjcf_model.nodes.base import AnyElement, Element, Node
 from mjcf_model.tree.paths import edited_at
+from serializers.etree_view import write_back
 
 __all__ = [
     "CustomMaterial",

@@ -7,14 +7,10 @@ from collections.abc import Callable, Collection, Iterable
 from typing import Any
 
 from mjcf_model.compat.mjcf_utils.constants import MUJOCO_NAMED_ATTRIBUTES
-from mjcf_model.compat.mjcf_utils.etree_sync import (
-    element_index,
-    node_of,
-    preorder,
-    write_back,
-)
+from mjcf_model.compat.mjcf_utils.etree_sync import element_index, node_of, preorder
 from mjcf_model.nodes.base import Element, GenericElement, Node, TypedElement, attribute_items
 from mjcf_model.tree.paths import edited_at
+from serializers.etree_view import write_back
 
 __all__ = ["add_prefix", "already_prefixed", "prefixed_attributes"]
 

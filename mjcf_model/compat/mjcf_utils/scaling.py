@@ -16,9 +16,10 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from mjcf_model.compat.mjcf_utils.etree_sync import attribute, shallow_node, sync_element
+from mjcf_model.compat.mjcf_utils.etree_sync import attribute, shallow_node
 from mjcf_model.compat.mjcf_utils.text import array_to_string, normalize_scale_array, parse_numbers
 from mjcf_model.nodes.base import Element, Node, with_attributes
+from serializers.etree_view import sync_element
 
 __all__ = [
     "scale_body_element",

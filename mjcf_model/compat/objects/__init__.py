@@ -18,7 +18,7 @@ file reads, XML object preparation, and prefix placement and recorded names per
 *naming skeleton* (:mod:`~mjcf_model.compat.objects.naming`).
 
 **Live ElementTree views.** ``get_obj()``, ``asset``, ``root``... are elements
-of one view of the model (:class:`~mjcf_model.compat.objects.document.EtreeView`),
+of one view of the model (:class:`~serializers.etree_view.EtreeView`),
 patched in place when the model changes: ``get_obj()`` is the same element on
 every call, a later ``set_pos``/``set_scale`` shows in a task that appended it,
 and an XML object's ``get_obj()`` is the element inside ``root``. Edits other

@@ -16,7 +16,6 @@ import numpy as np
 import numpy.typing as npt
 
 from mjcf_model.compat.mjcf_utils.constants import RED
-from mjcf_model.compat.mjcf_utils.etree_sync import write_back
 from mjcf_model.compat.mjcf_utils.text import array_to_string
 from mjcf_model.compat.objects.document import ModelBacked, RobosuiteCompatible, as_node
 from mjcf_model.compat.objects.habits import named_specs, robosuite_scaled
@@ -27,6 +26,7 @@ from mjcf_model.compat.objects.naming import (
 )
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement
+from serializers.etree_view import write_back
 
 __all__ = [
     "GEOMTYPE2GROUP",

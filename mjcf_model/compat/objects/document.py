@@ -4,10 +4,9 @@
 * :class:`RobosuiteCompatible`: ``isinstance`` falls back on ``obj.__class__``, here a cached
   *face* class joining the object's class to its robosuite twin once robosuite's module is in
   ``sys.modules`` (robosuite is never imported).
-* :class:`EtreeView`: an ElementTree built on first read, then patched in place where a new
-  model differs (subtrees shared by identity are skipped): elements handed out stay live, and
-  others' edits stay unless the model changes them.
-* :class:`ModelBacked`: an immutable document, named places (paths) in it, and its view.
+* :class:`ModelBacked`: an immutable document, named places (paths) in it, and its live
+  ElementTree (:class:`serializers.etree_view.EtreeView`: elements handed out stay live, and
+  others' edits stay unless the model changes them).
 
 >>> import xml.etree.ElementTree as ET
 >>> from mjcf_model import GenericElement
@@ -35,16 +34,16 @@ from collections.abc import Callable, Hashable
 from typing import Any, ClassVar, Generic, TypeGuard, TypeVar
 
 from mjcf_model.caching import BoundedCache
-from mjcf_model.compat.mjcf_utils.etree_sync import attribute, sync_element
+from mjcf_model.compat.mjcf_utils.etree_sync import attribute
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import AnyElement, Comment, Element, Node
+from mjcf_model.nodes.base import AnyElement, Element
 from mjcf_model.tree.paths import appended_at, replaced_at, subtree_at
 from mjcf_model.tree.queries import find
 from mjcf_model.tree.traversal import Path, walk, with_children
-from serializers.etree import from_etree, to_etree
+from serializers.etree import from_etree
+from serializers.etree_view import EtreeView
 
 __all__ = [
-    "EtreeView",
     "Memo",
     "ModelBacked",
     "RobosuiteCompatible",
@@ -185,131 +184,6 @@ def section_children(model: Any, section: str) -> list[AnyElement]:
     if isinstance(model, ModelBacked) and section in model._paths:
         return list(model._node(section).elements)
     return [as_node(child) for child in getattr(model, section)]
-
-
-# -- the live ElementTree -----------------------------------------------------------
-
-
-class EtreeView:
-    """One ElementTree kept in step with a replaced model (``element``: one already showing it)."""
-
-    def __init__(self, node: AnyElement, element: ET.Element | None = None) -> None:
-        self._node = node
-        #: The elements built for each element's children, in model order.
-        self._kids: dict[ET.Element, list[ET.Element]] = {}
-        #: The root element, built on first use (a model changed often is converted once).
-        self._element = None if element is None else self._record(node, element)
-
-    @property
-    def node(self) -> AnyElement:
-        """The model the ElementTree currently shows."""
-        return self._node
-
-    @property
-    def element(self) -> ET.Element:
-        """The root ElementTree element (the same object for the view's whole life)."""
-        if self._element is None:
-            self._element = self._build(self._node)
-        return self._element
-
-    def at(self, path: Path) -> ET.Element:
-        """The element built for the model element at ``path``."""
-        element = self.element
-        for index in path:
-            element = self._kids[element][index]
-        return element
-
-    def update(self, node: AnyElement) -> None:
-        """Make the ElementTree show ``node``, editing the existing elements in place."""
-        if node is not self._node:
-            if self._element is not None:
-                self._patch(self._node, node, self._element)
-            self._node = node
-
-    def _build(self, node: Node) -> ET.Element:
-        """The element of ``node`` and its subtree, its children recorded."""
-        element = to_etree(node)
-        if is_element(node):
-            self._record(node, element)
-        return element
-
-    def _record(self, node: AnyElement, element: ET.Element) -> ET.Element:
-        """Record the elements built for ``node``'s subtree (a stack: any depth)."""
-        pending = [(node, element)]
-        while pending:
-            parent, built = pending.pop()
-            kids = self._kids[built] = list(built)
-            pending.extend(
-                (child, kid)
-                for child, kid in zip(parent.children, kids, strict=True)
-                if is_element(child)
-            )
-        return element
-
-    def _forget(self, element: ET.Element) -> None:
-        pending = [element]
-        while pending:
-            pending.extend(self._kids.pop(pending.pop(), []))
-
-    def _patch(self, old: AnyElement, new: AnyElement, element: ET.Element) -> None:
-        """Make ``element`` show ``new`` instead of ``old`` (a stack: any depth)."""
-        pending = [(old, new, element)]
-        while pending:
-            old, new, element = pending.pop()
-            if old is new:
-                continue
-            sync_element(element, old, new)
-            if old.children is not new.children:
-                pending.extend(self._patch_children(old, new, element))
-
-    def _patch_children(
-        self, old: AnyElement, new: AnyElement, element: ET.Element
-    ) -> list[tuple[AnyElement, AnyElement, ET.Element]]:
-        """Patch the children of ``element``; the changed children left to patch are returned."""
-        kids = self._kids.get(element, [])
-        pairs = list(zip(old.children, new.children, strict=False))
-        if len(old.children) == len(new.children) and all(
-            _same_tag(a, b) for a, b in pairs
-        ):  # the same elements, some of them changed
-            return [
-                (a, b, kid)
-                for (a, b), kid in zip(pairs, kids, strict=True)
-                if a is not b and is_element(a) and is_element(b)
-            ]
-        # Elements came or went: keep the elements of unchanged children, build the others.
-        by_identity = {id(child): index for index, child in enumerate(old.children)}
-        used: set[int] = set()
-        new_kids: list[ET.Element] = []
-        for child in new.children:
-            index = by_identity.get(id(child))
-            if index is not None and index not in used:
-                used.add(index)
-                new_kids.append(kids[index])
-            else:
-                new_kids.append(self._build(child))
-        dropped = [kid for index, kid in enumerate(kids) if index not in used]
-        live = list(element)
-        if len(live) == len(kids) and all(a is b for a, b in zip(live, kids, strict=True)):
-            element[:] = new_kids
-        else:  # someone else edited the children: keep their edits, apply ours
-            kept = {id(kid) for kid in kids}
-            for kid in dropped:
-                if any(kid is e for e in live):
-                    element.remove(kid)
-            for kid in new_kids:
-                if id(kid) not in kept:
-                    element.append(kid)
-        for kid in dropped:
-            self._forget(kid)
-        self._kids[element] = new_kids
-        return []
-
-
-def _same_tag(a: Node, b: Node) -> bool:
-    if isinstance(a, Comment) or isinstance(b, Comment):
-        return isinstance(a, Comment) and isinstance(b, Comment)
-    assert is_element(a) and is_element(b)
-    return a.tag == b.tag
 
 
 # -- the document -------------------------------------------------------------------
