@@ -21,7 +21,7 @@ from mjcf_model.nodes.base import AnyElement, Element, Node, attribute_text, wit
 from mjcf_model.tree.traversal import map_tree
 from mjcf_model.values import Value
 
-__all__ = ["GeomRole", "geom_role", "with_collision_color"]
+__all__ = ["GeomRole", "geom_role", "role_of_group", "with_collision_color"]
 
 _E = TypeVar("_E", bound=Element)
 
@@ -43,7 +43,17 @@ def geom_role(element: AnyElement) -> GeomRole | None:
     """
     if element.tag != "geom":
         return None
-    group = attribute_text(element, "group")
+    return role_of_group(attribute_text(element, "group"))
+
+
+def role_of_group(group: str | None) -> GeomRole | None:
+    """The role of a geom whose ``group`` is written as ``group`` (``None``: not written).
+
+    Examples:
+        >>> role_of_group(None), role_of_group("1"), role_of_group("1.0")
+        ('collision', 'visual', None)
+
+    """
     if group is None or group == "0":
         return "collision"
     return "visual" if group == "1" else None

@@ -8,7 +8,7 @@ write the result onto the *same* elements with :func:`serializers.etree_view.wri
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator
 
 from mjcf_model.nodes.base import (
     AnyElement,
@@ -24,18 +24,13 @@ from mjcf_model.values import format_value
 from serializers.etree import converted_children, from_etree
 
 __all__ = [
-    "Edits",
     "attribute",
     "element_index",
-    "node_index",
     "node_of",
     "paired",
     "preorder",
     "shallow_node",
 ]
-
-#: Attribute changes by element path (``None`` removes an attribute).
-Edits = Mapping[Path, Mapping[str, str | None]]
 
 
 def attribute(node: Node, name: str) -> str | None:
@@ -77,11 +72,6 @@ def paired(element: ET.Element, node: Node) -> Iterator[tuple[ET.Element, Node]]
 def element_index(element: ET.Element, node: Node) -> dict[int, ET.Element]:
     """The live element of each node of ``node_of(element)``, by ``id`` of the node."""
     return {id(n): e for e, n in paired(element, node)}
-
-
-def node_index(element: ET.Element, node: Node) -> dict[int, Node]:
-    """The node of each live element, by ``id`` of the element (inverse of ``element_index``)."""
-    return {id(e): n for e, n in paired(element, node)}
 
 
 def preorder(node: Node) -> Iterator[tuple[AnyElement | None, Node, Path]]:

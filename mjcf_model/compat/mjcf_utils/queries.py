@@ -1,6 +1,8 @@
-"""robosuite's lookups (sorting into categories, finding elements and parents) over nodes.
+"""robosuite's lookups on its ElementTree elements, and its categories over nodes too.
 
-Each converts the tree, queries the nodes, and returns the live elements found.
+``sort_elements``, ``find_parent``, ``find_elements``, ``find_elements_by_substring`` and
+``get_elements`` read the live elements directly, in document order, with explicit stacks
+(any depth); :func:`categorized` sorts nodes by the same rule, :func:`category`.
 """
 
 from __future__ import annotations
@@ -11,82 +13,97 @@ from typing import Any
 
 import attrs
 
-from mjcf_model.compat.geom_roles import geom_role
+from mjcf_model.compat.geom_roles import role_of_group
 from mjcf_model.compat.mjcf_utils.constants import SENSOR_TYPES
-from mjcf_model.compat.mjcf_utils.etree_sync import (
-    attribute,
-    element_index,
-    node_index,
-    node_of,
-    preorder,
-    shallow_node,
-)
+from mjcf_model.compat.mjcf_utils.etree_sync import attribute
 from mjcf_model.nodes.base import AnyElement, Element, Node
-from mjcf_model.tree.queries import find_all, parent_of
-from mjcf_model.tree.traversal import walk
 
 __all__ = [
     "Categories",
     "categorized",
+    "category",
     "filter_key",
     "find_elements",
     "find_elements_by_substring",
     "find_parent",
     "get_elements",
-    "iter_matching",
     "sort_elements",
-    "sorted_nodes",
-    "typed_pairs",
 ]
 
 
-def _tag(node: Node | None) -> str | None:
-    """The tag of an element node, else ``None``."""
-    return node.tag if isinstance(node, Element) else None
+def category(
+    tag: str | None,
+    attribute_of: Callable[[str], str | None],
+    parent_tag: str | None,
+    is_root: bool,
+    sensor_tags: Collection[str] | None = SENSOR_TYPES,
+) -> str | None:
+    """The category robosuite gives an element (``"joints"``...), or ``None``: the one rule.
+
+    ``tag`` is ``None`` for a comment; ``attribute_of(name)`` gives an attribute's text
+    (``None``: absent); ``is_root``: the element has no parent. Any child of ``<actuator>``
+    (comments too) is ``"actuators"``; a geom is contact or visual by its group
+    (:func:`~mjcf_model.compat.geom_roles.role_of_group`). A sensor is an element whose tag
+    is in ``sensor_tags`` (robosuite's list), or with ``None`` any child of ``<sensor>``.
+
+    Examples:
+        >>> category("joint", {"joint1": "j"}.get, "equality", False)
+        >>> category("body", {}.get, "worldbody", False)
+        'root_body'
+        >>> category("geom", {"group": "1"}.get, None, True)
+        'visual_geoms'
+
+    """
+    if parent_tag == "actuator":
+        return "actuators"
+    if tag == "joint":
+        is_dof = attribute_of("joint") is None and attribute_of("joint1") is None
+        return "joints" if is_dof else None
+    if tag == "body":
+        return "root_body" if is_root or parent_tag != "body" else "bodies"
+    if tag == "site":
+        return "sites"
+    is_sensor = tag in sensor_tags if sensor_tags is not None else parent_tag == "sensor"
+    if is_sensor:
+        return "sensors"
+    if tag == "geom":
+        role = role_of_group(attribute_of("group"))
+        return {"collision": "contact_geoms", "visual": "visual_geoms"}.get(role or "")
+    return None
+
+
+def _tag(node: Node | ET.Element | None) -> str | None:
+    """The tag of an element (node or live), ``None`` for a comment or no element."""
+    if isinstance(node, Element):
+        return node.tag
+    if isinstance(node, ET.Element) and isinstance(node.tag, str):
+        return node.tag
+    return None
 
 
 def filter_key(
     node: Node, parent: Node | None, sensor_tags: Collection[str] | None = SENSOR_TYPES
 ) -> str | None:
-    """The category robosuite gives ``node`` under ``parent`` (``"joints"``...), or ``None``.
-
-    Any child of ``<actuator>`` (comments too) is ``"actuators"``; a geom is contact or
-    visual by its :func:`~mjcf_model.compat.geom_roles.geom_role`. A sensor is an element
-    whose tag is in ``sensor_tags`` (robosuite's list), or with ``None`` any child of
-    ``<sensor>`` (the newer sensors too).
-    """
-    if parent is not None and _tag(parent) == "actuator":
-        return "actuators"
-    tag = _tag(node)
-    if tag == "joint":
-        is_dof = attribute(node, "joint") is None and attribute(node, "joint1") is None
-        return "joints" if is_dof else None
-    if tag == "body":
-        return "root_body" if parent is None or _tag(parent) != "body" else "bodies"
-    if tag == "site":
-        return "sites"
-    is_sensor = tag in sensor_tags if sensor_tags is not None else _tag(parent) == "sensor"
-    if is_sensor:
-        return "sensors"
-    if tag == "geom":
-        assert isinstance(node, Element)
-        return {"collision": "contact_geoms", "visual": "visual_geoms"}.get(geom_role(node) or "")
-    return None
+    """The :func:`category` of ``node`` under ``parent``."""
+    return category(
+        _tag(node), lambda name: attribute(node, name), _tag(parent), parent is None, sensor_tags
+    )
 
 
 def _element_filter(element: ET.Element, parent: ET.Element | None) -> str | None:
-    """The default filter of ``sort_elements``: :func:`filter_key` of a live element."""
-    return filter_key(shallow_node(element), None if parent is None else shallow_node(parent))
+    """The default filter of ``sort_elements``: the :func:`category` of a live element."""
+    return category(_tag(element), element.get, _tag(parent), parent is None)
 
 
-def sorted_nodes(node: Node, parent: Node | None = None) -> dict[str, list[Node]]:
-    """The nodes of ``node`` (itself included) by :func:`filter_key`, keys in first-seen order."""
-    found: dict[str, list[Node]] = {}
-    for above, current, _path in preorder(node):
-        key = filter_key(current, parent if above is None else above)
-        if key is not None:
-            found.setdefault(key, []).append(current)
-    return found
+def _preorder(
+    root: ET.Element, parent: ET.Element | None = None
+) -> Iterator[tuple[ET.Element | None, ET.Element]]:
+    """``(parent, element)`` for ``root`` and every element below it, in document order."""
+    stack: list[tuple[ET.Element | None, ET.Element]] = [(parent, root)]
+    while stack:
+        above, element = stack.pop()
+        yield above, element
+        stack.extend((element, child) for child in reversed(list(element)))
 
 
 def sort_elements(
@@ -108,21 +125,13 @@ def sort_elements(
         {'root_body': [None], 'contact_geoms': ['c'], 'bodies': ['in']}
 
     """
-    if _elements_dict is None:
-        _elements_dict = {}
-    node = node_of(root)
-    live = element_index(root, node)
-    if element_filter is None:
-        parent_node = None if parent is None else shallow_node(parent)
-        for key, nodes in sorted_nodes(node, parent_node).items():
-            _elements_dict.setdefault(key, []).extend(live[id(n)] for n in nodes)
-        return _elements_dict
-    for above, current, _path in preorder(node):
-        element = live[id(current)]
-        key = element_filter(element, parent if above is None else live[id(above)])
+    found = {} if _elements_dict is None else _elements_dict
+    chosen = _element_filter if element_filter is None else element_filter
+    for above, element in _preorder(root, parent):
+        key = chosen(element, above)
         if key is not None:
-            _elements_dict.setdefault(key, []).append(element)
-    return _elements_dict
+            found.setdefault(key, []).append(element)
+    return found
 
 
 def find_parent(element: ET.Element, target: Any) -> ET.Element | None:
@@ -134,29 +143,21 @@ def find_parent(element: ET.Element, target: Any) -> ET.Element | None:
         (True, None)
 
     """
-    node = node_of(element)
-    target_node = node_index(element, node).get(id(target))
-    if target_node is None:
-        return None
-    found = parent_of(node, target_node)
-    return None if found is None else element_index(element, node)[id(found)]
+    for _, current in _preorder(element):
+        if any(child is target for child in current):
+            return current
+    return None
 
 
-def iter_matching(node: Node, tags: Any, attribs: dict[Any, Any] | None) -> Iterator[AnyElement]:
-    """The elements of ``node`` (itself included) with a tag ``in tags`` and ``attribs``.
+def _matching(root: ET.Element, tags: Any, attribs: dict[Any, Any] | None) -> Iterator[ET.Element]:
+    """The elements of ``root`` (itself included) with a tag ``in tags`` and ``attribs``.
 
     Attributes are compared as text with ``!=``, as robosuite does (``None``: absent).
     """
-    if isinstance(tags, str):  # a str subclass: robosuite's `in` is then a substring test
-        tags = {e.tag for _, e in walk(node) if e.tag in tags}
-    for element in find_all(node, tags):
-        matching = True
-        if attribs is not None:
-            for k, v in attribs.items():
-                if attribute(element, k) != v:
-                    matching = False
-                    break
-        if matching:
+    for _, element in _preorder(root):
+        if not isinstance(element.tag, str) or element.tag not in tags:
+            continue
+        if attribs is None or all(element.get(k) == v for k, v in attribs.items()):
             yield element
 
 
@@ -178,16 +179,10 @@ def find_elements(
 
     """
     tags = [tags] if type(tags) is str else tags
-    node = node_of(root)
-    found = iter_matching(node, tags, attribs)
+    found = _matching(root, tags, attribs)
     if return_first:
-        first = next(found, None)
-        return None if first is None else element_index(root, node)[id(first)]
-    nodes = list(found)
-    if not nodes:
-        return None
-    live = element_index(root, node)
-    return [live[id(n)] for n in nodes]
+        return next(found, None)
+    return list(found) or None
 
 
 def find_elements_by_substring(
@@ -211,38 +206,14 @@ def find_elements_by_substring(
     """
     substrings = [substrings] if type(substrings) is str else substrings
     tags = [tags] if type(tags) is str else tags
-    node = node_of(root)
-    named: list[AnyElement] = []
-    for element in iter_matching(node, tags, attribs):
-        name = attribute(element, "name")
-        if name is None:
-            continue
-        for substring in substrings:
-            if substring in name:
-                named.append(element)
-                break
-        if named and return_first:
-            break
-    if not named:
-        return None
-    live = element_index(root, node)
-    return live[id(named[0])] if return_first else [live[id(n)] for n in named]
-
-
-def typed_pairs(
-    node: Node, element_type: str, include_root: bool = False
-) -> list[tuple[AnyElement | None, AnyElement]]:
-    """``(parent, element)`` for each descendant with tag ``element_type``, in document order.
-
-    ``node`` itself counts only with ``include_root`` (its parent is then ``None``).
-    """
-    return [
-        (parent, current)
-        for parent, current, _path in preorder(node)
-        if isinstance(current, Element)
-        and current.tag == element_type
-        and (parent is not None or include_root)
-    ]
+    named = (
+        element
+        for element in _matching(root, tags, attribs)
+        if (name := element.get("name")) is not None and any(s in name for s in substrings)
+    )
+    if return_first:
+        return next(named, None)
+    return list(named) or None
 
 
 def get_elements(
@@ -258,11 +229,10 @@ def get_elements(
         [('a', 'geom'), ('b', 'geom')]
 
     """
-    node = node_of(root)
-    live = element_index(root, node)
     return [
-        (_parent if parent is None else live[id(parent)], live[id(child)])  # type: ignore[misc]
-        for parent, child in typed_pairs(node, element_type, include_root=_parent is not None)
+        (above, element)
+        for above, element in _preorder(root, _parent)
+        if above is not None and element.tag == element_type
     ]
 
 
