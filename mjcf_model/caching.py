@@ -10,13 +10,16 @@ costs some answers computed twice, never memory.
 (1, 2, 1)
 >>> cache.remember("c", 3), sorted(cache)
 (3, ['c'])
+>>> cache.recall("c", lambda: 4), cache.recall("d", lambda: 4)
+(3, 4)
 """
 
 from __future__ import annotations
 
-from typing import TypeVar
+from collections.abc import Callable, Hashable
+from typing import Any, TypeVar
 
-__all__ = ["BoundedCache"]
+__all__ = ["BoundedCache", "IdentityCache"]
 
 _K = TypeVar("_K")
 _V = TypeVar("_V")
@@ -43,3 +46,36 @@ class BoundedCache(dict[_K, _V]):
             self.clear()
         self[key] = value
         return value
+
+    def recall(self, key: _K, compute: Callable[[], _V]) -> _V:
+        """The answer remembered for ``key``, or ``compute()``, remembered (``None`` too)."""
+        if key in self:
+            return self[key]
+        return self.remember(key, compute())
+
+
+class IdentityCache(BoundedCache[tuple[Hashable, ...], tuple[Any, _V]]):
+    """Answers about objects by their identity, each object kept alive while remembered.
+
+    An ``id`` is reused once its object is gone; keeping the object with its answer means
+    an answer is only ever given for the very object it was computed for.
+
+    Examples:
+        >>> cache = IdentityCache[int](limit=4)
+        >>> tree = ["a"]
+        >>> cache.recall_for(tree, lambda: 1), cache.recall_for(tree, lambda: 2)
+        (1, 1)
+        >>> cache.recall_for(["a"], lambda: 3), cache.recall_for(tree, lambda: 4, "other")
+        (3, 4)
+
+    """
+
+    __slots__ = ()
+
+    def recall_for(self, thing: object, compute: Callable[[], _V], *also: Hashable) -> _V:
+        """The answer remembered for this very ``thing`` (and ``also``), or ``compute()``."""
+        key = (id(thing), *also)
+        found = self.get(key)
+        if found is None or found[0] is not thing:
+            found = self.remember(key, (thing, compute()))
+        return found[1]

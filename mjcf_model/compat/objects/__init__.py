@@ -13,7 +13,7 @@ order, ``g<i>`` geom names, inline default classes) are reproduced exactly, and
 attribute text read from files is kept as written.
 
 **Memoisation.** Objects are made again at every reset, so what depends on the
-input alone is remembered (:class:`~mjcf_model.compat.objects.document.Memo`):
+input alone is remembered (:class:`~mjcf_model.caching.BoundedCache`):
 file reads, XML object preparation, and prefix placement and recorded names per
 *naming skeleton* (:mod:`~mjcf_model.compat.objects.naming`).
 

@@ -1,6 +1,5 @@
 """The state of every compat object: an immutable document, its live ElementTree, robosuite's face.
 
-* :class:`Memo`: the last results computed from the same input (by value or a node's identity).
 * :class:`RobosuiteCompatible`: ``isinstance`` falls back on ``obj.__class__``, here a cached
   *face* class joining the object's class to its robosuite twin once robosuite's module is in
   ``sys.modules`` (robosuite is never imported).
@@ -21,17 +20,14 @@
 >>> doc._change("asset", lambda a: with_children(a, [GenericElement(tag="mesh")]))
 >>> doc.asset is live, [child.tag for child in live]
 (True, ['mesh'])
->>> memo = Memo(2)
->>> memo.get("a", lambda: [1]) is memo.get("a", lambda: [2])
-True
 """
 
 from __future__ import annotations
 
 import sys
 import xml.etree.ElementTree as ET
-from collections.abc import Callable, Hashable
-from typing import Any, ClassVar, Generic, TypeGuard, TypeVar
+from collections.abc import Callable
+from typing import Any, ClassVar, TypeGuard
 
 from mjcf_model.caching import BoundedCache
 from mjcf_model.compat.mjcf_utils.etree_sync import attribute
@@ -44,7 +40,6 @@ from serializers.etree import from_etree
 from serializers.etree_view import EtreeView
 
 __all__ = [
-    "Memo",
     "ModelBacked",
     "RobosuiteCompatible",
     "as_node",
@@ -52,38 +47,6 @@ __all__ = [
     "is_element",
     "section_children",
 ]
-
-_V = TypeVar("_V")
-
-
-class Memo(Generic[_V]):
-    """The last ``size`` results, by key; the oldest goes first."""
-
-    def __init__(self, size: int) -> None:
-        self._size = size
-        self._kept: dict[Hashable, _V] = {}
-        #: The inputs of :meth:`of`, kept alive so that their identity stays theirs.
-        self._inputs: dict[Hashable, object] = {}
-
-    def get(self, key: Hashable, make: Callable[[], _V]) -> _V:
-        """The result kept for ``key``, or ``make()`` (then kept)."""
-        if key in self._kept:
-            return self._kept[key]
-        if len(self._kept) >= self._size:
-            oldest = next(iter(self._kept))
-            del self._kept[oldest]
-            self._inputs.pop(oldest, None)
-        result = self._kept[key] = make()
-        return result
-
-    def of(self, node: object, make: Callable[[], _V], *also: Hashable) -> _V:
-        """The result kept for this very ``node`` (by identity) and ``also``, or ``make()``."""
-        key = (id(node), *also)
-        if self._inputs.get(key) is not node:
-            self._kept.pop(key, None)
-        result = self.get(key, make)
-        self._inputs[key] = node
-        return result
 
 
 # -- robosuite's isinstance ---------------------------------------------------------

@@ -25,6 +25,7 @@ from typing import Any
 
 import numpy as np
 
+from mjcf_model.caching import BoundedCache
 from mjcf_model.compat.mjcf_utils import constants as utils_constants
 from mjcf_model.compat.mjcf_utils.builders import body_node, geom_node, joint_node, site_node
 from mjcf_model.compat.mjcf_utils.etree_sync import attribute
@@ -36,7 +37,7 @@ from mjcf_model.compat.mjcf_utils.scaling import (
     scaled_site,
 )
 from mjcf_model.compat.mjcf_utils.text import array_to_string, text_of
-from mjcf_model.compat.objects.document import Memo, as_node, is_element
+from mjcf_model.compat.objects.document import as_node, is_element
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, Node, with_attributes
 from mjcf_model.transforms.scaling.transform import three_factors
@@ -162,12 +163,12 @@ def read_like_robosuite(fname: str) -> tuple[AnyElement, dict[str, Path]]:
     except OSError:
         return _read(fname)  # raises as ElementTree does
     key = (os.path.abspath(fname), stat.st_ino, stat.st_mtime_ns, stat.st_ctime_ns, stat.st_size)
-    document, paths = _READ.get(key, lambda: _read(fname))
+    document, paths = _READ.recall(key, lambda: _read(fname))
     return document, dict(paths)
 
 
 #: The documents :func:`read_like_robosuite` read, by path, modification time and size.
-_READ: Memo[tuple[AnyElement, dict[str, Path]]] = Memo(32)
+_READ: BoundedCache[tuple[Any, ...], tuple[AnyElement, dict[str, Path]]] = BoundedCache(32)
 
 
 def _read(fname: str) -> tuple[AnyElement, dict[str, Path]]:

@@ -18,10 +18,10 @@ from __future__ import annotations
 from collections.abc import Callable, Hashable
 from typing import Any
 
+from mjcf_model.caching import BoundedCache, IdentityCache
 from mjcf_model.compat.mjcf_utils.etree_sync import attribute
 from mjcf_model.compat.mjcf_utils.naming import already_prefixed
 from mjcf_model.compat.mjcf_utils.queries import categorized
-from mjcf_model.compat.objects.document import Memo
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, Element, GenericElement, Node, attribute_items
 from mjcf_model.schema.namespaces import SCHEMA
@@ -48,9 +48,9 @@ _GENERATORS = frozenset(
 _DEPTH = 100
 
 #: What is known of each naming skeleton: one dict for every tree with that skeleton.
-_BY_SKELETON: Memo[dict[str, Any]] = Memo(128)
+_BY_SKELETON: BoundedCache[Hashable, dict[str, Any]] = BoundedCache(128)
 #: Those dicts for the last trees asked about, by identity (one tree is asked twice or more).
-_OF_TREES: Memo[dict[str, Any] | None] = Memo(8)
+_OF_TREES: IdentityCache[dict[str, Any] | None] = IdentityCache(8)
 
 
 def skeleton_memo(node: AnyElement) -> dict[str, Any] | None:
@@ -58,9 +58,9 @@ def skeleton_memo(node: AnyElement) -> dict[str, Any] | None:
 
     def shared() -> dict[str, Any] | None:
         skeleton = naming_skeleton(node)
-        return None if skeleton is None else _BY_SKELETON.get(skeleton, dict)
+        return None if skeleton is None else _BY_SKELETON.recall(skeleton, dict)
 
-    return _OF_TREES.of(node, shared)
+    return _OF_TREES.recall_for(node, shared)
 
 
 def naming_skeleton(node: AnyElement) -> Hashable:

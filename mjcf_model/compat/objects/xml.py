@@ -28,6 +28,7 @@ import xml.dom.minidom
 import xml.etree.ElementTree as ET
 from typing import Any
 
+from mjcf_model.caching import IdentityCache
 from mjcf_model.compat.mjcf_utils.etree_sync import attribute
 from mjcf_model.compat.mjcf_utils.materials import recolored
 from mjcf_model.compat.mjcf_utils.text import array_to_string, string_to_array
@@ -40,7 +41,6 @@ from mjcf_model.compat.objects.base import (
     unanswered,
 )
 from mjcf_model.compat.objects.document import (
-    Memo,
     ModelBacked,
     RobosuiteCompatible,
     as_node,
@@ -68,7 +68,7 @@ from serializers.etree import to_etree
 __all__ = ["MujocoXML", "MujocoXMLModel", "MujocoXMLObject"]
 
 #: Prepared documents, by the document read and the choices that shape the object.
-_PREPARED: Memo[AnyElement] = Memo(32)
+_PREPARED: IdentityCache[AnyElement] = IdentityCache(32)
 
 
 def _typed(attributes: dict[str, Any]) -> tuple[tuple[str, type, Any], ...]:
@@ -254,7 +254,7 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
             hash(choices)
         except TypeError:  # a joint given by unhashable values (arrays...)
             return prepared()
-        return _PREPARED.of(document, prepared, choices)
+        return _PREPARED.recall_for(document, prepared, choices)
 
     def _prepared(self, obj: AnyElement) -> AnyElement:
         obj = with_attributes(obj, {"name": "main"})
