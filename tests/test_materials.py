@@ -9,7 +9,6 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import Any
 
-import attrs
 import mujoco
 import numpy as np
 import pytest
@@ -21,23 +20,22 @@ from mjcf_model import (
     Asset,
     Body,
     Geom,
-    Material,
     MjcfLookupError,
     MjcfValueError,
     Mujoco,
     Node,
-    Texture,
     Worldbody,
 )
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.compat.materials import (
-    DEFAULT_MATERIAL,
     TEXTURE_FILES,
     CustomMaterial,
     MaterialResult,
+    material_nodes,
     recolored_collision_geoms,
     with_material,
 )
+from mjcf_model.compat.mjcf_utils.materials import default_material, flat_material
 from mjcf_model.nodes.base import AnyElement, Element, get_attribute
 from mjcf_model.strategies import models
 from serializers import dumps, load, loads, to_etree
@@ -125,54 +123,42 @@ def test_texture_files_are_robosuites_and_read_only() -> None:
         TEXTURE_FILES["Oak"] = "oak.png"  # type: ignore[index]
 
 
-@pytest.mark.parametrize("name", list(TEXTURE_FILES))
-def test_named_texture_file_is_robosuites_file(name: str) -> None:
-    """A named texture's file is the path robosuite writes, and the file exists."""
-    ours = CustomMaterial(texture=name, tex_name="t", mat_name="m")
-    theirs = _robosuite_material(texture=name, tex_name="t", mat_name="m")
-    file = ours.texture_node.file
-    assert file == theirs.tex_attrib["file"]
-    assert file is not None and os.path.isfile(file)
-
-
-def test_named_texture_nodes_equal_robosuites_dicts() -> None:
-    """``texture_node``/``material_node`` have robosuite's tex_attrib/mat_attrib keys and values."""
-    ours = CustomMaterial(**WOOD)
-    theirs = _robosuite_material(**WOOD)
-    _same_values(_attributes(ours.texture_node), theirs.tex_attrib)
-    _same_values(_attributes(ours.material_node), theirs.mat_attrib)
-    assert ours.name == theirs.name == "dark_wood_mat"
-    assert isinstance(ours.texture_node, Texture) and isinstance(ours.material_node, Material)
-
-
-def test_numeric_attribute_values_equal_robosuites() -> None:
-    """Lists, arrays and numpy scalars in the attribute dicts give robosuite's numbers."""
-    kwargs: dict[str, Any] = {
+MATERIALS: list[dict[str, Any]] = [
+    *({"texture": name, "tex_name": "t", "mat_name": "m"} for name in TEXTURE_FILES),
+    WOOD,
+    {
         "texture": "WoodRed",
         "tex_name": "redwood",
         "mat_name": "redwood_mat",
         "tex_attrib": {"type": "cube", "width": 64},
         "mat_attrib": {"texrepeat": [1, 1], "specular": 0.4, "shininess": np.float64(0.1)},
-    }
+    },
+    {"texture": "/data/textures/marble.png", "tex_name": "t", "mat_name": "m"},
+    {"texture": "textures/marble.png", "tex_name": "t", "mat_name": "m", "shared": True},
+    {
+        "texture": None,
+        "tex_name": "default_tex",
+        "mat_name": "default_mat",
+        "tex_attrib": {"type": "cube", "builtin": "flat", "rgb1": np.ones(3), "width": 100},
+    },
+]
+
+
+@pytest.mark.parametrize("kwargs", MATERIALS, ids=lambda kwargs: str(kwargs["texture"]))
+def test_the_one_material_class_is_robosuites(kwargs: dict[str, Any]) -> None:
+    """Named, numeric, path and file-less materials: robosuite's dicts, text and order."""
     ours = CustomMaterial(**kwargs)
     theirs = _robosuite_material(**kwargs)
-    _same_values(_attributes(ours.texture_node), theirs.tex_attrib)
-    _same_values(_attributes(ours.material_node), theirs.mat_attrib)
+    assert list(ours.tex_attrib.items()) == list(theirs.tex_attrib.items())
+    assert list(ours.mat_attrib.items()) == list(theirs.mat_attrib.items())
+    assert (ours.name, ours.shared) == (theirs.name, theirs.shared)
+    file = ours.tex_attrib.get("file")
+    if isinstance(kwargs["texture"], str) and kwargs["texture"] in TEXTURE_FILES:
+        assert file is not None and os.path.isfile(file)
 
 
-def test_path_texture_is_kept_as_given() -> None:
-    """An absolute path is robosuite's too; a relative one is kept (robosuite adds its assets)."""
-    absolute = {"texture": "/data/textures/marble.png", "tex_name": "t", "mat_name": "m"}
-    ours = CustomMaterial(**absolute)
-    _same_values(_attributes(ours.texture_node), _robosuite_material(**absolute).tex_attrib)
-    relative = CustomMaterial(texture="textures/marble.png", tex_name="t", mat_name="m")
-    assert relative.texture_node.file == "textures/marble.png"
-    theirs = _robosuite_material(texture="textures/marble.png", tex_name="t", mat_name="m")
-    assert theirs.tex_attrib["file"].endswith(os.path.join("assets", "textures", "marble.png"))
-
-
-def test_none_texture_equals_robosuites_default_material() -> None:
-    """The default material's texture and material equal robosuite's (no file)."""
+def test_the_default_material_is_robosuites_and_new_each_time() -> None:
+    """``default_material()`` is what ``add_material`` uses; each call a new object."""
     theirs = _robosuite_material(
         texture=None,
         tex_name="default_tex",
@@ -186,12 +172,20 @@ def test_none_texture_equals_robosuites_default_material() -> None:
             "rgb2": np.ones(3),
         },
     )
-    _same_values(_attributes(DEFAULT_MATERIAL.texture_node), theirs.tex_attrib)
-    _same_values(_attributes(DEFAULT_MATERIAL.material_node), theirs.mat_attrib)
-    assert DEFAULT_MATERIAL.texture_node.file is None
+    ours = default_material()
+    assert list(ours.tex_attrib.items()) == list(theirs.tex_attrib.items())
+    assert list(ours.mat_attrib.items()) == list(theirs.mat_attrib.items())
+    assert default_material() is not ours and "file" not in ours.tex_attrib
 
 
-def test_rgba_texture_compiles_to_robosuites_pixels() -> None:
+def _compiled_with(material: Any) -> mujoco.MjModel:
+    texture, own = material_nodes(material)
+    geom = Geom(size=[0.1], material=own.attributes["name"])
+    model = Mujoco(children=[Asset(children=[texture, own]), Worldbody(children=[geom])])
+    return mujoco.MjModel.from_xml_string(dumps(model))
+
+
+def test_a_flat_material_compiles_to_robosuites_pixels_without_a_file() -> None:
     """MuJoCo's flat texture has the colour of the PNG robosuite writes; alpha goes to rgba."""
     rgba = [0.2, 0.4, 0.6, 0.5]
     tex_name = f"mjcf_model_test_{uuid.uuid4().hex}"
@@ -203,119 +197,68 @@ def test_rgba_texture_compiles_to_robosuites_pixels() -> None:
     png.unlink()
     assert len(pixels) == 1
     (pixel,) = pixels
-    ours = CustomMaterial(texture=rgba, tex_name=tex_name, mat_name="m")
-    assert ours.texture == (0.2, 0.4, 0.6, 0.5)
-    model = Mujoco(
-        children=[
-            Asset(children=[ours.texture_node, ours.material_node]),
-            Worldbody(children=[Geom(size=[0.1], material="m")]),
-        ]
-    )
-    compiled = mujoco.MjModel.from_xml_string(dumps(model))
+    ours = flat_material(rgba, tex_name, "m")
+    assert "file" not in ours.tex_attrib and not png.exists()
+    compiled = _compiled_with(ours)
     texels = compiled.tex_data.reshape(-1, compiled.tex_nchannel[0])
     assert {tuple(int(v) for v in texel) for texel in texels} == {pixel[:3]}
     assert compiled.tex_width[0] == size[0]
     assert list(compiled.mat_rgba[0]) == pytest.approx([1, 1, 1, pixel[3] / 255], abs=1 / 255)
-    assert ours.material_node.rgba == (1.0, 1.0, 1.0, 0.5)
-
-
-def test_opaque_rgba_leaves_material_rgba_unset() -> None:
-    """With alpha 1 the material sets no rgba; mat_attrib's own rgba wins otherwise."""
-    opaque = CustomMaterial(texture=(1, 0, 0, 1), tex_name="t", mat_name="m")
-    assert opaque.material_node.rgba is None
-    tinted = CustomMaterial(
-        texture=(1, 0, 0, 0.5), tex_name="t", mat_name="m", mat_attrib={"rgba": "1 0 0 0.2"}
-    )
-    assert tinted.material_node.rgba == (1.0, 0.0, 0.0, 0.2)
+    opaque = flat_material((1, 0, 0, 1), "t", "m")
+    assert "rgba" not in opaque.mat_attrib
+    with pytest.raises(MjcfValueError, match="4 numbers, found 3"):
+        flat_material([1, 0, 0], "t", "m")
 
 
 def test_named_texture_compiles_with_the_image_size() -> None:
     """MuJoCo loads the named texture's image: the texture has the PNG's size."""
     wood = CustomMaterial(**WOOD)
-    model = Mujoco(
-        children=[
-            Asset(children=[wood.texture_node, wood.material_node]),
-            Worldbody(children=[Geom(size=[0.1], material="dark_wood_mat")]),
-        ]
-    )
-    compiled = mujoco.MjModel.from_xml_string(dumps(model))
-    file = wood.texture_node.file
-    assert file is not None
-    with Image.open(file) as image:
+    compiled = _compiled_with(wood)
+    with Image.open(wood.tex_attrib["file"]) as image:
         assert (compiled.tex_width[0], compiled.tex_height[0]) == image.size
     assert compiled.ntex == 1 and compiled.nmat == 1
     assert compiled.geom_matid[0] == 0
 
 
-def test_invalid_textures_raise_like_robosuite() -> None:
-    """An unknown name lists the valid ones; an RGBA of 3 numbers is refused; robosuite agrees."""
-    with pytest.raises(MjcfValueError) as caught:
-        CustomMaterial(texture="Oak", tex_name="t", mat_name="m")
-    assert isinstance(caught.value, ValueError)
-    assert all(name in str(caught.value) for name in TEXTURE_FILES)
-    with pytest.raises(AssertionError):
-        _robosuite_material(texture="Oak", tex_name="t", mat_name="m")
-    with pytest.raises(MjcfValueError, match="4 numbers, found 3"):
-        CustomMaterial(texture=[1, 0, 0], tex_name="t", mat_name="m")
-    with pytest.raises(AssertionError):
-        _robosuite_material(texture=[1, 0, 0], tex_name="t", mat_name="m")
-    with pytest.raises(MjcfValueError):
-        CustomMaterial(texture=["a", "b", "c", "d"], tex_name="t", mat_name="m")
+def test_invalid_textures_raise_as_robosuites() -> None:
+    """An unknown name and an RGBA of 3 numbers raise robosuite's AssertionError, its words."""
+    for texture in ("Oak", [1, 0, 0]):
+        with pytest.raises(AssertionError) as ours:
+            CustomMaterial(texture=texture, tex_name="t", mat_name="m")
+        with pytest.raises(AssertionError) as theirs:
+            _robosuite_material(texture=texture, tex_name="t", mat_name="m")
+        assert str(ours.value) == str(theirs.value)
 
 
 def test_named_texture_needs_robosuite(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Without robosuite a named texture's node raises a lookup error saying so."""
+    """Without robosuite a named texture raises a lookup error saying so; a flat one works."""
     find_spec = importlib.util.find_spec
 
     def without_robosuite(name: str, package: str | None = None) -> Any:
         return None if name == "robosuite" else find_spec(name, package)
 
     monkeypatch.setattr(importlib.util, "find_spec", without_robosuite)
-    wood = CustomMaterial(**WOOD)
     with pytest.raises(MjcfLookupError, match="robosuite"):
-        _ = wood.texture_node
-    flat = CustomMaterial(texture=(1, 1, 1, 1), tex_name="t", mat_name="m")
-    assert flat.texture_node.builtin == "flat"
+        CustomMaterial(**WOOD)
+    assert flat_material((1, 1, 1, 1), "t", "m").tex_attrib["builtin"] == "flat"
 
 
-def test_custom_material_is_frozen_and_leaves_its_inputs_alone() -> None:
-    """The value is immutable and hashable; the caller's dicts are not changed."""
-    tex_attrib = {"type": "cube"}
-    mat_attrib: dict[str, Any] = {"texrepeat": [3, 3]}
-    wood = CustomMaterial(
-        texture="WoodDark", tex_name="t", mat_name="m", tex_attrib=tex_attrib, mat_attrib=mat_attrib
-    )
-    assert tex_attrib == {"type": "cube"} and mat_attrib == {"texrepeat": [3, 3]}
-    with pytest.raises(attrs.exceptions.FrozenInstanceError):
-        wood.tex_name = "x"  # type: ignore[misc]
-    with pytest.raises(TypeError):
-        wood.tex_attrib["type"] = "2d"  # type: ignore[index]
-    same = CustomMaterial(
-        texture="WoodDark",
-        tex_name="t",
-        mat_name="m",
-        tex_attrib={"type": "cube"},
-        mat_attrib={"texrepeat": "3 3"},
-    )
-    assert wood == same and hash(wood) == hash(same)
-    assert CustomMaterial(texture=np.array([1, 0, 0, 1]), tex_name="t", mat_name="m").texture == (
-        1.0,
-        0.0,
-        0.0,
-        1.0,
-    )
-
-
-def test_prefixed_adds_the_prefix_unless_shared() -> None:
+def test_material_nodes_prefix_names_unless_shared_and_leave_the_material_alone() -> None:
     """Texture and material names get the prefix, always; shared materials keep theirs."""
     wood = CustomMaterial(**WOOD)
-    prefixed = wood.prefixed("p_")
-    assert (prefixed.tex_name, prefixed.mat_name) == ("p_dark_wood", "p_dark_wood_mat")
-    assert prefixed.material_node.texture == "p_dark_wood"
-    assert prefixed.prefixed("p_").name == "p_p_dark_wood_mat"
-    assert wood.tex_name == "dark_wood"
-    shared = attrs.evolve(wood, shared=True)
-    assert shared.prefixed("p_") is shared
+    before = (dict(wood.tex_attrib), dict(wood.mat_attrib), wood.name)
+    texture, own = material_nodes(wood, "p_")
+    assert texture.attributes["name"] == "p_dark_wood"
+    assert (own.attributes["name"], own.attributes["texture"]) == ("p_dark_wood_mat", "p_dark_wood")
+    assert (dict(wood.tex_attrib), dict(wood.mat_attrib), wood.name) == before
+    assert list(own.attributes.items())[1:] == [
+        ("specular", "0.4"),
+        ("shininess", "0.1"),
+        ("name", "p_dark_wood_mat"),
+        ("texture", "p_dark_wood"),
+    ]
+    shared = CustomMaterial(**WOOD, shared=True)
+    assert material_nodes(shared, "p_")[1].attributes["name"] == "dark_wood_mat"
 
 
 def _robosuite_add_material(
@@ -355,8 +298,8 @@ def test_with_material_shared_and_custom_match_robosuite() -> None:
             dumps(TREE), "obj_", _robosuite_material(**kwargs)
         )
         assert _geom_states(to_etree(result.tree)) == _geom_states(root)
-        assert result.material.name == material.get("name")
-        assert result.texture.name == material.get("texture")
+        assert result.material.attributes["name"] == material.get("name")
+        assert result.texture.attributes["name"] == material.get("texture")
         assert result.used == used
 
 
@@ -364,7 +307,8 @@ def test_with_material_always_prefixes() -> None:
     """A material name already starting with the prefix still gets it (robosuite skips it)."""
     material = CustomMaterial(texture=None, tex_name="t", mat_name="p_m")
     result = with_material(TREE, material, "p_")
-    assert (result.material.name, result.texture.name) == ("p_p_m", "p_t")
+    names = (result.material.attributes["name"], result.texture.attributes["name"])
+    assert names == ("p_p_m", "p_t")
     _, _, theirs, _ = _robosuite_add_material(
         dumps(TREE), "p_", _robosuite_material(texture=None, tex_name="t", mat_name="p_m")
     )
@@ -376,7 +320,7 @@ def test_with_material_unused_returns_the_input() -> None:
     body = Body(children=[Geom(name="g", group=1, material="x"), Geom(name="h")])
     result = with_material(body)
     assert result.tree is body and result.used is False
-    assert result.material.name == "default_mat"
+    assert result.material.attributes["name"] == "default_mat"
     visual = Geom(group=1)
     assert with_material(visual).tree.material == "default_mat"
 
@@ -392,7 +336,7 @@ def test_with_material_matches_add_material_on_the_corpus(path: Path) -> None:
     _, theirs, _, used = mjcf_utils.add_material(root, "p_", _robosuite_material(**material))
     assert _geom_states(to_etree(result.tree)) == _geom_states(root)
     assert result.used == used
-    assert result.material.name == theirs.get("name")
+    assert result.material.attributes["name"] == theirs.get("name")
     assert dumps(model) == snapshot and model == load(path)
     _assert_shared(model, result.tree)
 

@@ -7,9 +7,9 @@ every behaviour is a call into the pure transforms of :mod:`mjcf_model`, and
 ElementTree appears only at the boundary, as robosuite's own code expects.
 
 The robosuite conventions that are not robosuite's own API are here too, not in
-:mod:`mjcf_model`: its materials as frozen values (:class:`CustomMaterial`,
-:func:`with_material`, :func:`recolored_collision_geoms`), its geom categories
-(:func:`categorized`) and its constructors as typed nodes (``new_body``...).
+:mod:`mjcf_model`: its materials on nodes (:func:`with_material`,
+:func:`recolored_collision_geoms`, with robosuite's :class:`CustomMaterial`), its geom
+categories (:func:`categorized`) and its constructors as typed nodes (``new_body``...).
 """
 
 from mjcf_model.compat.materials import CustomMaterial, recolored_collision_geoms, with_material

@@ -17,11 +17,18 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any, Literal, TypeVar, cast
 
-from mjcf_model.nodes.base import AnyElement, Element, Node, attribute_text, with_attributes
+from mjcf_model.nodes.base import (
+    AnyElement,
+    Element,
+    Node,
+    attribute_text,
+    get_attribute,
+    with_attributes,
+)
 from mjcf_model.tree.traversal import map_tree
 from mjcf_model.values import Value
 
-__all__ = ["GeomRole", "geom_role", "role_of_group", "with_collision_color"]
+__all__ = ["GeomRole", "geom_role", "role_of_group", "with_collision_color", "with_visual_material"]
 
 _E = TypeVar("_E", bound=Element)
 
@@ -90,3 +97,33 @@ def with_collision_color(
         return current
 
     return cast(_E, map_tree(visit, node))
+
+
+def with_visual_material(node: _E, material: str) -> tuple[_E, bool]:
+    """``node`` with every visual geom that has no material given ``material``; whether any did.
+
+    robosuite's ``add_material`` rule: a geom whose group is written ``1`` (``node``
+    included); unchanged subtrees are the input's own.
+
+    Examples:
+        >>> from mjcf_model import Body, Geom
+        >>> body = Body(children=[Geom(name="v", group=1), Geom(name="c")])
+        >>> tree, used = with_visual_material(body, "wood")
+        >>> [g.material for g in tree.geoms], used, tree.geoms[1] is body.geoms[1]
+        (['wood', None], True, True)
+
+    """
+    used = False
+
+    def visit(current: Node) -> Node:
+        nonlocal used
+        if (
+            isinstance(current, Element)
+            and geom_role(current) == "visual"
+            and get_attribute(current, "material") is None
+        ):
+            used = True
+            return with_attributes(current, {"material": material})
+        return current
+
+    return cast(_E, map_tree(visit, node)), used

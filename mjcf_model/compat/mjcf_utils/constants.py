@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import os
 
-from mjcf_model.compat import materials
-
 __all__ = [
     "ALL_TEXTURES",
     "BLUE",
@@ -110,8 +108,36 @@ IMAGE_CONVENTION_MAPPING: dict[str, int] = {
     "opencv": -1,
 }
 
-#: robosuite's named textures and their files (a plain copy of the library's table).
-TEXTURE_FILES: dict[str, str] = dict(materials.TEXTURE_FILES)
+#: robosuite's named textures and their image files, in robosuite's order.
+TEXTURE_FILES: dict[str, str] = {
+    "WoodRed": "red-wood.png",
+    "WoodGreen": "green-wood.png",
+    "WoodBlue": "blue-wood.png",
+    "WoodLight": "light-wood.png",
+    "WoodDark": "dark-wood.png",
+    "WoodTiles": "wood-tiles.png",
+    "WoodPanels": "wood-varnished-panels.png",
+    "WoodgrainGray": "gray-woodgrain.png",
+    "PlasterCream": "cream-plaster.png",
+    "PlasterPink": "pink-plaster.png",
+    "PlasterYellow": "yellow-plaster.png",
+    "PlasterGray": "gray-plaster.png",
+    "PlasterWhite": "white-plaster.png",
+    "BricksWhite": "white-bricks.png",
+    "Metal": "metal.png",
+    "SteelBrushed": "steel-brushed.png",
+    "SteelScratched": "steel-scratched.png",
+    "Brass": "brass-ambra.png",
+    "Bread": "bread.png",
+    "Can": "can.png",
+    "Ceramic": "ceramic.png",
+    "Cereal": "cereal.png",
+    "Clay": "clay.png",
+    "Dirt": "dirt.png",
+    "Glass": "glass.png",
+    "FeltGray": "gray-felt.png",
+    "Lemon": "lemon.png",
+}
 
 #: Named textures and their paths relative to robosuite's assets directory.
 TEXTURES: dict[str, str] = {

@@ -1,7 +1,9 @@
 """robosuite's materials and colours: ``CustomMaterial``, ``add_material``, recolouring, alpha.
 
-``CustomMaterial`` is robosuite's mutable record, not the library's frozen
-:class:`mjcf_model.compat.CustomMaterial` (whose text differs).
+``CustomMaterial`` is the library's one material class: robosuite's mutable record,
+with robosuite's attributes and text. :func:`flat_material` makes one of a colour
+without writing a file (robosuite writes a PNG), and :func:`default_material` is
+``add_material``'s default.
 """
 
 from __future__ import annotations
@@ -13,14 +15,13 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.compat.geom_roles import with_collision_color
-from mjcf_model.compat.materials import DEFAULT_MATERIAL, with_material
-from mjcf_model.compat.materials import CustomMaterial as FrozenMaterial
+from mjcf_model.compat.geom_roles import with_collision_color, with_visual_material
 from mjcf_model.compat.mjcf_utils.builders import new_element
 from mjcf_model.compat.mjcf_utils.constants import ALL_TEXTURES, TEXTURES
 from mjcf_model.compat.mjcf_utils.etree_sync import attribute, element_index, node_of, preorder
 from mjcf_model.compat.mjcf_utils.naming import already_prefixed
 from mjcf_model.compat.mjcf_utils.text import array_to_string, parse_numbers, xml_path_completion
+from mjcf_model.errors import MjcfValueError
 from mjcf_model.files.png import png_bytes
 from mjcf_model.nodes.base import AnyElement, Element, Node
 from mjcf_model.tree.paths import edited_at
@@ -29,6 +30,9 @@ from serializers.etree_view import write_back
 __all__ = [
     "CustomMaterial",
     "add_material",
+    "attribute_text",
+    "default_material",
+    "flat_material",
     "recolor_collision_geoms",
     "recolored",
     "set_alpha",
@@ -104,8 +108,7 @@ class CustomMaterial:
         self.mat_attrib["texture"] = tex_name
         for attrib in (self.tex_attrib, self.mat_attrib):
             for k, v in attrib.items():
-                if type(v) is not str:
-                    attrib[k] = array_to_string(v) if isinstance(v, Iterable) else str(v)
+                attrib[k] = attribute_text(v)
         if not default:
             name = texture if "/" in texture else TEXTURES[texture]
             self.tex_attrib["file"] = xml_path_completion(name)
@@ -118,16 +121,64 @@ class CustomMaterial:
             self.tex_attrib["file"] = path
 
 
-def _default_material() -> CustomMaterial:
-    """``add_material``'s default: the library's ``DEFAULT_MATERIAL``, colours as numpy arrays."""
-    tex_attrib: dict[str, Any] = dict(DEFAULT_MATERIAL.tex_attrib)
-    tex_attrib["rgb1"] = tex_attrib["rgb2"] = np.ones(3)
+def attribute_text(value: Any) -> str:
+    """An attribute value as ``CustomMaterial`` writes it.
+
+    Text stays; an iterable becomes ``array_to_string``; anything else ``str`` (so
+    ``True`` is ``"True"``).
+
+    Examples:
+        >>> attribute_text("1 1"), attribute_text([3, 3]), attribute_text(0.4)
+        ('1 1', '3 3', '0.4')
+        >>> attribute_text(True)
+        'True'
+
+    """
+    if type(value) is str:
+        return value
+    return array_to_string(value) if isinstance(value, Iterable) else str(value)
+
+
+def default_material() -> CustomMaterial:
+    """Robosuite's material when ``add_material`` is given none: a white flat cube texture.
+
+    A new one on each call: ``add_material`` changes the material it is given.
+
+    Examples:
+        >>> default_material().tex_attrib["rgb1"], default_material().name
+        ('1.0 1.0 1.0', 'default_mat')
+
+    """
+    white = np.ones(3)
+    flat = {"type": "cube", "builtin": "flat", "width": 100, "height": 100}
     return CustomMaterial(
         texture=None,
-        tex_name=DEFAULT_MATERIAL.tex_name,
-        mat_name=DEFAULT_MATERIAL.mat_name,
-        tex_attrib=tex_attrib,
+        tex_name="default_tex",
+        mat_name="default_mat",
+        tex_attrib={**flat, "rgb1": white, "rgb2": white},
     )
+
+
+def flat_material(rgba: Any, tex_name: str, mat_name: str) -> CustomMaterial:
+    """A material of one colour, as MuJoCo's built-in ``flat`` texture: no file is written.
+
+    robosuite's ``CustomMaterial(texture=rgba, ...)`` writes a 100 x 100 PNG of the colour
+    to a shared temporary folder (one file per texture name, which objects of different
+    colours overwrite); this texture has the same pixels. A flat texture has no alpha: an
+    alpha below 1 sets the material's ``rgba`` to ``(1, 1, 1, alpha)``.
+
+    Examples:
+        >>> glass = flat_material([0.5, 0.5, 1, 0.25], "t", "m")
+        >>> glass.tex_attrib["builtin"], glass.tex_attrib["rgb1"], glass.mat_attrib["rgba"]
+        ('flat', '0.5 0.5 1', '1 1 1 0.25')
+
+    """
+    color = list(rgba)
+    if len(color) != 4:
+        raise MjcfValueError(f"expected an RGBA of 4 numbers, found {len(color)} in {rgba!r}")
+    flat = {"builtin": "flat", "rgb1": color[:3], "rgb2": color[:3], "width": 100, "height": 100}
+    tint = {"rgba": [1, 1, 1, color[3]]} if color[3] < 1 else {}
+    return CustomMaterial(None, tex_name, mat_name, tex_attrib=flat, mat_attrib=tint)
 
 
 def add_material(
@@ -151,7 +202,7 @@ def add_material(
 
     """
     if custom_material is None:
-        custom_material = _default_material()
+        custom_material = default_material()
     if not already_prefixed(custom_material.name, naming_prefix) and not custom_material.shared:
         custom_material.name = naming_prefix + custom_material.name
         custom_material.tex_attrib["name"] = naming_prefix + custom_material.tex_attrib["name"]
@@ -162,11 +213,8 @@ def add_material(
     used = False
     node = node_of(root)
     if isinstance(node, Element):
-        name = custom_material.name
-        marker = FrozenMaterial(texture=None, tex_name=name, mat_name=name, shared=True)
-        result = with_material(node, marker)
-        write_back(root, node, result.tree)
-        used = result.used
+        tree, used = with_visual_material(node, custom_material.name)
+        write_back(root, node, tree)
     tex_element = new_element(tag="texture", **custom_material.tex_attrib)
     mat_element = new_element(tag="material", **custom_material.mat_attrib)
     return tex_element, mat_element, custom_material, used

@@ -18,8 +18,8 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.compat.materials import CustomMaterial
 from mjcf_model.compat.mjcf_utils.constants import BLUE, RED
+from mjcf_model.compat.mjcf_utils.materials import CustomMaterial
 from mjcf_model.compat.mjcf_utils.text import array_to_string
 from mjcf_model.compat.objects.base import MujocoObject, Vector
 from mjcf_model.compat.objects.document import as_node, find_path, is_element

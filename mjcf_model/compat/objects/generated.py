@@ -1,6 +1,7 @@
 """Objects built in code, as robosuite does: ``MujocoGeneratedObject`` and the primitives.
 
-Materials may be this library's :class:`~mjcf_model.compat.CustomMaterial` or robosuite's own.
+Materials are ``CustomMaterial`` objects, this library's or robosuite's own; the
+``"default"`` material is a flat texture of the object's colour (robosuite writes a PNG).
 Drawn sizes use the compatible ``get_size``, so a seeded generator gives robosuite's sizes.
 
 >>> ball = PrimitiveObject("ball", size=[0.03], material="default")
@@ -20,8 +21,8 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from mjcf_model.compat.materials import CustomMaterial
 from mjcf_model.compat.mjcf_utils.constants import RED
+from mjcf_model.compat.mjcf_utils.materials import flat_material
 from mjcf_model.compat.mjcf_utils.text import array_to_string, get_size
 from mjcf_model.compat.objects.base import MujocoObject, Vector
 from mjcf_model.compat.objects.habits import (
@@ -51,11 +52,11 @@ _MAIN_BODY, _ROOT_BODY = rs_body(name="main"), rs_body(name="root")
 
 
 def material_parts(material: Any) -> tuple[str, str, bool, AnyElement, AnyElement]:
-    """The material name, texture name, ``shared`` flag, and texture and material nodes."""
-    if isinstance(material, CustomMaterial):
-        texture: AnyElement = material.texture_node
-        node: AnyElement = material.material_node
-        return material.name, material.tex_name, material.shared, texture, node
+    """The material name, texture name, ``shared`` flag, and texture and material nodes.
+
+    ``material`` is a ``CustomMaterial``, ours or robosuite's: its attributes are read as
+    robosuite's ``new_element`` reads them.
+    """
     tex_attrib = {k: value_text(v) for k, v in material.tex_attrib.items()}
     mat_attrib = {k: value_text(v) for k, v in material.mat_attrib.items()}
     texture = GenericElement(tag="texture", attributes=tex_attrib)
@@ -218,7 +219,7 @@ class PrimitiveObject(MujocoGeneratedObject):
         self.solimp = [0.9, 0.95, 0.001] if solimp is None else solimp
         self.material = material
         if isinstance(material, str) and material == "default":
-            self.append_material(CustomMaterial(texture=self.rgba, tex_name="tex", mat_name="mat"))
+            self.append_material(flat_material(self.rgba, "tex", "mat"))
         elif material is not None:
             self.append_material(material)
         self.joint_specs = self._named_joints(joints)

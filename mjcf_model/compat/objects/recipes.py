@@ -19,8 +19,8 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.compat.materials import CustomMaterial
 from mjcf_model.compat.mjcf_utils.constants import RED
+from mjcf_model.compat.mjcf_utils.materials import CustomMaterial
 from mjcf_model.compat.mjcf_utils.text import add_to_dict
 from mjcf_model.compat.objects.base import Vector
 

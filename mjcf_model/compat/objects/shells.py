@@ -14,7 +14,7 @@ from typing import Any
 
 import numpy as np
 
-from mjcf_model.compat.materials import CustomMaterial
+from mjcf_model.compat.mjcf_utils.materials import CustomMaterial
 from mjcf_model.compat.objects.composite import CompositeObject
 from mjcf_model.compat.objects.generated import material_parts
 from mjcf_model.compat.objects.recipes import add_geom, centred, marker_site
