@@ -29,7 +29,7 @@ from mjcf_model.nodes.comparing import Subtree, forest_hash, forests_equal
 from mjcf_model.nodes.declaring import node
 from mjcf_model.nodes.layout import Layout
 from mjcf_model.nodes.node_info import NodeInfo, xml_name
-from mjcf_model.values import Value, check_name, check_text, format_value, plain_value, to_str
+from mjcf_model.values import Value, check_name, check_text, format_value
 
 __all__ = [
     "AnyElement",
@@ -45,7 +45,6 @@ __all__ = [
     "field_table",
     "full_repr",
     "get_attribute",
-    "ordered_node",
     "to_attribute_map",
     "to_children",
     "with_attributes",
@@ -53,7 +52,6 @@ __all__ = [
 ]
 
 _T = TypeVar("_T")
-_TE = TypeVar("_TE", bound="TypedElement")
 
 
 def to_children(value: Iterable[Node] | None) -> tuple[Node, ...]:
@@ -488,26 +486,3 @@ def with_attributes(
     if extra:
         fields["extra"] = element.extra.replaced(extra)
     return build_node(type(element), fields, element)
-
-
-def ordered_node(cls: type[_TE], items: Iterable[tuple[str, Any]]) -> _TE:
-    """A ``cls`` node with MJCF attributes ``items``, written in that order.
-
-    Text fields given a number hold its text; numpy values become plain ones.
-
-    Examples:
-        >>> from mjcf_model import Site
-        >>> site = ordered_node(Site, [("size", [0.1]), ("name", "s")])
-        >>> site.size, site.attribute_order
-        ((0.1,), ('size', 'name'))
-
-    """
-    table, converters = field_table(cls), cls.__node_info__.converters
-    changes: dict[str, Value] = {}
-    for name, value in items:
-        value = plain_value(value)
-        if converters.get(table.get(name, "")) is to_str and not isinstance(value, str):
-            value = format_value(value)
-        changes[name] = value
-    element = with_attributes(cls(), changes)
-    return attrs.evolve(element, attribute_order=tuple(changes))

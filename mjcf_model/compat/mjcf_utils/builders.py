@@ -11,7 +11,9 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterable, Mapping
-from typing import Any
+from typing import Any, TypeVar
+
+import attrs
 
 from mjcf_model.compat.mjcf_utils.constants import RED
 from mjcf_model.compat.mjcf_utils.text import convert_to_string
@@ -19,13 +21,14 @@ from mjcf_model.nodes.base import (
     AnyElement,
     AttributeMap,
     GenericElement,
+    TypedElement,
     build_node,
-    ordered_node,
+    field_table,
     with_attributes,
 )
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import child_key, guess_context
-from mjcf_model.values import plain_value
+from mjcf_model.values import Value, format_value, plain_value, to_str
 from serializers.etree import to_etree
 
 __all__ = [
@@ -49,6 +52,32 @@ __all__ = [
 TextRule = Callable[[Any], str] | None
 #: Keyword arguments that stand for another MJCF attribute (``class`` is a Python keyword).
 _KEYWORD_ATTRIBUTES = {"dclass": "class"}
+
+
+_T = TypeVar("_T", bound=TypedElement)
+
+
+def ordered_node(cls: type[_T], items: Iterable[tuple[str, Any]]) -> _T:
+    """A ``cls`` node with MJCF attributes ``items``, written in that order.
+
+    Text fields given a number hold its text; numpy values become plain ones.
+
+    Examples:
+        >>> from mjcf_model import Site
+        >>> site = ordered_node(Site, [("size", [0.1]), ("name", "s")])
+        >>> site.size, site.attribute_order
+        ((0.1,), ('size', 'name'))
+
+    """
+    table, converters = field_table(cls), cls.__node_info__.converters
+    changes: dict[str, Value] = {}
+    for name, value in items:
+        value = plain_value(value)
+        if converters.get(table.get(name, "")) is to_str and not isinstance(value, str):
+            value = format_value(value)
+        changes[name] = value
+    element = with_attributes(cls(), changes)
+    return attrs.evolve(element, attribute_order=tuple(changes))
 
 
 def element_node(
