@@ -17,7 +17,7 @@ from pathlib import Path
 import mujoco
 from hypothesis import HealthCheck, Phase, settings
 
-from tests.plan_counting import plan_calls  # noqa: F401  (a fixture)
+from tests.support.plan_counting import plan_calls  # noqa: F401  (a fixture)
 
 settings.register_profile(  # 60: the two environments' runs fit in 15 minutes on 2 cores
     "ci",

@@ -3,7 +3,7 @@
 The frame is looked up among the parent's frames only, so a body of the same
 name (MuJoCo keeps bodies and frames in separate namespaces) does not make the
 name ambiguous. MuJoCo compiling each part alone is the referee
-(tests/composition_oracle.py): the child's objects hold their own values,
+(tests/support/composition_oracle.py): the child's objects hold their own values,
 placed at the frame.
 """
 
@@ -14,7 +14,7 @@ import mujoco
 from mjcf_model import compiled
 from mjcf_model.transforms.composition.attaching import attach_in_frame
 from serializers import loads
-from tests.composition_oracle import PlacedPart, composition_problems
+from tests.support.composition_oracle import PlacedPart, composition_problems
 
 CHILD = """<mujoco>
   <worldbody><body name="cup" pos="0.1 0 0"><joint name="tilt"/><geom size=".1"/></body></worldbody>

@@ -14,7 +14,7 @@ import pytest
 from mjcf_model import FramePos, Motor
 from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.transforms.composition.attached_parts import element_references
-from tests.attach_files import attached_body
+from tests.support.attach_files import attached_body
 
 #: The attached body: one joint and one geom.
 BODY = '<worldbody><body name="b"><joint name="j1"/><geom size="1"/></body></worldbody>'

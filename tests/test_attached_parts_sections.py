@@ -9,7 +9,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from mjcf_model.bridge.compare import model_differences, path_fields
-from tests.attach_files import attached_body
+from tests.support.attach_files import attached_body
 
 
 def test_sections_after_a_second_worldbody_are_copied(tmp_path: Path) -> None:

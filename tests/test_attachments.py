@@ -25,9 +25,9 @@ from mjcf_model.errors import (
 from mjcf_model.tree.queries import find, find_all, parent_of
 from mjcf_model.tree.traversal import walk
 from serializers import dump, load, loads
-from tests.attach_files import written
 from tests.conftest import FIXTURES, MUJOCO_VERSION, compiling_corpus, corpus_id
-from tests.oracles import prefix_problems, scaled_problems
+from tests.support.attach_files import written
+from tests.support.oracles import prefix_problems, scaled_problems
 
 ATTACHMENTS = FIXTURES / "attachments"
 

@@ -19,7 +19,7 @@ import robosuite.models.objects as rs
 
 from mjcf_model import MjcfLookupError
 from mjcf_model.compat import objects as ours
-from tests.test_compat_objects_support import (
+from tests.support.compat_objects import (
     assert_same_object,
     assert_same_tree,
     assert_same_value,

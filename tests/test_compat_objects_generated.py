@@ -20,7 +20,7 @@ from robosuite.utils.mjcf_utils import CustomMaterial as TheirMaterial
 from mjcf_model import MjcfValueError
 from mjcf_model.compat import CustomMaterial
 from mjcf_model.compat import objects as ours
-from tests.test_compat_objects_support import (
+from tests.support.compat_objects import (
     assert_same_object,
     assert_same_tree,
     assert_same_value,

@@ -9,7 +9,7 @@ import numpy as np
 import robosuite.models.objects as rs
 
 from mjcf_model.compat import objects as ours
-from tests.test_compat_objects_support import assert_same_object
+from tests.support.compat_objects import assert_same_object
 
 _OBJECT = (
     '<mujoco><asset><mesh name="m" file="m.stl" scale="{scale}"/></asset><worldbody><body>'

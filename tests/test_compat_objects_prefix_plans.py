@@ -19,7 +19,7 @@ from robosuite.utils import mjcf_utils as rs
 from mjcf_model.compat.objects import naming
 from mjcf_model.compat.objects.naming import naming_skeleton, robosuite_prefixed
 from serializers import from_etree, to_etree
-from tests.plan_counting import PLANNED_AT_THE_SECOND_COPY
+from tests.support.plan_counting import PLANNED_AT_THE_SECOND_COPY
 
 
 def object_tree(tag: str, size: str) -> Any:

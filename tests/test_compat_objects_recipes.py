@@ -26,9 +26,9 @@ from mjcf_model.bridge.compare import model_differences
 from mjcf_model.compat import CustomMaterial
 from mjcf_model.compat import objects as ours
 from tests.conftest import PER_CLASS
+from tests.support.compat_objects import assert_same_object, assert_same_value, text_of
 from tests.test_compat_objects_composite_body import _world as composite_world
 from tests.test_compat_objects_composite_body import assert_same_composite
-from tests.test_compat_objects_support import assert_same_object, assert_same_value, text_of
 
 #: A material given to cones and hollow cylinders, in each library's class.
 _STEEL = {

@@ -19,7 +19,7 @@ from robosuite.models.world import MujocoWorldBase
 from robosuite.utils.mjcf_utils import GRIPPER_COLLISION_COLOR, CustomMaterial, xml_path_completion
 
 from mjcf_model.compat import objects as ours
-from tests.test_compat_objects_support import (
+from tests.support.compat_objects import (
     assert_same_tree,
     assert_same_value,
     assert_view_matches_model,

@@ -12,7 +12,7 @@ from robosuite.utils.mjcf_utils import xml_path_completion
 
 from mjcf_model import MjcfValueError
 from mjcf_model.compat import objects as ours
-from tests.test_compat_objects_support import (
+from tests.support.compat_objects import (
     assert_same_tree,
     assert_view_matches_model,
     text_of,

@@ -30,7 +30,7 @@ from mjcf_model.bridge.compare import model_differences
 from mjcf_model.compat import mjcf_utils as our_utils
 from mjcf_model.compat import objects as ours
 from tests.conftest import MUJOCO_VERSION
-from tests.test_compat_objects_support import text_of
+from tests.support.compat_objects import text_of
 
 pytestmark = pytest.mark.skipif(
     MUJOCO_VERSION >= (3, 10),

@@ -21,7 +21,7 @@ from robosuite.models import assets_root as RS_ASSETS
 
 from mjcf_model import MjcfLookupError
 from mjcf_model.compat import mjcf_utils as compat_module
-from tests.test_compat_utils_support import (
+from tests.support.compat_utils import (
     CASES,
     comparable,
     differential,

@@ -12,7 +12,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from tests.test_compat_utils_support import differential, ours, rs, tree_bytes
+from tests.support.compat_utils import differential, ours, rs, tree_bytes
 
 SCALE_FUNCTIONS = ["geom", "site", "body", "mesh", "joint"]
 

@@ -28,7 +28,7 @@ from mjcf_model.nodes import Body, Geom, Joint, Mesh, Site
 from mjcf_model.strategies import elements, models
 from serializers import to_etree
 from tests.conftest import corpus_files, corpus_id
-from tests.test_compat_utils_support import (
+from tests.support.compat_utils import (
     CASES,
     at,
     comparable,

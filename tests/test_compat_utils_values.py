@@ -21,7 +21,7 @@ from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 from PIL import Image
 
-from tests.test_compat_utils_support import CASES, comparable, ours, rs, run
+from tests.support.compat_utils import CASES, comparable, ours, rs, run
 
 finite = st.floats(allow_nan=False, allow_infinity=False)
 scalars = (

@@ -1,4 +1,4 @@
-"""The composition check (tests/composing.py) on real models and fixtures, folder by folder."""
+"""The composition check (tests/support/composing.py) on real models and fixtures, by folder."""
 
 from __future__ import annotations
 
@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.composing import STAGES, compose_problems
 from tests.conftest import FIXTURES, compiling_corpus, corpus_id
+from tests.support.composing import STAGES, compose_problems
 
 #: Fixture robots, each in a folder of its own with its own meshes and <compiler>.
 FIXTURE_MODELS = [

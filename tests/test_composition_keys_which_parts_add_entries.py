@@ -5,7 +5,7 @@ joint, an actuator, a mocap body, a ``<key>`` or a ``<size nkey>``
 (mjcf_model/transforms/composition/keyframes.py). When one such part is
 attached between two others in one :func:`mjcf_model.attach_all`, the later
 part's entries must land after its own, so every key is checked, object by
-object, against the parts compiled alone (tests/composition_oracle.py). A part
+object, against the parts compiled alone (tests/support/composition_oracle.py). A part
 with nothing a key sets leaves the parent's keys alone, even a parent whose
 ``<replicate>`` hides where entries would go.
 """
@@ -17,8 +17,8 @@ import pytest
 
 from mjcf_model import GenericElement, Mujoco, Worldbody, attach, attach_all, compiled
 from serializers import loads
-from tests.composition_oracle import PlacedPart, composition_problems
 from tests.conftest import MUJOCO_VERSION
+from tests.support.composition_oracle import PlacedPart, composition_problems
 
 #: A part with every kind of entry: a mocap body, a joint, an actuator and a key setting all.
 FULL = """<mujoco>

@@ -7,7 +7,7 @@ initial one is written even when it is all zeros (MuJoCo keeps a key's
 out: velocities, controls, activations and ``time`` that are zero, and mocap
 poses equal to the initial ones (``SceneKeys.nodes`` in
 mjcf_model/transforms/composition/keyframes.py). Expected values come from
-MuJoCo compiling each part alone (tests/composition_oracle.py).
+MuJoCo compiling each part alone (tests/support/composition_oracle.py).
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ import mujoco
 from mjcf_model import Mujoco, attach, compiled
 from mjcf_model.nodes.base import get_attribute
 from serializers import loads
-from tests.composition_oracle import PlacedPart, composition_problems
+from tests.support.composition_oracle import PlacedPart, composition_problems
 
 #: A parent with no mocap body, whose hinge starts at zero.
 PARENT = """<mujoco>

@@ -1,4 +1,4 @@
-"""The composition oracle (tests/composition_oracle.py): complete, and it finds what is wrong."""
+"""The composition oracle (tests/support/composition_oracle.py): complete; finds what is wrong."""
 
 from __future__ import annotations
 
@@ -11,7 +11,8 @@ import pytest
 from mjcf_model import Mujoco, attach, compiled
 from mjcf_model.bridge.compare import model_fields
 from serializers import load, loads
-from tests.composition_oracle import (
+from tests.conftest import FIXTURES
+from tests.support.composition_oracle import (
     DATA,
     KINDS,
     NOT_COMPARED,
@@ -20,7 +21,6 @@ from tests.composition_oracle import (
     composition_problems,
     field_roles,
 )
-from tests.conftest import FIXTURES
 
 ARM = FIXTURES / "compose" / "arm_radian" / "arm.xml"
 WALKER = FIXTURES / "compose" / "walker_limits" / "walker.xml"

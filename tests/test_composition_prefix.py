@@ -19,7 +19,7 @@ from mjcf_model.transforms.naming.repeated import MARK, PrefixPlan
 from serializers import dumps, load, loads
 from serializers.skins import inline_skin_files
 from tests.conftest import compiling_corpus, corpus_id
-from tests.oracles import prefix_problems
+from tests.support.oracles import prefix_problems
 
 CORPUS = compiling_corpus()
 

@@ -21,7 +21,7 @@ from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.tree.queries import find_all
 from mjcf_model.tree.traversal import walk
 from serializers import load
-from tests.attach_files import written
+from tests.support.attach_files import written
 
 #: A sub-model with one joint and one key, at time 0.5.
 KEYED = (

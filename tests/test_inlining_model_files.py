@@ -21,8 +21,8 @@ from mjcf_model.nodes.body import Worldbody
 from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.tree.traversal import walk
 from serializers import load, loads
-from tests.attach_files import written
 from tests.conftest import MUJOCO_VERSION
+from tests.support.attach_files import written
 
 
 def _differences(path: Path) -> list[str]:

@@ -3,7 +3,7 @@
 :func:`mjcf_model.attach` moves the parent's top-level ``<default>`` settings into
 a class of their own (``main_defaults.with_main_as_class``). MuJoCo is the
 referee: the scene's rows for the parent's objects must equal the parent
-compiled alone (:func:`tests.composition_oracle.composition_problems`), and the
+compiled alone (:func:`tests.support.composition_oracle.composition_problems`), and the
 values checked by name are the ones MuJoCo gives the parent alone.
 """
 
@@ -14,7 +14,7 @@ import numpy as np
 
 from mjcf_model import attach, compiled
 from serializers import loads
-from tests.composition_oracle import PlacedPart, composition_problems
+from tests.support.composition_oracle import PlacedPart, composition_problems
 
 #: A child with a body of its own, whose geom must keep MuJoCo's default colour.
 CHILD = (

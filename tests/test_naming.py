@@ -19,7 +19,7 @@ from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, load, loads, to_dict
 from serializers.skins import inline_skin_files
 from tests.conftest import compiling_corpus, corpus_id
-from tests.oracles import prefix_problems
+from tests.support.oracles import prefix_problems
 
 CORPUS = compiling_corpus()
 

@@ -16,7 +16,7 @@ from mjcf_model.bridge.compare import compile_text_beside, compiled_names, model
 from mjcf_model.nodes.base import get_attribute
 from mjcf_model.transforms.naming.renaming import prefix_map, prefixed, renamed
 from serializers import dumps, load, loads
-from tests.oracles import RENAMING_FIELDS, prefix_problems
+from tests.support.oracles import RENAMING_FIELDS, prefix_problems
 
 ARM = """<mujoco><asset><material name="red" rgba="1 0 0 1"/></asset><worldbody>
   <body name="arm"><joint name="elbow"/><geom name="upper" size="0.1" material="red"/>

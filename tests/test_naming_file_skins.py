@@ -19,8 +19,8 @@ from mjcf_model.bridge.compare import compile_text_beside, compiled_names, model
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.transforms.naming.renaming import prefixed, renamed
 from serializers import dumps, loads
-from tests.oracles import RENAMING_FIELDS
-from tests.skin_files import skin_file
+from tests.support.oracles import RENAMING_FIELDS
+from tests.support.skin_files import skin_file
 
 #: A flexcomp whose three bodies a file skin binds (no named body besides).
 ROPE = """<mujoco><asset><skin name="hide" file="rope.skn"/></asset><worldbody>

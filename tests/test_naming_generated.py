@@ -23,8 +23,8 @@ from mjcf_model.tree.traversal import walk
 from serializers import dumps, from_dict, from_etree, load, loads, to_dict, to_etree
 from serializers.skins import inline_skin_files
 from tests.conftest import FIXTURES, MUJOCO_VERSION
-from tests.oracles import RENAMING_FIELDS, prefix_problems
-from tests.skin_files import skin_file
+from tests.support.oracles import RENAMING_FIELDS, prefix_problems
+from tests.support.skin_files import skin_file
 
 NAMING = FIXTURES / "naming"
 #: Every fixture of this module, the attached parts in ``parts/`` included (hidden files are

@@ -26,7 +26,7 @@ from mjcf_model.transforms.naming.generated_names import (
 )
 from mjcf_model.transforms.naming.renaming import prefixed, renamed
 from serializers import dumps, load, loads
-from tests.oracles import RENAMING_FIELDS, prefix_problems
+from tests.support.oracles import RENAMING_FIELDS, prefix_problems
 
 #: A child model: a root body with two bodies below it, one named like a copy suffix.
 CHILD = """<mujoco model="kid"><worldbody>

@@ -18,8 +18,8 @@ from mjcf_model.nodes.base import AnyElement
 from mjcf_model.transforms.naming.renaming import prefixed
 from mjcf_model.transforms.naming.repeated import PrefixPlan, RepeatedPrefixing
 from serializers import dumps, loads
-from tests.oracles import prefix_problems
-from tests.plan_counting import PLANNED_AT_THE_SECOND_COPY
+from tests.support.oracles import prefix_problems
+from tests.support.plan_counting import PLANNED_AT_THE_SECOND_COPY
 
 BODIES = """<body name="b1" pos="1 0 0"><joint name="j1" type="free"/><geom name="g1" size="0.1"/>
   </body><body name="b2" pos="0 1 0"><joint name="j2" type="free"/><geom name="g2" size="0.1"/>

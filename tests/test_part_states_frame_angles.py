@@ -3,7 +3,7 @@
 The key poses move by the frame's world pose, with the frame's ``euler`` read as
 MuJoCo reads it under the parent's ``<compiler angle eulerseq>``. MuJoCo is the
 referee: the parent compiled alone gives the site's world pose, the part compiled
-alone gives its key (``tests/composition_oracle.py``).
+alone gives its key (``tests/support/composition_oracle.py``).
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ import mujoco
 
 from mjcf_model import attach, compiled
 from serializers import loads
-from tests.composition_oracle import PlacedPart, composition_problems
+from tests.support.composition_oracle import PlacedPart, composition_problems
 
 #: A parent in radians with ``zyx`` Euler angles, and a site inside a turned frame.
 PARENT = """<mujoco>

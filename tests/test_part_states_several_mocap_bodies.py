@@ -3,7 +3,7 @@
 Each mocap body's key pose and the free joint's key pose and linear velocity
 move with the placement, entry by entry, whatever their place in the arrays;
 the other joints' values stay. MuJoCo is the referee: the part compiled alone,
-moved with MuJoCo's quaternion functions (``tests/composition_oracle.py``).
+moved with MuJoCo's quaternion functions (``tests/support/composition_oracle.py``).
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ import mujoco
 
 from mjcf_model import attach, compiled
 from serializers import loads
-from tests.composition_oracle import PlacedPart, composition_problems
+from tests.support.composition_oracle import PlacedPart, composition_problems
 
 #: A hinge, a free body and a slide (the free joint's entries are in the middle of
 #: ``qpos`` and ``qvel``), then three mocap bodies, each with its own key pose.

@@ -22,8 +22,8 @@ from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import map_tree
 from serializers import dumps, load, loads, to_dict
 from tests.conftest import compiling_corpus, corpus_id
-from tests.oracles import trees_close
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.oracles import trees_close
+from tests.support.scaling_oracle import scaled_model_problems
 
 CORPUS = compiling_corpus()
 

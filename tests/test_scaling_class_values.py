@@ -14,7 +14,7 @@ from mjcf_model.nodes.base import AnyElement, get_attribute
 from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.queries import find
 from serializers import dumps, loads
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.scaling_oracle import scaled_model_problems
 
 #: A box site of a class writing one size of three, and one of a class writing all three.
 CLASSES = """

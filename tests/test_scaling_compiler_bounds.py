@@ -16,7 +16,7 @@ import pytest
 from mjcf_model.nodes.base import get_attribute
 from mjcf_model.transforms.scaling.transform import MassPolicy, scaled
 from serializers import dumps, loads
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.scaling_oracle import scaled_model_problems
 
 #: A body whose mass and inertia MuJoCo raises to the bounds, and one above them.
 _MODEL = """<mujoco><compiler boundmass="0.5" boundinertia="0.01"/><worldbody>

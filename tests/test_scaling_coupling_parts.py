@@ -17,7 +17,7 @@ from mjcf_model.transforms.scaling.rules import RULES
 from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import with_children
 from serializers import dumps, loads
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.scaling_oracle import scaled_model_problems
 
 #: Couplings of one object (held at ``a0``) and of two, of angles, and a connect anchor.
 _MODEL = """<mujoco><worldbody>

@@ -14,7 +14,7 @@ import pytest
 
 from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, loads
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.scaling_oracle import scaled_model_problems
 
 #: Slide joints on two axes and a hinge; a spatial tendon whose spring length MuJoCo
 #: measures (``-1 -1``); fixed tendons over hinges only, slides only and both; tendon

@@ -17,7 +17,7 @@ from mjcf_model.nodes.base import AnyElement, get_attribute
 from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.queries import find
 from serializers import dumps, from_etree, loads
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.scaling_oracle import scaled_model_problems
 
 #: World geoms, directly and in a frame; body geoms, directly, in a frame and by class.
 PLACES = """

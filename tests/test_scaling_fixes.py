@@ -25,9 +25,9 @@ from mjcf_model.transforms.scaling.plugins import SDF_LENGTHS
 from mjcf_model.transforms.scaling.transform import MassPolicy, scaled
 from serializers import dumps, from_etree, load, loads
 from tests.conftest import PER_CLASS
-from tests.oracles import friction_problems, scaled_problems
-from tests.scaling_oracle import scaled_model_problems
-from tests.skin_files import skin_file
+from tests.support.oracles import friction_problems, scaled_problems
+from tests.support.scaling_oracle import scaled_model_problems
+from tests.support.skin_files import skin_file
 from tests.test_properties import CLASSES
 
 FIXTURES = Path(__file__).parent / "fixtures" / "scaling"

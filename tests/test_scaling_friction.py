@@ -15,8 +15,8 @@ from mjcf_model import Body, Geom, Mujoco, Worldbody
 from mjcf_model.nodes.base import AnyElement
 from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, loads
-from tests.oracles import friction_problems
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.oracles import friction_problems
+from tests.support.scaling_oracle import scaled_model_problems
 
 #: Two geoms touching the world, so a pair between them compiles.
 _PAIRED = '<geom name="a" size="0.1"/><geom name="b" size="0.1" pos="1 0 0"/>'

@@ -14,7 +14,7 @@ from mjcf_model import Default, Geom
 from mjcf_model.nodes.base import get_attribute
 from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, loads
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.scaling_oracle import scaled_model_problems
 
 #: A model with a top-level ``<default>`` (a class only) and geoms without friction.
 CLASSED = """

@@ -1,7 +1,7 @@
 """Scaled keyframes: each ``qpos``, ``qvel`` and ``ctrl`` entry scales as its joint or actuator.
 
 MuJoCo compiles the original and the scaled model; the oracle
-(:func:`tests.scaling_oracle.scaled_model_problems`) and the compiled ``key_*``
+(:func:`tests.support.scaling_oracle.scaled_model_problems`) and the compiled ``key_*``
 arrays say which entries are lengths: a free joint's position and linear velocity
 and a slide joint's coordinate are, wherever the joint stands in ``qpos``; the
 control of a position servo on a slide joint is, and a ``<config>`` setting of a
@@ -22,7 +22,7 @@ from mjcf_model.transforms.scaling.rules import RULES
 from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import map_elements
 from serializers import dumps, loads
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.scaling_oracle import scaled_model_problems
 
 #: A slide joint before a free joint in ``qpos`` (the free joint's entries start at 1).
 _SLIDE_THEN_FREE = """<mujoco><worldbody>

@@ -1,7 +1,7 @@
 """The complete scaling oracle: every float field classified, and the bugs it catches.
 
 MuJoCo compiles each model before and after scaling; :func:`scaled_model_problems`
-states the expected change of every field (:mod:`tests.compiled_fields`).
+states the expected change of every field (:mod:`tests.support.compiled_fields`).
 """
 
 from __future__ import annotations
@@ -12,8 +12,8 @@ import pytest
 
 from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, loads
-from tests.compiled_fields import FLOAT_FIELDS, float_fields
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.compiled_fields import FLOAT_FIELDS, float_fields
+from tests.support.scaling_oracle import scaled_model_problems
 
 
 def _compiled_pair(text: str, factor: float) -> tuple[mujoco.MjModel, mujoco.MjModel]:

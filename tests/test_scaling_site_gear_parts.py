@@ -16,7 +16,7 @@ import pytest
 
 from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, loads
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.scaling_oracle import scaled_model_problems
 
 _MODEL = """<mujoco><worldbody>
   <site name="ref"/>

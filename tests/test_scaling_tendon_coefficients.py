@@ -15,7 +15,7 @@ from mjcf_model.transforms.scaling.rules import RULES
 from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.defaults import DefaultClasses
 from serializers import dumps, loads
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.scaling_oracle import scaled_model_problems
 
 #: Fixed tendons over two slides and over two hinges, no length written.
 _MODEL = """<mujoco><worldbody><body>

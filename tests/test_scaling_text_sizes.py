@@ -15,7 +15,7 @@ from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import keyed_walk, map_elements
 from mjcf_model.values import format_value
 from serializers import dumps, loads
-from tests.scaling_oracle import scaled_model_problems
+from tests.support.scaling_oracle import scaled_model_problems
 
 #: Geoms of each size length, with classes completing and overriding sizes.
 _GEOMS = """<mujoco><default><default class="thin"><geom size=".02 .3"/></default></default>

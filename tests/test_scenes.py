@@ -1,4 +1,4 @@
-"""The scene check (tests/scenes.py) on robosuite's and dm_control's robots and on fixtures.
+"""The scene check (tests/support/scenes.py) on robosuite's and dm_control's robots and on fixtures.
 
 Each case is one robot attached twice beside a placed free box; each stage of the check is
 its own test, so a failure names the case, the stage, the part and the body.
@@ -18,7 +18,7 @@ import pytest
 
 from mjcf_model import Mujoco, attach, get_attribute, with_attributes
 from mjcf_model.tree.traversal import map_elements
-from tests.scenes import STAGES, Part, home_key, main, scene_layout, scene_problems
+from tests.support.scenes import STAGES, Part, home_key, main, scene_layout, scene_problems
 
 SCENES = Path(__file__).parent / "fixtures" / "scenes"
 
@@ -158,7 +158,7 @@ def test_the_check_names_a_key_with_wrong_controls(tmp_path: Path) -> None:
 
 
 def test_the_command_line_prints_each_stage(capsys: pytest.CaptureFixture[str]) -> None:
-    """``python -m tests.scenes`` prints a line per stage and the passes per stage."""
+    """``python -m tests.support.scenes`` prints a line per stage and the passes per stage."""
     main([str(SCENES / "filter_arm.xml")])
     lines = capsys.readouterr().out.splitlines()
     assert [line.split()[3] for line in lines[:-1]] == [f"{stage}:" for stage in STAGES]

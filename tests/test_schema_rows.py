@@ -1,6 +1,6 @@
 """Every reference row of the namespace table, prefixed and refereed by MuJoCo.
 
-Each row has a model of its own (``tests/schema_cases.py``). MuJoCo must compile
+Each row has a model of its own (``tests/support/schema_cases.py``). MuJoCo must compile
 the prefixed model to the original's arrays with every name prefixed, and must
 reject the model when that one reference names nothing: so the row's reference
 is one MuJoCo reads, and a prefix that skips it fails here.
@@ -20,9 +20,9 @@ from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.transforms.naming.renaming import prefixed
 from mjcf_model.tree.traversal import keyed_walk, map_elements
 from serializers import loads
-from tests.oracles import prefix_problems
-from tests.schema_cases import UNUSABLE, known, reference_cases, reference_rows
-from tests.schema_model import Case
+from tests.support.oracles import prefix_problems
+from tests.support.schema_cases import UNUSABLE, known, reference_cases, reference_rows
+from tests.support.schema_model import Case
 
 CASES = reference_cases()
 ROWS = sorted(CASES)

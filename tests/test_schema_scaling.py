@@ -1,6 +1,6 @@
 """Every length attribute the scaling rules scale, set on a small model and refereed by MuJoCo.
 
-Each case (``tests/scale_cases.py``) sets one attribute; scaling the model by 2 must
+Each case (``tests/support/scale_cases.py``) sets one attribute; scaling the model by 2 must
 multiply the value MuJoCo compiles from it by 2 (an area by 4). Every attribute that
 :func:`scaled` changes on these models must have a case of its own.
 """
@@ -21,9 +21,9 @@ from mjcf_model.transforms.scaling.rules import RULES
 from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import keyed_walk
 from serializers import loads
-from tests.scale_cases import UNCHECKED, scale_cases
-from tests.scale_elements import ScaleCase
-from tests.schema_cases import known, reference_cases
+from tests.support.scale_cases import UNCHECKED, scale_cases
+from tests.support.scale_elements import ScaleCase
+from tests.support.schema_cases import known, reference_cases
 
 CASES = scale_cases()
 FACTOR = 3.0  # not 2, where doubling, squaring and adding agree

@@ -1,7 +1,7 @@
 """The scaling cases of joints, geoms, sites, cameras, lights and pairs, and what cases are.
 
 Each :class:`ScaleCase` sets one attribute of one schema key on the base model of
-:mod:`tests.schema_cases`, and says where MuJoCo's compiled model holds its value:
+:mod:`tests.support.schema_cases`, and says where MuJoCo's compiled model holds its value:
 scaling by 2 must multiply that value by ``2 ** power`` (1 for a length, 2 for an area).
 """
 
@@ -14,7 +14,7 @@ import attrs
 import mujoco
 import numpy as np
 
-from tests.schema_model import model
+from tests.support.schema_model import model
 
 
 @attrs.frozen

@@ -5,7 +5,6 @@ input and compares the resulting trees (``ET.tostring`` bytes), the return
 values (elements by their position in their own tree) and the exception types.
 ``CASES`` counts the cases per function; with ``COMPAT_UTILS_CASES=<file>`` in
 the environment each test process appends its counts to that file as JSON.
-(This module holds no tests.)
 """
 
 from __future__ import annotations

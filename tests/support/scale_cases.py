@@ -1,7 +1,7 @@
 """One small model per length attribute the scaling rules scale, with the compiled value to check.
 
-Each :class:`~tests.scale_elements.ScaleCase` sets one attribute of one schema key on
-the base model of :mod:`tests.schema_model`, and says where MuJoCo's compiled model
+Each :class:`~tests.support.scale_elements.ScaleCase` sets one attribute of one schema key on
+the base model of :mod:`tests.support.schema_model`, and says where MuJoCo's compiled model
 holds its value: scaling by 2 must multiply that value by ``2 ** power``.
 """
 
@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from tests.scale_elements import SLIDER, ScaleCase, element_cases, of, setting, whole
-from tests.schema_devices import ACTUATOR_SETTINGS as _ACTUATOR_SETTINGS
-from tests.schema_model import model
+from tests.support.scale_elements import SLIDER, ScaleCase, element_cases, of, setting, whole
+from tests.support.schema_devices import ACTUATOR_SETTINGS as _ACTUATOR_SETTINGS
+from tests.support.schema_model import model
 
 #: An irregular tetrahedron (as the base model's ``tet``): no two principal inertias tie,
 #: so MuJoCo's mesh frame does not turn with the rounding of a scaled copy.

@@ -1,7 +1,7 @@
 """The complete scaling oracle: every compiled field has its expected change, MuJoCo compiles both.
 
 :func:`scaled_model_problems` multiplies each float array of the original model
-by its kind's factor (:data:`tests.compiled_fields.FLOAT_FIELDS`) and requires the
+by its kind's factor (:data:`tests.support.compiled_fields.FLOAT_FIELDS`) and requires the
 scaled model's array to match; every other array and size, and the ``opt``,
 ``stat`` and ``vis`` structs, must be unchanged, but for the few stated here.
 """
@@ -14,8 +14,8 @@ from typing import Any
 import numpy as np
 
 from mjcf_model.bridge.compare import model_differences, model_fields, path_fields
-from tests.compiled_fields import FLOAT_FIELDS, float_fields
 from tests.conftest import MUJOCO_VERSION
+from tests.support.compiled_fields import FLOAT_FIELDS, float_fields
 
 __all__ = ["MESH_ARRAYS_COMPARABLE", "scaled_model_problems"]
 

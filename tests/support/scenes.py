@@ -23,7 +23,7 @@ and :func:`scene_problems` reports, stage by stage, what keeps it from being rig
 
 MuJoCo on the parts alone is the referee: the placements come from the floor compiled
 with probe bodies (``MjSpec``), the poses from each part compiled on its own. Run it
-on your own models with ``python -m tests.scenes A.xml B.xml ...`` from a checkout (a
+on your own models with ``python -m tests.support.scenes A.xml B.xml ...`` from a checkout (a
 model without keys gets a ``home`` key drawn within its joint ranges).
 """
 
@@ -43,7 +43,8 @@ import numpy as np
 from mjcf_model import Mujoco, attach, compiled
 from mjcf_model.nodes.keyframe import Key, Keyframe
 from serializers import dump, export, load
-from tests.composing import same_model
+from tests.conftest import FIXTURES
+from tests.support.composing import same_model
 
 __all__ = [
     "BOX",
@@ -58,7 +59,8 @@ __all__ = [
 
 #: The stages of the check, in order.
 STAGES = ("compiled", "initial", "keys", "files", "merged")
-SCENES = Path(__file__).parent / "fixtures" / "scenes"
+#: The scene fixtures.
+SCENES = FIXTURES / "scenes"
 #: The parent of every scene, and the free object placed in it.
 FLOOR, BOX = SCENES / "floor.xml", SCENES / "box.xml"
 #: The counts that add up over the parts.

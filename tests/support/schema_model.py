@@ -1,7 +1,7 @@
 """The base model of the schema cases: one model, with every namespace's names its own.
 
 The body ``arm``, the joint ``hinge``, the site ``shoulder``, the tendon ``cord``...:
-each case adds what its row needs to this model (see :mod:`tests.schema_cases`).
+each case adds what its row needs to this model (see :mod:`tests.support.schema_cases`).
 """
 
 from __future__ import annotations

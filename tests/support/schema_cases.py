@@ -22,8 +22,8 @@ import mujoco
 
 from mjcf_model.schema.namespaces import SCHEMA
 from tests.conftest import printed_schema
-from tests.schema_devices import actuator_case, sensor_case
-from tests.schema_model import Case, model
+from tests.support.schema_devices import actuator_case, sensor_case
+from tests.support.schema_model import Case, model
 
 _TORUS = (
     '<plugin plugin="mujoco.sdf.torus"><instance name="ring">'

@@ -6,7 +6,7 @@ References that exclude each other (an actuator's ``joint``, ``tendon``, ``site`
 
 from __future__ import annotations
 
-from tests.schema_model import model
+from tests.support.schema_model import model
 
 # -- actuators ------------------------------------------------------------------------------
 

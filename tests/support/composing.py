@@ -6,7 +6,7 @@ and ``<compiler>``), :func:`compose_problems` builds
 stage, what keeps the scene from being right:
 
 1. ``compiled``: the scene compiles in memory and is exactly its parts
-   (tests/composition_oracle.py): its counts are the sums and every per-object
+   (tests/support/composition_oracle.py): its counts are the sums and every per-object
    array of every part's objects (bodies, joints, geoms... meshes, keys) holds
    the values MuJoCo gives them in their own file;
 2. ``dump``: the scene dumped into a fresh folder compiles from there to the
@@ -14,7 +14,7 @@ stage, what keeps the scene from being right:
 3. ``export``: the exported folder, moved, compiles to the identical model.
 
 MuJoCo compiling each file on its own is the referee. Run it over any two
-folders of models with ``python -m tests.composing A.xml B.xml ...``.
+folders of models with ``python -m tests.support.composing A.xml B.xml ...``.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ import mujoco
 from mjcf_model import Mujoco, attach, compiled
 from mjcf_model.bridge.compare import model_differences, path_fields
 from serializers import dump, export, load
-from tests.composition_oracle import PlacedPart, composition_problems
+from tests.support.composition_oracle import PlacedPart, composition_problems
 
 __all__ = ["STAGES", "Outcome", "compose_problems"]
 
