@@ -13,58 +13,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from tests.test_cli_verbs import run
-
-#: The base: degrees and a z-y-x Euler sequence (euler= is read so), and a turned table.
-BASE = """<mujoco model="base">
-  <compiler angle="degree" eulerseq="zyx"/>
-  <worldbody>
-    <geom name="floor" type="plane" size="5 5 0.1"/>
-    <body name="table" pos="0.3 -0.2 0.5" euler="25 0 0">
-      <geom type="box" size="0.3 0.3 0.02"/>
-    </body>
-  </worldbody>
-</mujoco>
-"""
-#: A free-floating box with a lid on it, turned; no keyframes.
-FREE = """<mujoco model="box">
-  <worldbody>
-    <body name="box" pos="0.1 0.2 0.3" quat="0.9 0.1 0.3 0.2">
-      <freejoint/>
-      <geom type="box" size="0.1 0.1 0.1"/>
-      <body name="lid" pos="0 0.05 0.12" euler="0.2 0 0.4">
-        <geom type="box" size="0.1 0.1 0.01"/>
-      </body>
-    </body>
-  </worldbody>
-</mujoco>
-"""
-#: A fixed-base arm (radians) with a keyframe.
-ARM = """<mujoco model="arm">
-  <worldbody>
-    <body name="base" pos="0 0 0.1" euler="0 0 0.3">
-      <geom type="cylinder" size="0.05 0.05"/>
-      <body name="upper" pos="0 0 0.1" euler="0.4 0 0">
-        <joint name="shoulder" axis="0 1 0"/>
-        <geom type="capsule" fromto="0 0 0 0 0 0.3" size="0.03"/>
-        <body name="fore" pos="0 0 0.3" euler="0 0.5 0">
-          <joint name="elbow" axis="0 1 0"/>
-          <geom type="capsule" fromto="0 0 0 0 0 0.25" size="0.02"/>
-        </body>
-      </body>
-    </body>
-  </worldbody>
-  <keyframe><key name="bent" qpos="0.5 -1"/></keyframe>
-</mujoco>
-"""
-
-
-def _files(tmp_path: Path) -> dict[str, Path]:
-    """The base, the free box and the arm, each written to its own file in ``tmp_path``."""
-    files = {name: tmp_path / f"{name}.xml" for name in ("base", "free", "arm")}
-    for name, text in (("base", BASE), ("free", FREE), ("arm", ARM)):
-        files[name].write_text(text)
-    return files
+from tests.support.cli import _files, run
 
 
 def _poses(model: mujoco.MjModel) -> mujoco.MjData:

@@ -14,6 +14,7 @@ import pytest
 
 from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.tools.cli import main
+from tests.support.cli import UNTIDY, run
 
 VERBS = (
     "check",
@@ -27,29 +28,6 @@ VERBS = (
     "render",
     "examples",
 )
-
-#: A model with a default class, written untidily (a one-attribute edit is made to it).
-UNTIDY = """<mujoco model="arm">
-<default><default class="red"><geom rgba="1 0 0 1"/></default></default>
-<worldbody>   <body name="arm" childclass="red"><joint name="elbow" type="hinge"/>
-<geom name="upper" size="0.10  0.2" type="capsule"/><site name="tip" pos="0 0 .3"/></body>
-<camera name="front" pos="0 -2 0.3" xyaxes="1 0 0 0 0 1"/><light pos="0 0 3"/>
-</worldbody></mujoco>
-"""
-
-
-def run(
-    *arguments: str, stdin: str | None = None, cwd: Path | None = None
-) -> subprocess.CompletedProcess[str]:
-    """``mjcf-model ARGUMENTS`` in a fresh process, as a user runs it."""
-    return subprocess.run(
-        [sys.executable, "-m", "mjcf_model", *arguments],
-        input=stdin,
-        capture_output=True,
-        text=True,
-        check=False,
-        env={k: v for k, v in os.environ.items() if k != "MUJOCO_GL"},
-    )
 
 
 @pytest.mark.parametrize("verb", VERBS)

@@ -11,15 +11,14 @@ import mujoco
 import numpy as np
 import pytest
 import robosuite.models.objects as rs
-from robosuite.models.world import MujocoWorldBase
 from robosuite.utils.mjcf_utils import CustomMaterial as TheirMaterial
 
 from mjcf_model import MjcfLookupError, MjcfValueError
 from mjcf_model.compat import CustomMaterial
 from mjcf_model.compat import objects as ours
 from tests.support.compat_objects import (
-    assert_same_object,
-    assert_same_value,
+    assert_same_composite,
+    composite_world,
     text_of,
 )
 
@@ -145,20 +144,6 @@ def _specs(kwargs: dict[str, Any]) -> tuple[Any, Any]:
     return kwargs.get("joints"), kwargs.get("body_joints")
 
 
-def assert_same_composite(mine: Any, theirs: Any) -> None:
-    """Same object as robosuite's, byte for byte once white space is stripped, and bookkeeping."""
-    assert_same_object(mine, theirs)
-    assert text_of(mine.get_obj()) == text_of(theirs.get_obj())
-    assert text_of(mine.asset) == text_of(theirs.asset)
-    assert mine._object_absolute_positions.keys() == theirs._object_absolute_positions.keys()
-    for key, value in theirs._object_absolute_positions.items():
-        assert_same_value(mine._object_absolute_positions[key], value, key)
-    assert_same_value(mine._top, theirs._top, "top")
-    assert_same_value(mine._bottom, theirs._bottom, "bottom")
-    assert mine.joint_specs == theirs.joint_specs and mine.site_specs == theirs.site_specs
-    assert mine.object_parents == theirs.object_parents
-
-
 def test_hinged_box_golden() -> None:
     """HingedBoxObject("hb") is robosuite's: body, assets, names, offsets (golden check 10)."""
     theirs, mine = rs.HingedBoxObject("hb"), ours.HingedBoxObject("hb")
@@ -243,14 +228,6 @@ def test_isinstance_robosuite_twins() -> None:
     assert not isinstance(mine, rs.CompositeObject)
 
 
-def _world(objects: list[Any]) -> MujocoWorldBase:
-    world = MujocoWorldBase()
-    for obj in objects:
-        world.merge_assets(obj)
-        world.worldbody.append(obj.get_obj())
-    return world
-
-
 def _names(model: Any, kind: Any, count: int) -> list[str]:
     return [mujoco.mj_id2name(model, kind, i) for i in range(count)]
 
@@ -263,7 +240,7 @@ def test_world_with_composites_compiles() -> None:
         objects = [module.HingedBoxObject("hb"), _build(library, "two_boxes")[0]]
         objects.append(_build(library, "negative", name="neg")[0])
         objects[1].get_obj().set("pos", "0.3 0 0.2")
-        world = _world(objects)
+        world = composite_world(objects)
         model = world.get_model(mode="mujoco")
         data = mujoco.MjData(model)
         for _ in range(50):

@@ -9,15 +9,7 @@ import numpy as np
 import robosuite.models.objects as rs
 
 from mjcf_model.compat import objects as ours
-from tests.support.compat_objects import assert_same_object
-
-_OBJECT = (
-    '<mujoco><asset><mesh name="m" file="m.stl" scale="{scale}"/></asset><worldbody><body>'
-    '<body name="object"><geom name="shell" type="box" size="0.1 0.1 0.1" group="0"/>'
-    '<site name="tip" pos="0 0 0.1"/></body>'
-    '<site name="bottom_site" pos="0 0 -0.1"/><site name="top_site" pos="0 0 0.1"/>'
-    '<site name="horizontal_radius_site" pos="0.1 0 0"/></body></worldbody></mujoco>'
-)
+from tests.support.compat_objects import _OBJECT, assert_same_object
 
 
 def test_primitives_of_other_sizes_and_names_match_robosuite() -> None:

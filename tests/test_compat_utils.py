@@ -23,6 +23,8 @@ from mjcf_model import MjcfLookupError
 from mjcf_model.compat import mjcf_utils as compat_module
 from tests.support.compat_utils import (
     CASES,
+    E2,
+    RS_CONSTANTS,
     comparable,
     differential,
     ours,
@@ -36,9 +38,6 @@ RS_FUNCTIONS = sorted(
     name
     for name, value in vars(rs).items()
     if callable(value) and getattr(value, "__module__", None) == rs.__name__
-)
-RS_CONSTANTS = sorted(
-    name for name, value in vars(rs).items() if name.isupper() and not inspect.ismodule(value)
 )
 
 
@@ -157,15 +156,6 @@ def test_golden_constructors(function: str, args: Any, kwargs: Any, xml: str) ->
 
 
 # -- golden check 3: add_prefix -------------------------------------------------------------
-
-E2 = (
-    '<body name="b" childclass="c"><geom name="g" material="m" mesh="p_mesh" class="k"/>'
-    '<joint name="j"/><site name="s" type="sphere"/><weld body1="b" body2="x"/>'
-    '<camera name="cam" mode="fixed"/><light name="l"/>'
-    '<foo name="f" rgba="1 0 0 1" texture="t"/><exclude body1="a" body2="b"/>'
-    '<pair geom1="g" geom2="h"/><motor joint="j" name="mot"/>'
-    '<fixed name="fx"><joint joint="j" coef="1"/></fixed></body>'
-)
 E2_PREFIXED = (
     '<body name="p_b" childclass="p_c"><geom name="p_g" material="p_m" mesh="p_mesh" '
     'class="p_k" /><joint name="p_j" /><site name="p_s" type="sphere" />'

@@ -10,7 +10,6 @@ robosuite gives on the input it can read.
 
 from __future__ import annotations
 
-import copy
 import warnings
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -29,27 +28,27 @@ from mjcf_model.strategies import elements, models
 from serializers import to_etree
 from tests.conftest import corpus_files, corpus_id
 from tests.support.compat_utils import (
-    CASES,
+    TAGS,
+    _parts,
     at,
-    comparable,
+    check_by_substring,
     differential,
+    element_filters,
+    find_parents,
     messy_trees,
+    name_sets,
     named_elements,
-    ours,
-    paths,
+    prefix_logging,
+    prefix_twice,
+    prefixes,
     rs,
-    run,
+    scale_each,
+    scale_model,
+    tag_filter,
 )
 
 CORPUS = corpus_files()
-
-TAGS = ["geom", "body", "joint", "site", "material", "texture", "motor", "default", "worldbody"]
-TAGS += ["mujoco", "camera", "light", "tendon", "fixed", "position", "touch", "freejoint"]
 ATTRIBUTES = [*sorted(MUJOCO_NAMED_ATTRIBUTES), "rgba", "refname", "site1", "file"]
-
-prefixes = st.sampled_from(["p_", "", "body", "geom0", "b", "class", "mat", "p"]) | st.text(
-    "abgp_0", max_size=4
-)
 tag_choices = (
     st.just("default")
     | st.sampled_from(TAGS)
@@ -60,10 +59,6 @@ attribute_choices = (
     st.just("default")
     | st.sampled_from(ATTRIBUTES)
     | st.lists(st.sampled_from(ATTRIBUTES), max_size=4)
-)
-name_sets = st.frozensets(
-    st.sampled_from(["body0", "geom0", "geom1", "joint0", "material0", "class0", "p_x", ""]),
-    max_size=3,
 )
 scales = (
     st.integers(1, 4)
@@ -90,129 +85,9 @@ def _quiet(operation: Any) -> Any:
 # -- operations shared by the generated and the corpus cases -----------------------------
 
 
-def prefix_twice(prefix: str, **options: Any) -> Any:
-    """``add_prefix`` applied twice with the same arguments."""
-
-    def operation(module: Any, root: ET.Element) -> Any:
-        return [module.add_prefix(root, prefix, **options) for _ in range(2)]
-
-    return operation
-
-
-def prefix_logging(prefix: str, names: frozenset[str], tags: Any, attribs: Any) -> Any:
-    """``add_prefix`` with an ``exclude`` that logs its calls; the result is the log.
-
-    Each element call is followed by the values asked about on that element,
-    sorted: robosuite asks in the iteration order of a set, which depends on
-    how the interpreter built the set (and on the hash seed).
-    """
-
-    def operation(module: Any, root: ET.Element) -> Any:
-        positions = paths(root)
-        log: list[Any] = []
-
-        def exclude(item: Any) -> bool:
-            if isinstance(item, str):
-                log[-1][1].append(item)
-                return item in names
-            log.append((positions[id(item)], []))
-            return item.get("name") in names
-
-        module.add_prefix(root, prefix, tags=tags, attribs=attribs, exclude=exclude)
-        return [(position, sorted(values)) for position, values in log]
-
-    return operation
-
-
-def _substring_oracle(root: ET.Element, tags: Any, substrings: list[str]) -> list[ET.Element]:
-    found = rs.find_elements(root, tags, return_first=False) or []
-    return [
-        e
-        for e in found
-        if e.get("name") is not None and any(s in e.get("name") for s in substrings)
-    ]
-
-
-def check_by_substring(root: ET.Element, tags: Any, substrings: list[str]) -> None:
-    """Compare ``find_elements_by_substring`` in both modes with robosuite.
-
-    Where robosuite crashes (unnamed elements) or errs (``return_first``), the
-    expected result is robosuite's ``find_elements`` list without unnamed elements.
-    """
-    theirs_root, our_root = copy.deepcopy(root), copy.deepcopy(root)
-    theirs, their_error = run(rs.find_elements_by_substring, theirs_root, tags, substrings)
-    mine = ours.find_elements_by_substring(our_root, tags, substrings)
-    CASES["find_elements_by_substring"] += 1
-    oracle = _substring_oracle(theirs_root, tags, substrings)
-    if their_error is TypeError:
-        CASES["find_elements_by_substring (robosuite crashes on unnamed)"] += 1
-        theirs = oracle or None
-    mine_first = ours.find_elements_by_substring(our_root, tags, substrings, return_first=True)
-    CASES["find_elements_by_substring (return_first)"] += 1
-    ours_pos, theirs_pos = paths(our_root), paths(theirs_root)
-    assert comparable(mine, ours_pos) == comparable(theirs, theirs_pos)
-    first = oracle[0] if oracle else None
-    assert comparable(mine_first, ours_pos) == comparable(first, theirs_pos)
-
-
-def _parts(root: ET.Element) -> tuple[ET.Element, ET.Element]:
-    """The worldbody (or the root) and the asset section (or an empty one) of a tree."""
-    worldbody = root.find("worldbody")
-    asset = root.find("asset")
-    return (root if worldbody is None else worldbody), (
-        ET.Element("asset") if asset is None else asset
-    )
-
-
-def scale_model(scale: Any, sites: bool, slide: bool) -> Any:
-    """``scale_mjcf_model`` on the tree's worldbody and assets."""
-
-    def operation(module: Any, root: ET.Element) -> Any:
-        worldbody, asset = _parts(root)
-        return module.scale_mjcf_model(
-            worldbody,
-            asset,
-            scale,
-            module.get_elements,
-            worldbody=worldbody if sites else None,
-            scale_slide_joints=slide,
-        )
-
-    return operation
-
-
-def scale_each(function: str, tag: str, scale: Any, *extra: Any) -> Any:
-    """``scale_<x>_element`` on every element of ``tag`` in the tree, in document order."""
-
-    def operation(module: Any, root: ET.Element) -> Any:
-        array = module.normalize_scale_array(scale)
-        return [getattr(module, function)(e, array, *extra) for e in root.iter(tag)]
-
-    return operation
-
-
-def element_filters(module: Any, root: ET.Element) -> Any:
-    """``_element_filter`` on every (element, parent) pair, and on the root without parent."""
-    return [module._element_filter(root, None)] + [
-        module._element_filter(child, parent) for parent in root.iter() for child in parent
-    ]
-
-
 def find_with(tags: Any, attribs: Any, return_first: bool) -> Any:
     """``find_elements`` with these arguments."""
     return lambda m, r: m.find_elements(r, tags, attribs, return_first)
-
-
-def tag_filter(element: ET.Element, parent: ET.Element | None) -> Any:
-    """A custom ``sort_elements`` filter: the tag, for elements that have a parent."""
-    return element.tag if parent is not None and isinstance(element.tag, str) else None
-
-
-def find_parents(module: Any, root: ET.Element) -> Any:
-    """``find_parent`` for up to 25 elements of the tree, the root and a foreign element."""
-    every = list(root.iter())
-    targets = [*every[:: max(1, len(every) // 25)], root, ET.Element("geom")]
-    return [module.find_parent(root, target) for target in targets]
 
 
 def corpus_cases(root: ET.Element) -> list[tuple[str, Any, bool]]:

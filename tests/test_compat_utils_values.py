@@ -18,36 +18,20 @@ from typing import Any
 import numpy as np
 from hypothesis import given
 from hypothesis import strategies as st
-from hypothesis.extra import numpy as hnp
 from PIL import Image
 
-from tests.support.compat_utils import CASES, comparable, ours, rs, run
+from tests.support.compat_utils import (
+    CASES,
+    arrays,
+    comparable,
+    finite,
+    ours,
+    rs,
+    run,
+    scalars,
+    values,
+)
 
-finite = st.floats(allow_nan=False, allow_infinity=False)
-scalars = (
-    st.integers(-(10**6), 10**6) | st.floats() | st.booleans() | st.text(max_size=4) | st.none()
-)
-numpy_scalars = (
-    st.floats(width=32).map(np.float32)
-    | st.floats().map(np.float64)
-    | st.integers(-1000, 1000).map(np.int64)
-    | st.booleans().map(np.bool_)
-    | st.text(max_size=3).map(np.str_)
-)
-arrays = hnp.arrays(
-    dtype=st.sampled_from([np.float64, np.float32, np.int64, np.bool_]),
-    shape=hnp.array_shapes(min_dims=1, max_dims=2, min_side=0, max_side=4),
-)
-sequences = (
-    st.lists(scalars | numpy_scalars, max_size=5) | st.lists(finite, max_size=4).map(tuple) | arrays
-)
-values = (
-    scalars
-    | numpy_scalars
-    | sequences
-    | st.dictionaries(st.text(max_size=2), finite, max_size=2)
-    | st.sets(st.integers(0, 5), max_size=3)
-)
 texts = st.lists(
     st.sampled_from(["0", "1", "-2.5", "1e-3", "+.5", "None", "inf", "nan", "x", "", " ", "\t"]),
     max_size=5,

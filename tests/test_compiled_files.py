@@ -25,9 +25,9 @@ from mjcf_model import MjcfAssetError, compiled, scaled
 from mjcf_model.bridge import compiling
 from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.files.png import png_bytes
-from mjcf_model.values import format_float
 from serializers import bundling, dumps, load, loads
 from serializers.skins import float32_as_written
+from tests.support.skin_files import _skin_model
 
 
 def _tetrahedron(size: float) -> bytes:
@@ -183,19 +183,6 @@ def test_a_model_built_in_code_takes_its_files_from_assets_or_the_working_folder
     from_folder = compiled(model)
     expected = mujoco.MjModel.from_xml_string(text)
     assert model_differences(from_folder, expected, ignore=path_fields()) == []
-
-
-def _skin_model(vertices: list[float], name: str | None = "skin") -> str:
-    count = len(vertices) // 3
-    named = f' name="{name}"' if name else ""
-    numbers = " ".join(format_float(v) for v in vertices)
-    ids = " ".join(str(i) for i in range(count))
-    return (
-        '<mujoco><worldbody><body name="b"><geom size="0.1"/></body></worldbody><asset>'
-        f'<skin{named} vertex="{numbers}" face="0 1 2">'
-        f'<bone body="b" bindpos="0.1 0.2 0.3" bindquat="1 0 0 0" vertid="{ids}" '
-        f'vertweight="{" ".join(["1"] * count)}"/></skin></asset></mujoco>'
-    )
 
 
 #: Numbers MuJoCo reads as float32 on every release (3.9 refuses text that underflows it).

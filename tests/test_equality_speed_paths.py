@@ -34,37 +34,12 @@ from mjcf_model import (
 )
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.strategies import element_values, elements, models
 from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import Unparsed
 from serializers import dicts, dumps, from_dict, loads, to_dict
 from tests.conftest import PER_CLASS
-
-CLASSES = sorted(set(CLASS_BY_KEY.values()), key=lambda cls: cls.__name__)
-
-
-def _reference_equal(a: Node, b: Node) -> bool:
-    """Equality as attrs defines it: every ``eq`` field, NaN equal to itself, any depth."""
-    stack = [(a, b)]
-    while stack:
-        left, right = stack.pop()
-        if type(left) is not type(right):
-            return False
-        for field in attrs.fields(type(left)):
-            compared = field.eq and field.name != "children"
-            if compared and (getattr(left, field.name),) != (getattr(right, field.name),):
-                return False
-        left_children = getattr(left, "children", ())
-        right_children = getattr(right, "children", ())
-        if len(left_children) != len(right_children):
-            return False
-        stack.extend(zip(left_children, right_children, strict=True))
-    return True
-
-
-def _same_compiled(a: Mujoco, b: Mujoco) -> None:
-    assert model_differences(compiled(a), compiled(b)) == []
+from tests.support.node_classes import TYPED_CLASSES, _reference_equal, _same_compiled
 
 
 def _world(*children: Node) -> Mujoco:
@@ -171,7 +146,7 @@ def test_shared_subtrees_are_skipped_not_misread() -> None:
     assert left != other
 
 
-@pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
+@pytest.mark.parametrize("cls", TYPED_CLASSES, ids=lambda c: c.__name__)
 def test_equality_matches_attrs_for_every_class(cls: type[TypedElement]) -> None:
     """``==`` agrees with attrs' field-by-field equality, and equal nodes hash alike."""
 
@@ -231,7 +206,7 @@ def _ordered(data: Any) -> Any:
     return data
 
 
-@pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
+@pytest.mark.parametrize("cls", TYPED_CLASSES, ids=lambda c: c.__name__)
 def test_dicts_are_the_converters_own(cls: type[TypedElement]) -> None:
     """``to_dict`` writes the converter's dict, key order included; ``from_dict`` reads it back."""
 

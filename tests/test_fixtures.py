@@ -11,7 +11,6 @@ import json
 import re
 from collections.abc import Iterator
 from pathlib import Path
-from typing import TypeVar
 
 import mujoco
 import pytest
@@ -46,8 +45,6 @@ from mjcf_model import (
     MjcfIncludeCycleError,
     MjcfIncludeError,
     Model,
-    Mujoco,
-    Node,
     Option,
     PluginConfig,
     PluginInstance,
@@ -55,16 +52,13 @@ from mjcf_model import (
     Sensor,
     Site,
     Tendon,
-    TypedElement,
     Worldbody,
 )
-from mjcf_model.bridge.compare import compile_text_beside, model_differences
+from mjcf_model.bridge.compare import model_differences
 from mjcf_model.tools.check import check_file
 from serializers import dump, dumps, from_dict, from_etree, load, loads, to_dict, to_etree
-
-FIXTURES = Path(__file__).parent / "fixtures"
-
-T = TypeVar("T", bound=TypedElement)
+from tests.conftest import FIXTURES
+from tests.support.fixture_checks import comments, compile_round_trip, names, section, walk
 
 #: Every top-level fixture; the included parts live in ``fixtures/include_parts``.
 FIXTURE_NAMES = (
@@ -92,36 +86,6 @@ INCLUDE_PARTS = (
 _COMMENT = re.compile(r"<!--(.*?)-->", re.DOTALL)
 
 fixture_path = pytest.mark.parametrize("path", FIXTURE_PATHS, ids=FIXTURE_NAMES)
-
-
-def walk(node: Node) -> Iterator[Node]:
-    """Yield a node and all its descendants, in document order."""
-    yield node
-    if isinstance(node, Element):
-        for child in node.children:
-            yield from walk(child)
-
-
-def comments(node: Node) -> list[str]:
-    """Return the texts of all comments under a node, in document order."""
-    return [n.text for n in walk(node) if isinstance(n, Comment)]
-
-
-def names(model: mujoco.MjModel, objtype: mujoco.mjtObj, count: int) -> list[str]:
-    """Return the names of ``count`` compiled objects of one type, by id."""
-    return [mujoco.mj_id2name(model, objtype, i) for i in range(count)]
-
-
-def section(model: Mujoco, cls: type[T]) -> T:
-    """Return the first root child of a section type, without the section properties."""
-    found = [c for c in model.children if isinstance(c, cls)]
-    assert found, f"no <{cls.tag}> section"
-    return found[0]
-
-
-def compile_round_trip(model: Mujoco, beside: Path) -> mujoco.MjModel:
-    """Compile the written text of a loaded model as if it stood beside ``beside``."""
-    return compile_text_beside(dumps(model), beside)
 
 
 # -- the fixture set ----------------------------------------------------------------------

@@ -13,7 +13,6 @@ import sys
 import time
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
 
 import mujoco
 import pytest
@@ -42,24 +41,13 @@ from mjcf_model.bridge.compare import model_differences
 from mjcf_model.nodes.base import build_node
 from serializers import dump, dumps, from_dict, from_etree, load, loads, to_dict, to_etree
 from serializers.parsed_elements import DEFERRED_TEXT
+from tests.support.oracles import _compiled, _round_trips_like_mujoco
 
 #: The packages as imported: the installed wheel under tests/run_installed.py.
 PACKAGES = [Path(mjcf_model.__file__).parent, Path(serializers.__file__).parent]
 
 #: MuJoCo's parser (tinyxml2) refuses element nesting deeper than this.
 MUJOCO_DEEPEST_BODY_CHAIN = 496
-
-
-def _compiled(text: str) -> Any:
-    return mujoco.MjModel.from_xml_string(text)
-
-
-def _round_trips_like_mujoco(text: str) -> None:
-    """MuJoCo compiles ``text``; we load it, and our text compiles to the same model."""
-    before = _compiled(text)
-    written = dumps(loads(text))
-    assert model_differences(before, _compiled(written)) == []
-    assert loads(written) == loads(text)
 
 
 # -- numbers ---------------------------------------------------------------------------

@@ -9,12 +9,11 @@ the test asserts what MuJoCo does.
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
 
 import mujoco
 import pytest
 
-from mjcf_model import GenericElement, Mujoco
+from mjcf_model import GenericElement
 from mjcf_model.bridge.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.errors import MjcfAssetError, MjcfValueError
 from mjcf_model.tools.check import check_file
@@ -23,7 +22,13 @@ from mjcf_model.tree.traversal import walk
 from serializers import dumps, from_dict, from_etree, load, loads, to_dict, to_etree
 from serializers.skins import inline_skin_files
 from tests.conftest import FIXTURES, MUJOCO_VERSION
-from tests.support.oracles import RENAMING_FIELDS, prefix_problems
+from tests.support.oracles import (
+    RENAMING_FIELDS,
+    compile_beside,
+    prefix_problems,
+    prefixed_problems,
+    written,
+)
 from tests.support.skin_files import skin_file
 
 NAMING = FIXTURES / "naming"
@@ -33,26 +38,6 @@ NAMING_FIXTURES = sorted(p for p in NAMING.rglob("*.xml") if not p.name.startswi
 naming_fixture = pytest.mark.parametrize(
     "path", NAMING_FIXTURES, ids=[str(p.relative_to(NAMING)) for p in NAMING_FIXTURES]
 )
-
-
-def compile_beside(model: Any, path: Path) -> Any:
-    """Compile a model's text as if it were the file ``path``."""
-    return compile_text_beside(dumps(model), path)
-
-
-def prefixed_problems(model: Mujoco, path: Path, prefix: str = "p_") -> list[str]:
-    """What keeps the prefixed ``model`` from compiling to the original with names prefixed."""
-    original = compile_beside(model, path)
-    changed = compile_beside(prefixed(model, prefix), path)
-    return prefix_problems(original, changed, prefix)
-
-
-def written(tmp_path: Path, text: str, name: str = "model.xml") -> Path:
-    """Write ``text`` to ``tmp_path / name`` and return the path."""
-    path = tmp_path / name
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(text, encoding="utf-8")
-    return path
 
 
 # -- the fixtures -------------------------------------------------------------------------

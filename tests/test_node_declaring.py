@@ -16,8 +16,7 @@ from mjcf_model.nodes.fields import text, vec3
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.strategies import element_values, elements
-
-TYPED_CLASSES = sorted(set(CLASS_BY_KEY.values()), key=lambda cls: cls.__name__)
+from tests.support.node_classes import TYPED_CLASSES
 
 
 def _expected(cls: type[TypedElement], values: dict[str, Any], base: Any = None) -> dict[str, Any]:

@@ -8,16 +8,16 @@ the part's file, line and element, and told that the part must compile on its ow
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import mujoco
 import pytest
 
 from mjcf_model import MjcfCompileError, attach
 from serializers import load, loads
+from tests.conftest import FIXTURES
 
 #: A free body with no geom (no mass), which MuJoCo rejects, and a key.
-MASSLESS = Path(__file__).parent / "fixtures" / "part_states" / "massless.xml"
+MASSLESS = FIXTURES / "part_states" / "massless.xml"
 
 
 def test_a_part_that_does_not_compile_alone_is_refused_with_its_location() -> None:

@@ -15,51 +15,10 @@ from mjcf_model import (
     Mujoco,
     compiled,
 )
-from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.files.provenance import file_references
 from serializers import dump, dumps, export, from_dict, load, loads, to_dict
-from tests.conftest import compiling_corpus, corpus_id
-
-
-def _mesh(points: int) -> str:
-    """An OBJ mesh with ``points`` vertices: which file MuJoCo read shows in ``mesh_vertnum``."""
-    vertices = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
-    vertices += [(0.2 + 0.01 * i, 0.2, 0.2) for i in range(points - 4)]
-    lines = [f"v {x} {y} {z}" for x, y, z in vertices]
-    return "\n".join([*lines, "f 1 2 3", "f 1 2 4", "f 1 3 4", "f 2 3 4", ""])
-
-
-def _tree(root: Path, files: dict[str, str]) -> Path:
-    """Write ``files`` (relative path: text) under ``root``; return ``root``."""
-    for name, text in files.items():
-        path = root / name
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text)
-    return root
-
-
-def _same(a: mujoco.MjModel, b: mujoco.MjModel) -> list[str]:
-    return model_differences(a, b, ignore=path_fields())
-
-
-ROBOT = """<mujoco model="robot">
-  <compiler meshdir="assets" texturedir="textures" angle="radian"/>
-  <asset>
-    <mesh name="link" file="link.obj"/>
-    <texture name="grid" type="2d" builtin="checker" width="8" height="8"/>
-  </asset>
-  <worldbody>
-    <body name="base"><joint name="j" range="0 1"/><geom type="mesh" mesh="link"/></body>
-  </worldbody>
-</mujoco>
-"""
-
-
-@pytest.fixture
-def robot(tmp_path: Path) -> Path:
-    """A robot in a folder of its own, its mesh under ``assets/``."""
-    folder = _tree(tmp_path / "robots" / "arm", {"robot.xml": ROBOT, "assets/link.obj": _mesh(6)})
-    return folder / "robot.xml"
+from tests.conftest import corpus_id
+from tests.support.model_files import ROBOT, WITH_FILES, _same, obj_mesh, write_tree
 
 
 def test_a_loaded_model_knows_its_folder_and_equality_ignores_it(robot: Path) -> None:
@@ -89,8 +48,8 @@ def test_compiled_finds_files_through_the_folder(robot: Path, tmp_path: Path) ->
 def test_compiled_takes_files_from_the_assets_mapping() -> None:
     """A model built in code takes its files from ``assets``, by path with or without the folder."""
     model = loads(ROBOT)
-    assert compiled(model, assets={"link.obj": _mesh(7).encode()}).mesh_vertnum.tolist() == [7]
-    with_folder = {"assets/link.obj": _mesh(5).encode()}
+    assert compiled(model, assets={"link.obj": obj_mesh(7).encode()}).mesh_vertnum.tolist() == [7]
+    with_folder = {"assets/link.obj": obj_mesh(5).encode()}
     assert compiled(model, assets=with_folder).mesh_vertnum.tolist() == [5]
 
 
@@ -137,13 +96,13 @@ def test_a_model_built_in_code_is_dumped_as_written(tmp_path: Path) -> None:
 
 def test_kept_includes_are_relocated(tmp_path: Path) -> None:
     """An ``<include>`` kept as such names its file from the folder the model is dumped to."""
-    folder = _tree(
+    folder = write_tree(
         tmp_path / "model",
         {
             "main.xml": '<mujoco><include file="parts/arm.xml"/></mujoco>',
             "parts/arm.xml": '<mujoco><asset><mesh name="m" file="m.obj"/></asset>'
             '<worldbody><geom type="mesh" mesh="m"/></worldbody></mujoco>',
-            "parts/m.obj": _mesh(5),
+            "parts/m.obj": obj_mesh(5),
         },
     )
     expected = mujoco.MjModel.from_xml_path(str(folder / "main.xml"))
@@ -156,13 +115,13 @@ def test_kept_includes_are_relocated(tmp_path: Path) -> None:
 
 def test_dump_refuses_to_lose_a_file_an_included_file_names(tmp_path: Path) -> None:
     """A kept include naming a file under the main folder cannot move: the error says why."""
-    folder = _tree(
+    folder = write_tree(
         tmp_path / "model",
         {
             "main.xml": '<mujoco><compiler meshdir="meshes"/><include file="parts/arm.xml"/>'
             '<worldbody><geom type="mesh" mesh="m"/></worldbody></mujoco>',
             "parts/arm.xml": '<mujoco><asset><mesh name="m" file="m.obj"/></asset></mujoco>',
-            "meshes/m.obj": _mesh(5),
+            "meshes/m.obj": obj_mesh(5),
         },
     )
     mujoco.MjModel.from_xml_path(str(folder / "main.xml"))
@@ -183,9 +142,9 @@ USES_MESH = '<worldbody><geom type="mesh" mesh="m"/></worldbody></mujoco>'
 @pytest.mark.parametrize(
     ("files", "points"),
     [
-        ({"sub/m.obj": _mesh(5)}, 5),
-        ({"sub/m.obj": _mesh(5), "m.obj": _mesh(6)}, 6),
-        ({"sub/deeper/m.obj": _mesh(7)}, 7),
+        ({"sub/m.obj": obj_mesh(5)}, 5),
+        ({"sub/m.obj": obj_mesh(5), "m.obj": obj_mesh(6)}, 6),
+        ({"sub/deeper/m.obj": obj_mesh(7)}, 7),
     ],
     ids=["beside-include", "main-folder-first", "beside-innermost"],
 )
@@ -200,7 +159,7 @@ def test_inlined_includes_name_files_as_mujoco_finds_them(
         "sub/deeper/inc.xml": INCLUDED,
         **files,
     }
-    main = _tree(tmp_path, files) / "main.xml"
+    main = write_tree(tmp_path, files) / "main.xml"
     expected = mujoco.MjModel.from_xml_path(str(main))
     assert expected.mesh_vertnum.tolist() == [points]
     inlined = load(main, inline_includes=True)
@@ -212,8 +171,8 @@ def test_inlined_includes_name_files_as_mujoco_finds_them(
 
 def test_export_is_self_contained_readable_and_movable(tmp_path: Path) -> None:
     """Export copies every file under its own name, once per content, and survives a move."""
-    a = _tree(tmp_path / "a", {"link.obj": _mesh(5), "same.obj": _mesh(9)})
-    b = _tree(tmp_path / "b", {"link.obj": _mesh(6), "same.obj": _mesh(9)})
+    a = write_tree(tmp_path / "a", {"link.obj": obj_mesh(5), "same.obj": obj_mesh(9)})
+    b = write_tree(tmp_path / "b", {"link.obj": obj_mesh(6), "same.obj": obj_mesh(9)})
     text = (
         '<mujoco model="two arms"><asset>'
         f'<mesh name="a" file="{a}/link.obj"/><mesh name="b" file="{b}/link.obj"/>'
@@ -240,7 +199,7 @@ def test_export_is_self_contained_readable_and_movable(tmp_path: Path) -> None:
 
 def test_export_bundles_asset_models_with_their_own_files(tmp_path: Path) -> None:
     """An asset ``<model>`` file is exported with its meshes and still attaches identically."""
-    folder = _tree(
+    folder = write_tree(
         tmp_path / "scene",
         {
             "scene.xml": '<mujoco><asset><model name="g" file="../gripper/gripper.xml"/></asset>'
@@ -249,7 +208,7 @@ def test_export_bundles_asset_models_with_their_own_files(tmp_path: Path) -> Non
             "../gripper/gripper.xml": '<mujoco><compiler meshdir="meshes"/>'
             '<asset><mesh name="finger" file="finger.obj"/></asset><worldbody><body name="palm">'
             '<geom type="mesh" mesh="finger"/></body></worldbody></mujoco>',
-            "../gripper/meshes/finger.obj": _mesh(8),
+            "../gripper/meshes/finger.obj": obj_mesh(8),
         },
     )
     expected = mujoco.MjModel.from_xml_path(str(folder / "scene.xml"))
@@ -257,10 +216,6 @@ def test_export_bundles_asset_models_with_their_own_files(tmp_path: Path) -> Non
     path = export(load(folder / "scene.xml"), tmp_path / "out")
     shutil.rmtree(tmp_path / "gripper")
     assert _same(mujoco.MjModel.from_xml_path(str(path)), expected) == []
-
-
-#: Corpus models that name files: the ones relocation and export can get wrong.
-WITH_FILES = [p for p in compiling_corpus() if any(file_references(load(p, inline_includes=True)))]
 
 
 def test_most_of_the_corpus_names_files() -> None:
@@ -287,8 +242,8 @@ def test_corpus_model_dumped_elsewhere_and_exported_compiles_identically(
 
 def test_a_linked_model_resolves_from_the_links_folder(tmp_path: Path) -> None:
     """A model read through a symbolic link finds its files beside the link, as MuJoCo does."""
-    real = _tree(tmp_path / "real", {"robot.xml": ROBOT.replace('meshdir="assets" ', "")})
-    linked = _tree(tmp_path / "linked", {"link.obj": _mesh(7)})
+    real = write_tree(tmp_path / "real", {"robot.xml": ROBOT.replace('meshdir="assets" ', "")})
+    linked = write_tree(tmp_path / "linked", {"link.obj": obj_mesh(7)})
     (linked / "robot.xml").symlink_to(real / "robot.xml")
     expected = mujoco.MjModel.from_xml_path(str(linked / "robot.xml"))
     model = load(linked / "robot.xml")
@@ -302,7 +257,7 @@ def test_a_later_assetdir_overrides_an_earlier_meshdir(tmp_path: Path) -> None:
         '<compiler meshdir="assets" texturedir="textures" angle="radian"/>',
         '<compiler meshdir="assets"/><compiler assetdir="shared"/>',
     )
-    folder = _tree(tmp_path / "m", {"robot.xml": text, "shared/link.obj": _mesh(8)})
+    folder = write_tree(tmp_path / "m", {"robot.xml": text, "shared/link.obj": obj_mesh(8)})
     expected = mujoco.MjModel.from_xml_path(str(folder / "robot.xml"))
     assert _same(compiled(load(folder / "robot.xml")), expected) == []
 
@@ -311,13 +266,13 @@ def test_a_compiler_inside_a_kept_include_is_honoured_when_dumping_elsewhere(
     tmp_path: Path,
 ) -> None:
     """The mesh folder an included file sets still holds after the model moves."""
-    folder = _tree(
+    folder = write_tree(
         tmp_path / "model",
         {
             "main.xml": '<mujoco><include file="settings.xml"/><asset><mesh name="m" '
             'file="m.obj"/></asset><worldbody><geom type="mesh" mesh="m"/></worldbody></mujoco>',
             "settings.xml": '<mujoco><compiler meshdir="meshes"/></mujoco>',
-            "meshes/m.obj": _mesh(6),
+            "meshes/m.obj": obj_mesh(6),
         },
     )
     expected = mujoco.MjModel.from_xml_path(str(folder / "main.xml"))
@@ -329,8 +284,8 @@ def test_a_compiler_inside_a_kept_include_is_honoured_when_dumping_elsewhere(
 
 def test_export_tells_apart_names_that_differ_only_in_case(tmp_path: Path) -> None:
     """``Link.obj`` and ``link.obj`` are one file on macOS or Windows: the second is renamed."""
-    a = _tree(tmp_path / "a", {"Link.obj": _mesh(5)})
-    b = _tree(tmp_path / "b", {"link.obj": _mesh(6)})
+    a = write_tree(tmp_path / "a", {"Link.obj": obj_mesh(5)})
+    b = write_tree(tmp_path / "b", {"link.obj": obj_mesh(6)})
     text = (
         f'<mujoco><asset><mesh name="a" file="{a}/Link.obj"/><mesh name="b" file="{b}/link.obj"/>'
         '</asset><worldbody><geom type="mesh" mesh="a"/><geom type="mesh" mesh="b"/>'

@@ -13,40 +13,12 @@ from robosuite.utils import mjcf_utils
 import serializers
 from mjcf_model import Body, Geom, Mujoco, Site, Worldbody
 from mjcf_model.compat.mjcf_utils.queries import Categories, categorized
-from mjcf_model.nodes.base import AnyElement, get_attribute
+from mjcf_model.nodes.base import get_attribute
 from mjcf_model.tree import traversal
 from mjcf_model.tree.queries import find, find_all, parent_of, walk
 from serializers import load, loads
-from tests.conftest import corpus_id, loading_corpus
-
-CORPUS = loading_corpus()
-
-MODEL = loads(
-    """
-    <mujoco>
-      <default><geom group="1"/><default class="vis"><geom rgba="1 0 0 1"/></default></default>
-      <worldbody>
-        <geom name="floor" size="1 1 0.1" type="plane"/>
-        <body name="arm" pos="0 0 1">
-          <!-- the arm -->
-          <joint name="shoulder" range="-1 1"/>
-          <geom name="upper" class="vis" group="1" size="0.1"/>
-          <geom name="collide" group="0" size="0.1"/>
-          <body name="hand"><site name="tip" size="0.01"/><geom name="hidden" group="3"/></body>
-        </body>
-        <frame><body name="framed"/></frame>
-      </worldbody>
-      <tendon><fixed name="t"><joint joint="shoulder" coef="1"/></fixed></tendon>
-      <equality><joint joint1="shoulder"/></equality>
-      <actuator><motor name="m" joint="shoulder"/><general name="g" joint="shoulder"/></actuator>
-      <sensor><touch name="touch" site="tip"/><clock name="clock"/></sensor>
-    </mujoco>
-    """
-)
-
-
-def _names(elements: tuple[AnyElement, ...] | list[AnyElement]) -> list[object]:
-    return [get_attribute(e, "name") for e in elements]
+from tests.conftest import corpus_id
+from tests.support.query_models import CORPUS, MODEL, _names
 
 
 def test_find_compares_text_and_typed_values() -> None:

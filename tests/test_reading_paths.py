@@ -16,14 +16,12 @@ from mjcf_model import Geom, Joint
 from mjcf_model.nodes.base import TypedElement
 from mjcf_model.nodes.layout import Layout, SourceText, detail
 from mjcf_model.nodes.node_info import xml_name
-from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.strategies import element_values
 from mjcf_model.values import Unparsed, format_value
 from serializers import from_etree, loads
 from serializers.parsed_elements import build_element, read_typed, recorded_values
 from tests.conftest import corpus_id, loading_corpus
-
-TYPED_CLASSES = sorted(set(CLASS_BY_KEY.values()), key=lambda cls: cls.__name__)
+from tests.support.node_classes import TYPED_CLASSES
 
 
 def _layout(tag: str, pairs: list[tuple[str, str]]) -> Layout:

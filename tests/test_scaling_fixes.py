@@ -16,21 +16,24 @@ import pytest
 from hypothesis import given
 
 from mjcf_model import compiled
-from mjcf_model.bridge.compare import compile_text_beside
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.nodes.base import TypedElement
 from mjcf_model.strategies import elements
 from mjcf_model.tools.check import check_file
 from mjcf_model.transforms.scaling.plugins import SDF_LENGTHS
-from mjcf_model.transforms.scaling.transform import MassPolicy, scaled
+from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, from_etree, load, loads
 from tests.conftest import PER_CLASS
+from tests.support.node_classes import TYPED_CLASSES
 from tests.support.oracles import friction_problems, scaled_problems
-from tests.support.scaling_oracle import scaled_model_problems
+from tests.support.scaling_oracle import (
+    ALIGNED_SLIDES,
+    IGNORED,
+    SCALING_FIXTURES,
+    _scaled_copy,
+    scaled_model_problems,
+)
 from tests.support.skin_files import skin_file
-from tests.test_properties import CLASSES
-
-FIXTURES = Path(__file__).parent / "fixtures" / "scaling"
 
 #: The fixtures the scale oracle runs on (``attach.xml`` and ``sdf_fixed_shape.xml`` are
 #: refused; ``sdf_gear.xml`` has its own oracle, below).
@@ -39,22 +42,10 @@ SCALABLE = ("mass.xml", "flexcomp.xml", "sdf.xml", "includes.xml", "keys.xml")
 #: Every top-level fixture of the folder.
 ALL_FIXTURES = (*SCALABLE, "attach.xml", "sdf_fixed_shape.xml", "sdf_gear.xml")
 
-#: What the complete oracle leaves to other checks, per fixture: an SDF mesh scales
-#: through its plugin's settings (checked below) instead of ``scale``.
-IGNORED = {
-    "sdf.xml": ("plugin_attr", "plugin_attradr", "npluginattr", "mesh_scale"),
-}
-
-
-def _scaled_copy(path: Path, factor: float, mass: MassPolicy = "keep") -> mujoco.MjModel:
-    """MuJoCo's compilation of the fixture scaled by ``factor``, includes inlined."""
-    model = load(path, inline_includes=True)
-    return compile_text_beside(dumps(scaled(model, factor, mass=mass)), path)
-
 
 def _problems(name: str, factor: float) -> list[str]:
     """What keeps the fixture scaled by ``factor`` from being exactly scaled, masses kept."""
-    path = FIXTURES / name
+    path = SCALING_FIXTURES / name
     original = mujoco.MjModel.from_xml_path(str(path))
     changed = _scaled_copy(path, factor)
     return scaled_model_problems(original, changed, factor, ignore=IGNORED.get(name, ()))
@@ -64,7 +55,7 @@ def _problems(name: str, factor: float) -> list[str]:
 @pytest.mark.parametrize("inline_includes", [False, True], ids=["kept", "inlined"])
 def test_fixture_round_trips_to_the_identical_model(name: str, inline_includes: bool) -> None:
     """Each fixture of the folder survives the round trip that ``test_fixtures`` applies."""
-    result = check_file(FIXTURES / name, inline_includes=inline_includes)
+    result = check_file(SCALING_FIXTURES / name, inline_includes=inline_includes)
     assert (result.status, result.differences, result.message) == ("identical", (), "")
 
 
@@ -82,7 +73,7 @@ def test_fixture_scaled_by_a_half_halves_every_length(name: str) -> None:
 
 def test_keep_policy_keeps_the_centre_of_mass_of_mixed_bodies() -> None:
     """A body mixing written masses and densities keeps its mass; its centre of mass doubles."""
-    path = FIXTURES / "mass.xml"
+    path = SCALING_FIXTURES / "mass.xml"
     original = mujoco.MjModel.from_xml_path(str(path))
     changed = _scaled_copy(path, 2.0)
     for name in ("mixed", "mixed_shells"):
@@ -93,7 +84,7 @@ def test_keep_policy_keeps_the_centre_of_mass_of_mixed_bodies() -> None:
 
 def test_volume_policy_scales_shells_with_area_and_solids_with_volume() -> None:
     """Density masses grow by s**2 on shells and s**3 on solids; written masses by s**3."""
-    path = FIXTURES / "mass.xml"
+    path = SCALING_FIXTURES / "mass.xml"
     original = mujoco.MjModel.from_xml_path(str(path))
     changed = _scaled_copy(path, 2.0, mass="volume")
     expected = {"shells_only": 4.0, "solids_only": 8.0, "weighed_only": 8.0, "with_inertial": 8.0}
@@ -106,7 +97,7 @@ def test_volume_policy_scales_shells_with_area_and_solids_with_volume() -> None:
 
 def test_flexcomp_points_are_placed_once_scaled() -> None:
     """Every flex vertex and generated body sits at twice its position after ``mj_forward``."""
-    path = FIXTURES / "flexcomp.xml"
+    path = SCALING_FIXTURES / "flexcomp.xml"
     original = mujoco.MjModel.from_xml_path(str(path))
     changed = _scaled_copy(path, 2.0)
     before, after = mujoco.MjData(original), mujoco.MjData(changed)
@@ -161,7 +152,7 @@ def test_a_disc_flexcomp_is_refused_exactly_when_mujoco_would_reject_it(
 
 def test_sdf_settings_are_scaled_instead_of_the_mesh_scale() -> None:
     """No ``scale`` on SDF meshes; the torus's unwritten ``radius2`` is written, scaled."""
-    model = scaled(load(FIXTURES / "sdf.xml"), 2)
+    model = scaled(load(SCALING_FIXTURES / "sdf.xml"), 2)
     text = dumps(model)
     assert 'key="radius1" value="0.4"' in text
     assert 'key="radius2" value="0.3"' in text
@@ -171,7 +162,9 @@ def test_sdf_settings_are_scaled_instead_of_the_mesh_scale() -> None:
 @pytest.mark.parametrize("plugin", ["nut", "bolt"])
 def test_sdf_plugin_with_fixed_dimensions_is_refused(plugin: str) -> None:
     """MuJoCo's nut and bolt SDFs compile but have no length settings: scaling names them."""
-    text = (FIXTURES / "sdf_fixed_shape.xml").read_text().replace("sdf.nut", f"sdf.{plugin}")
+    text = (
+        (SCALING_FIXTURES / "sdf_fixed_shape.xml").read_text().replace("sdf.nut", f"sdf.{plugin}")
+    )
     assert mujoco.MjModel.from_xml_string(text).nmesh == 1
     with pytest.raises(MjcfValueError) as refused:
         scaled(loads(text), 2)
@@ -220,7 +213,7 @@ def test_gear_sdf_scales_through_its_length_settings(factor: float) -> None:
     numerical gradient, so vertex counts and volumes differ slightly (measured on
     MuJoCo 4.0.0 and 3.9.0: volume within 0.4% of ``factor**3``).
     """
-    path = FIXTURES / "sdf_gear.xml"
+    path = SCALING_FIXTURES / "sdf_gear.xml"
     original = mujoco.MjModel.from_xml_path(str(path))
     changed = _scaled_copy(path, factor)
     lengths = np.array([length for _, _, length in _GEAR_SETTINGS])
@@ -259,7 +252,7 @@ def test_unknown_shape_plugin_is_refused(owner: str) -> None:
 
 def test_attach_fixture_compiles_but_scaling_refuses_it() -> None:
     """MuJoCo compiles ``<attach>`` from a subfolder; ``scaled`` still refuses it by name."""
-    path = FIXTURES / "attach.xml"
+    path = SCALING_FIXTURES / "attach.xml"
     assert mujoco.MjModel.from_xml_path(str(path)).body("arm_lower").id > 0
     with pytest.raises(MjcfValueError, match=r"^cannot scale an <attach>: the attached model"):
         scaled(load(path), 2)
@@ -308,7 +301,7 @@ def test_skin_read_from_a_file_without_the_folder_is_refused() -> None:
     )
 
 
-@pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
+@pytest.mark.parametrize("cls", TYPED_CLASSES, ids=lambda c: c.__name__)
 def test_a_lone_element_of_any_class_scales_or_is_refused_clearly(cls: type[TypedElement]) -> None:
     """``scaled`` takes any node: outside a model it has no ancestors and no model to read.
 
@@ -325,28 +318,6 @@ def test_a_lone_element_of_any_class_scales_or_is_refused_clearly(cls: type[Type
         assert type(result) is cls
 
     check()
-
-
-#: Slides along x, along MuJoCo's default axis (z) and along y given by a class, in bodies
-#: that do not turn: per-axis scaling is exact there.
-ALIGNED_SLIDES = """<mujoco>
-  <default><default class="sideways"><joint type="slide" axis="0 1 0"/></default></default>
-  <worldbody>
-    <body name="a" pos="0.1 0.2 0.3">
-      <joint name="x" type="slide" axis="1 0 0" range="-0.1 0.2"/>
-      <geom size="0.05"/>
-      <body name="b" pos="0.05 0 0.1">
-        <joint name="z" type="slide" range="0 0.3"/>
-        <geom size="0.05"/>
-        <body name="c" pos="0 0.1 0" childclass="sideways">
-          <joint name="y" range="-0.2 0.2"/>
-          <geom size="0.05"/>
-        </body>
-      </body>
-    </body>
-  </worldbody>
-  <keyframe><key qpos="0.15 0.25 -0.1"/></keyframe>
-</mujoco>"""
 
 
 def test_per_axis_factors_scale_axis_aligned_slides_exactly() -> None:

@@ -10,16 +10,8 @@ import mujoco
 import numpy as np
 import pytest
 
-from mjcf_model.transforms.scaling.transform import scaled
-from serializers import dumps, loads
 from tests.support.compiled_fields import FLOAT_FIELDS, float_fields
-from tests.support.scaling_oracle import scaled_model_problems
-
-
-def _compiled_pair(text: str, factor: float) -> tuple[mujoco.MjModel, mujoco.MjModel]:
-    """MuJoCo's compilation of ``text`` and of it scaled by ``factor``."""
-    original = mujoco.MjModel.from_xml_string(text)
-    return original, mujoco.MjModel.from_xml_string(dumps(scaled(loads(text), factor)))
+from tests.support.scaling_oracle import compiled_pair, scaled_model_problems
 
 
 def test_every_float_field_of_the_installed_mujoco_is_classified() -> None:
@@ -55,7 +47,7 @@ def test_geom_and_pair_margins_and_gaps_scale(factor: float) -> None:
     text = """<mujoco><worldbody><body><freejoint/><geom name="a" size="0.1" margin="0.01"
     gap="0.005"/></body><geom name="b" type="plane" size="1 1 0.1" margin="0.02"/></worldbody>
     <contact><pair geom1="a" geom2="b" margin="0.03" gap="0.01"/></contact></mujoco>"""
-    original, changed = _compiled_pair(text, factor)
+    original, changed = compiled_pair(text, factor)
     assert scaled_model_problems(original, changed, factor) == []
     assert np.isclose(changed.geom("a").margin[0], factor * 0.01)
 
@@ -66,7 +58,7 @@ def test_connect_and_weld_anchors_scale(tag: str) -> None:
     text = f"""<mujoco><worldbody><body name="a" pos="0 0 1"><freejoint/><geom size="0.1"/>
     </body><body name="b" pos="1 0 1"><freejoint/><geom size="0.1"/></body></worldbody>
     <equality><{tag} body1="a" body2="b" anchor="0.3 0.2 0.1"/></equality></mujoco>"""
-    original, changed = _compiled_pair(text, 2.0)
+    original, changed = compiled_pair(text, 2.0)
     assert scaled_model_problems(original, changed, 2.0) == []
     assert np.allclose(changed.eq_data[0, :3], [0.6, 0.4, 0.2])
 
@@ -82,7 +74,7 @@ def test_cylinder_with_the_built_in_area_gets_it_scaled(factor: float) -> None:
     </body></worldbody><actuator><cylinder joint="s"/><cylinder joint="s" area="2"/>
     <cylinder joint="s" diameter="0.1"/><cylinder joint="s" class="bore"/>
     <cylinder joint="s" class="bore" area="3"/></actuator></mujoco>"""
-    original, changed = _compiled_pair(text, factor)
+    original, changed = compiled_pair(text, factor)
     assert scaled_model_problems(original, changed, factor) == []
     assert np.allclose(
         changed.actuator_gainprm[:, 0], factor**2 * original.actuator_gainprm[:, 0], rtol=1e-12
@@ -101,7 +93,7 @@ def test_joint_coupling_coefficients_follow_the_joint_units(
     text = f"""<mujoco><worldbody><body><joint name="j1" type="{types[0]}"/>
     <joint name="j2" type="{types[1]}" axis="1 0 0"/><geom size="0.1"/></body></worldbody>
     <equality><joint joint1="j1" joint2="j2"{coefficients}/></equality></mujoco>"""
-    original, changed = _compiled_pair(text, 2.0)
+    original, changed = compiled_pair(text, 2.0)
     assert scaled_model_problems(original, changed, 2.0) == []
 
 
@@ -118,7 +110,7 @@ def test_welds_between_sites_and_spatial_tendons_are_read_as_mujoco_does() -> No
     <tendon><spatial name="t" springlength=".5"><site site="s0"/><site site="s1"/></spatial>
     </tendon>
     <equality><weld site1="s0" site2="s1"/></equality></mujoco>"""
-    original, changed = _compiled_pair(text, 2.0)
+    original, changed = compiled_pair(text, 2.0)
     assert np.array_equal(changed.eq_data, original.eq_data)
     assert changed.tendon_lengthspring[0, 0] == 2 * original.tendon_lengthspring[0, 0]
     assert scaled_model_problems(original, changed, 2.0) == []
@@ -133,7 +125,7 @@ def test_a_site_gear_mixing_offset_and_rotation_measures_a_scaled_length() -> No
     </worldbody>
     <actuator><general site="tip" refsite="ref" gear="1 0 0 0 0 1"/>
       <general site="tip" refsite="ref" gear="0 0 0 0 0 1"/></actuator></mujoco>"""
-    original, changed = _compiled_pair(text, 2.0)
+    original, changed = compiled_pair(text, 2.0)
     assert original.actuator_length0[0] > 0.3  # both parts measured
     assert np.isclose(changed.actuator_length0[0], 2 * original.actuator_length0[0], rtol=1e-12)
     assert np.isclose(changed.actuator_length0[1], original.actuator_length0[1], rtol=1e-12)
@@ -148,7 +140,7 @@ def test_position_targets_on_a_slide_joint_scale_beside_a_replicate_of_geoms() -
     </body></worldbody>
     <actuator><position joint="rail" kp="10" ctrlrange="-.5 .5"/></actuator>
     <keyframe><key ctrl=".25"/></keyframe></mujoco>"""
-    original, changed = _compiled_pair(text, 2.0)
+    original, changed = compiled_pair(text, 2.0)
     assert np.array_equal(changed.actuator_ctrlrange, 2 * original.actuator_ctrlrange)
     assert np.array_equal(changed.key_ctrl, 2 * original.key_ctrl)
     assert scaled_model_problems(original, changed, 2.0) == []
@@ -164,7 +156,7 @@ def _offset_frames(offset: float) -> str:
 
 def test_a_frame_offset_crossing_mujocos_tolerance_when_scaled_is_no_change() -> None:
     """0.7 micrometres is "at the body's frame" to MuJoCo, 1.4 is not: that flip is expected."""
-    original, changed = _compiled_pair(_offset_frames(7e-7), 2.0)
+    original, changed = compiled_pair(_offset_frames(7e-7), 2.0)
     assert original.geom_sameframe.tolist() == original.site_sameframe.tolist() == [1]
     assert changed.geom_sameframe.tolist() == changed.site_sameframe.tolist() == [3]
     assert scaled_model_problems(original, changed, 2.0) == []
@@ -173,7 +165,7 @@ def test_a_frame_offset_crossing_mujocos_tolerance_when_scaled_is_no_change() ->
 @pytest.mark.parametrize("offset", [3e-7, 0.01])
 def test_a_frame_flag_flip_the_offset_cannot_explain_is_reported(offset: float) -> None:
     """A flag that changes where scaling keeps the offset on one side of the tolerance."""
-    original, changed = _compiled_pair(_offset_frames(offset), 2.0)
+    original, changed = compiled_pair(_offset_frames(offset), 2.0)
     assert scaled_model_problems(original, changed, 2.0) == []
     changed.site_sameframe[0] = 3 if original.site_sameframe[0] == 1 else 1
     assert scaled_model_problems(original, changed, 2.0) == [
@@ -194,7 +186,7 @@ def test_a_bodys_joints_come_before_a_child_body_written_above_them(wrap: bool) 
     text = f"""<mujoco><worldbody><body name="p">{child}<joint name="p_slide" type="slide"/>
     <joint name="p_hinge"/><geom size="0.1"/></body></worldbody>
     <keyframe><key qpos="0.1 0.2 0.3 0.4" qvel="1 2 3 4"/></keyframe></mujoco>"""
-    original, changed = _compiled_pair(text, 2.0)
+    original, changed = compiled_pair(text, 2.0)
     names = [original.joint(i).name for i in range(original.njnt)]
     assert names == ["p_slide", "p_hinge", "c_hinge", "c_slide"]
     assert scaled_model_problems(original, changed, 2.0) == []

@@ -15,7 +15,7 @@ import numpy as np
 
 from mjcf_model.transforms.scaling.transform import scaled
 from serializers import dumps, loads
-from tests.test_scaling_fixes import ALIGNED_SLIDES
+from tests.support.scaling_oracle import ALIGNED_SLIDES
 
 #: Couplings between the x, y (axis from its class) and z slides, and of x alone.
 _COUPLINGS = """<equality><joint joint1="x" joint2="z" polycoef=".1 .5 .2 0 0"/>

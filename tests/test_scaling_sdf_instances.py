@@ -23,8 +23,7 @@ from mjcf_model.transforms.scaling.plugins import sdf_config, with_sdf_settings
 from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import with_children
 from serializers import dumps, loads
-from tests.support.scaling_oracle import scaled_model_problems
-from tests.test_scaling_fixes import IGNORED
+from tests.support.scaling_oracle import IGNORED, scaled_model_problems
 
 #: A torus made through an instance (one setting written), and a body named like it.
 _TORUS = """<mujoco><extension><plugin plugin="mujoco.sdf.torus"><instance name="donut">

@@ -18,9 +18,7 @@ import pytest
 
 from mjcf_model import Mujoco, attach, get_attribute, with_attributes
 from mjcf_model.tree.traversal import map_elements
-from tests.support.scenes import STAGES, Part, home_key, main, scene_layout, scene_problems
-
-SCENES = Path(__file__).parent / "fixtures" / "scenes"
+from tests.support.scenes import SCENES, STAGES, Part, home_key, main, scene_layout, scene_problems
 
 
 def _installed(package: str, relative: str) -> Path:

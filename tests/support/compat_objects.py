@@ -12,6 +12,7 @@ import xml.etree.ElementTree as ET
 from typing import Any
 
 import numpy as np
+from robosuite.models.world import MujocoWorldBase
 
 from serializers import to_etree
 
@@ -97,3 +98,35 @@ def assert_same_object(ours: Any, theirs: Any, *, asset: bool = True) -> None:
         assert getattr(ours, template)() == getattr(theirs, template)()
     assert ours.get_obj() is ours.get_obj()
     assert_view_matches_model(ours)
+
+
+def assert_same_composite(mine: Any, theirs: Any) -> None:
+    """Same object as robosuite's, byte for byte once white space is stripped, and bookkeeping."""
+    assert_same_object(mine, theirs)
+    assert text_of(mine.get_obj()) == text_of(theirs.get_obj())
+    assert text_of(mine.asset) == text_of(theirs.asset)
+    assert mine._object_absolute_positions.keys() == theirs._object_absolute_positions.keys()
+    for key, value in theirs._object_absolute_positions.items():
+        assert_same_value(mine._object_absolute_positions[key], value, key)
+    assert_same_value(mine._top, theirs._top, "top")
+    assert_same_value(mine._bottom, theirs._bottom, "bottom")
+    assert mine.joint_specs == theirs.joint_specs and mine.site_specs == theirs.site_specs
+    assert mine.object_parents == theirs.object_parents
+
+
+def composite_world(objects: list[Any]) -> MujocoWorldBase:
+    """A robosuite world holding ``objects``: their assets merged, their bodies appended."""
+    world = MujocoWorldBase()
+    for obj in objects:
+        world.merge_assets(obj)
+        world.worldbody.append(obj.get_obj())
+    return world
+
+
+_OBJECT = (
+    '<mujoco><asset><mesh name="m" file="m.stl" scale="{scale}"/></asset><worldbody><body>'
+    '<body name="object"><geom name="shell" type="box" size="0.1 0.1 0.1" group="0"/>'
+    '<site name="tip" pos="0 0 0.1"/></body>'
+    '<site name="bottom_site" pos="0 0 -0.1"/><site name="top_site" pos="0 0 0.1"/>'
+    '<site name="horizontal_radius_site" pos="0.1 0 0"/></body></worldbody></mujoco>'
+)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import atexit
 import copy
+import inspect
 import json
 import math
 import os
@@ -21,6 +22,7 @@ from typing import Any
 
 import numpy as np
 from hypothesis import strategies as st
+from hypothesis.extra import numpy as hnp
 from robosuite.utils import mjcf_utils as rs
 
 from mjcf_model.compat import mjcf_utils as ours
@@ -198,3 +200,192 @@ def named_elements(root: ET.Element, tags: Iterable[str] | None = None) -> list[
     return [
         e for e in root.iter() if isinstance(e.tag, str) and (wanted is None or e.tag in wanted)
     ]
+
+
+RS_CONSTANTS = sorted(
+    name for name, value in vars(rs).items() if name.isupper() and not inspect.ismodule(value)
+)
+
+
+E2 = (
+    '<body name="b" childclass="c"><geom name="g" material="m" mesh="p_mesh" class="k"/>'
+    '<joint name="j"/><site name="s" type="sphere"/><weld body1="b" body2="x"/>'
+    '<camera name="cam" mode="fixed"/><light name="l"/>'
+    '<foo name="f" rgba="1 0 0 1" texture="t"/><exclude body1="a" body2="b"/>'
+    '<pair geom1="g" geom2="h"/><motor joint="j" name="mot"/>'
+    '<fixed name="fx"><joint joint="j" coef="1"/></fixed></body>'
+)
+
+
+TAGS = ["geom", "body", "joint", "site", "material", "texture", "motor", "default", "worldbody"]
+
+
+TAGS += ["mujoco", "camera", "light", "tendon", "fixed", "position", "touch", "freejoint"]
+
+
+prefixes = st.sampled_from(["p_", "", "body", "geom0", "b", "class", "mat", "p"]) | st.text(
+    "abgp_0", max_size=4
+)
+
+
+name_sets = st.frozensets(
+    st.sampled_from(["body0", "geom0", "geom1", "joint0", "material0", "class0", "p_x", ""]),
+    max_size=3,
+)
+
+
+def prefix_twice(prefix: str, **options: Any) -> Any:
+    """``add_prefix`` applied twice with the same arguments."""
+
+    def operation(module: Any, root: ET.Element) -> Any:
+        return [module.add_prefix(root, prefix, **options) for _ in range(2)]
+
+    return operation
+
+
+def prefix_logging(prefix: str, names: frozenset[str], tags: Any, attribs: Any) -> Any:
+    """``add_prefix`` with an ``exclude`` that logs its calls; the result is the log.
+
+    Each element call is followed by the values asked about on that element,
+    sorted: robosuite asks in the iteration order of a set, which depends on
+    how the interpreter built the set (and on the hash seed).
+    """
+
+    def operation(module: Any, root: ET.Element) -> Any:
+        positions = paths(root)
+        log: list[Any] = []
+
+        def exclude(item: Any) -> bool:
+            if isinstance(item, str):
+                log[-1][1].append(item)
+                return item in names
+            log.append((positions[id(item)], []))
+            return item.get("name") in names
+
+        module.add_prefix(root, prefix, tags=tags, attribs=attribs, exclude=exclude)
+        return [(position, sorted(values)) for position, values in log]
+
+    return operation
+
+
+def _substring_oracle(root: ET.Element, tags: Any, substrings: list[str]) -> list[ET.Element]:
+    found = rs.find_elements(root, tags, return_first=False) or []
+    return [
+        e
+        for e in found
+        if e.get("name") is not None and any(s in e.get("name") for s in substrings)
+    ]
+
+
+def check_by_substring(root: ET.Element, tags: Any, substrings: list[str]) -> None:
+    """Compare ``find_elements_by_substring`` in both modes with robosuite.
+
+    Where robosuite crashes (unnamed elements) or errs (``return_first``), the
+    expected result is robosuite's ``find_elements`` list without unnamed elements.
+    """
+    theirs_root, our_root = copy.deepcopy(root), copy.deepcopy(root)
+    theirs, their_error = run(rs.find_elements_by_substring, theirs_root, tags, substrings)
+    mine = ours.find_elements_by_substring(our_root, tags, substrings)
+    CASES["find_elements_by_substring"] += 1
+    oracle = _substring_oracle(theirs_root, tags, substrings)
+    if their_error is TypeError:
+        CASES["find_elements_by_substring (robosuite crashes on unnamed)"] += 1
+        theirs = oracle or None
+    mine_first = ours.find_elements_by_substring(our_root, tags, substrings, return_first=True)
+    CASES["find_elements_by_substring (return_first)"] += 1
+    ours_pos, theirs_pos = paths(our_root), paths(theirs_root)
+    assert comparable(mine, ours_pos) == comparable(theirs, theirs_pos)
+    first = oracle[0] if oracle else None
+    assert comparable(mine_first, ours_pos) == comparable(first, theirs_pos)
+
+
+def _parts(root: ET.Element) -> tuple[ET.Element, ET.Element]:
+    """The worldbody (or the root) and the asset section (or an empty one) of a tree."""
+    worldbody = root.find("worldbody")
+    asset = root.find("asset")
+    return (root if worldbody is None else worldbody), (
+        ET.Element("asset") if asset is None else asset
+    )
+
+
+def scale_model(scale: Any, sites: bool, slide: bool) -> Any:
+    """``scale_mjcf_model`` on the tree's worldbody and assets."""
+
+    def operation(module: Any, root: ET.Element) -> Any:
+        worldbody, asset = _parts(root)
+        return module.scale_mjcf_model(
+            worldbody,
+            asset,
+            scale,
+            module.get_elements,
+            worldbody=worldbody if sites else None,
+            scale_slide_joints=slide,
+        )
+
+    return operation
+
+
+def scale_each(function: str, tag: str, scale: Any, *extra: Any) -> Any:
+    """``scale_<x>_element`` on every element of ``tag`` in the tree, in document order."""
+
+    def operation(module: Any, root: ET.Element) -> Any:
+        array = module.normalize_scale_array(scale)
+        return [getattr(module, function)(e, array, *extra) for e in root.iter(tag)]
+
+    return operation
+
+
+def element_filters(module: Any, root: ET.Element) -> Any:
+    """``_element_filter`` on every (element, parent) pair, and on the root without parent."""
+    return [module._element_filter(root, None)] + [
+        module._element_filter(child, parent) for parent in root.iter() for child in parent
+    ]
+
+
+def tag_filter(element: ET.Element, parent: ET.Element | None) -> Any:
+    """A custom ``sort_elements`` filter: the tag, for elements that have a parent."""
+    return element.tag if parent is not None and isinstance(element.tag, str) else None
+
+
+def find_parents(module: Any, root: ET.Element) -> Any:
+    """``find_parent`` for up to 25 elements of the tree, the root and a foreign element."""
+    every = list(root.iter())
+    targets = [*every[:: max(1, len(every) // 25)], root, ET.Element("geom")]
+    return [module.find_parent(root, target) for target in targets]
+
+
+finite = st.floats(allow_nan=False, allow_infinity=False)
+
+
+scalars = (
+    st.integers(-(10**6), 10**6) | st.floats() | st.booleans() | st.text(max_size=4) | st.none()
+)
+
+
+numpy_scalars = (
+    st.floats(width=32).map(np.float32)
+    | st.floats().map(np.float64)
+    | st.integers(-1000, 1000).map(np.int64)
+    | st.booleans().map(np.bool_)
+    | st.text(max_size=3).map(np.str_)
+)
+
+
+arrays = hnp.arrays(
+    dtype=st.sampled_from([np.float64, np.float32, np.int64, np.bool_]),
+    shape=hnp.array_shapes(min_dims=1, max_dims=2, min_side=0, max_side=4),
+)
+
+
+sequences = (
+    st.lists(scalars | numpy_scalars, max_size=5) | st.lists(finite, max_size=4).map(tuple) | arrays
+)
+
+
+values = (
+    scalars
+    | numpy_scalars
+    | sequences
+    | st.dictionaries(st.text(max_size=2), finite, max_size=2)
+    | st.sets(st.integers(0, 5), max_size=3)
+)

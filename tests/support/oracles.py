@@ -3,9 +3,23 @@
 from __future__ import annotations
 
 from collections.abc import Collection
+from pathlib import Path
 from typing import Any
 
-from mjcf_model.bridge.compare import NAME_FIELDS, compiled_names, model_differences, model_fields
+import mujoco
+
+from mjcf_model import (
+    Mujoco,
+    prefixed,
+)
+from mjcf_model.bridge.compare import (
+    NAME_FIELDS,
+    compile_text_beside,
+    compiled_names,
+    model_differences,
+    model_fields,
+)
+from serializers import dumps, loads
 from tests.conftest import MUJOCO_VERSION
 
 #: Every field that a renaming may change.
@@ -112,3 +126,35 @@ def trees_close(left: Any, right: Any, rel: float = 1e-9) -> bool:
     return len(left.children) == len(right.children) and all(
         trees_close(x, y, rel) for x, y in zip(left.children, right.children, strict=True)
     )
+
+
+def _compiled(text: str) -> Any:
+    return mujoco.MjModel.from_xml_string(text)
+
+
+def _round_trips_like_mujoco(text: str) -> None:
+    """MuJoCo compiles ``text``; we load it, and our text compiles to the same model."""
+    before = _compiled(text)
+    written = dumps(loads(text))
+    assert model_differences(before, _compiled(written)) == []
+    assert loads(written) == loads(text)
+
+
+def compile_beside(model: Any, path: Path) -> Any:
+    """Compile a model's text as if it were the file ``path``."""
+    return compile_text_beside(dumps(model), path)
+
+
+def prefixed_problems(model: Mujoco, path: Path, prefix: str = "p_") -> list[str]:
+    """What keeps the prefixed ``model`` from compiling to the original with names prefixed."""
+    original = compile_beside(model, path)
+    changed = compile_beside(prefixed(model, prefix), path)
+    return prefix_problems(original, changed, prefix)
+
+
+def written(tmp_path: Path, text: str, name: str = "model.xml") -> Path:
+    """Write ``text`` to ``tmp_path / name`` and return the path."""
+    path = tmp_path / name
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, encoding="utf-8")
+    return path

@@ -5,6 +5,8 @@ from __future__ import annotations
 import struct
 from pathlib import Path
 
+from mjcf_model.values import format_float
+
 __all__ = ["skin_file"]
 
 
@@ -23,3 +25,16 @@ def skin_file(path: Path, bodies: tuple[str, ...]) -> Path:
         data += struct.pack("<i", 1) + struct.pack("<i", index) + struct.pack("<f", 1)
     path.write_bytes(data)
     return path
+
+
+def _skin_model(vertices: list[float], name: str | None = "skin") -> str:
+    count = len(vertices) // 3
+    named = f' name="{name}"' if name else ""
+    numbers = " ".join(format_float(v) for v in vertices)
+    ids = " ".join(str(i) for i in range(count))
+    return (
+        '<mujoco><worldbody><body name="b"><geom size="0.1"/></body></worldbody><asset>'
+        f'<skin{named} vertex="{numbers}" face="0 1 2">'
+        f'<bone body="b" bindpos="0.1 0.2 0.3" bindquat="1 0 0 0" vertid="{ids}" '
+        f'vertweight="{" ".join(["1"] * count)}"/></skin></asset></mujoco>'
+    )
