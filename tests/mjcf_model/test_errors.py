@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import errno
 from pathlib import Path
 
 import mujoco
@@ -11,8 +10,6 @@ import pytest
 from mjcf_model import (
     Geom,
     MjcfError,
-    MjcfFileError,
-    MjcfFileNotFoundError,
     MjcfIncludeCycleError,
     MjcfIncludeError,
     MjcfSecurityError,
@@ -179,40 +176,6 @@ def test_bad_dict() -> None:
     """A dict that describes no node is a ValueError saying why."""
     with pytest.raises(MjcfValueError, match="not a node dict"):
         from_dict({"_node": "NoSuchNode"})
-
-
-def test_from_etree_error_names_the_element_path() -> None:
-    """Errors from ElementTree input name the path, with the index among same-tag siblings."""
-    import xml.etree.ElementTree as ET
-
-    from serializers import from_etree
-
-    tree = ET.fromstring(
-        "<mujoco><worldbody><geom size='1'/><body name='b'><geom size='1'/>"
-        "<geom pos='0 1'/></body></worldbody></mujoco>"
-    )
-    pos = from_etree(tree).worldbody.bodies[0].geoms[1].pos  # type: ignore[attr-defined]
-    with pytest.raises(MjcfValueError) as caught:
-        pos[0]
-    assert caught.value.path == "/mujoco/worldbody/body[@name='b']/geom[2]"
-    assert "attribute 'pos': expected 3 numbers, found 2" in str(caught.value)
-
-
-def test_a_missing_main_file_is_a_file_not_found_error(tmp_path: Path) -> None:
-    """``load`` and ``format_file`` of a missing file raise what ``open`` would, located."""
-    from mjcf_model.tools.formatting import format_file
-
-    missing = tmp_path / "no_such_model.xml"
-    for read in (load, format_file):
-        with pytest.raises(FileNotFoundError) as caught:
-            read(missing)
-        error = caught.value
-        assert isinstance(error, MjcfFileNotFoundError) and isinstance(error, MjcfError)
-        assert error.errno == errno.ENOENT and error.filename == str(missing)
-        assert str(error) == f"cannot read {str(missing)!r}: No such file or directory"
-    with pytest.raises(MjcfFileError) as folder:
-        load(tmp_path)
-    assert isinstance(folder.value, OSError) and folder.value.errno == errno.EISDIR
 
 
 #: Each error class and the builtin exception it also is: what ``except`` clauses

@@ -14,7 +14,7 @@ from mjcf_model import (
 )
 from serializers import dump, export, load, loads
 from tests.conftest import corpus_id
-from tests.support.model_files import WITH_FILES, _same, obj_mesh, write_tree
+from tests.support.model_files import _same, obj_mesh, with_files, write_tree
 
 # -- Where a model's files are: compiled in memory, dumped elsewhere, exported, MuJoCo as
 #    referee.
@@ -69,7 +69,7 @@ def test_export_bundles_asset_models_with_their_own_files(tmp_path: Path) -> Non
     assert _same(mujoco.MjModel.from_xml_path(str(path)), expected) == []
 
 
-@pytest.mark.parametrize("path", WITH_FILES, ids=corpus_id)
+@pytest.mark.parametrize("path", with_files(), ids=corpus_id)
 def test_corpus_model_dumped_elsewhere_and_exported_compiles_identically(
     path: Path, tmp_path: Path
 ) -> None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 from pathlib import Path
 
 import mujoco
@@ -46,5 +47,10 @@ ROBOT = """<mujoco model="robot">
 """
 
 
-#: Corpus models that name files: the ones relocation and export can get wrong.
-WITH_FILES = [p for p in compiling_corpus() if any(file_references(load(p, inline_includes=True)))]
+@functools.cache
+def with_files() -> list[Path]:
+    """Corpus models that name files: the ones relocation and export can get wrong.
+
+    Read on first use (the ``robot`` fixture imports this module and needs none of them).
+    """
+    return [p for p in compiling_corpus() if any(file_references(load(p, inline_includes=True)))]

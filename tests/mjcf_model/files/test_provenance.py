@@ -9,27 +9,13 @@ import pytest
 
 from mjcf_model import (
     MjcfValueError,
-    Mujoco,
     compiled,
 )
-from serializers import dump, dumps, from_dict, load, loads, to_dict
-from tests.support.model_files import ROBOT, WITH_FILES, _same, obj_mesh, write_tree
+from serializers import dump, dumps, load, loads
+from tests.support.model_files import ROBOT, _same, obj_mesh, with_files, write_tree
 
 # -- Where a model's files are: compiled in memory, dumped elsewhere, exported, MuJoCo as
 #    referee.
-
-
-def test_a_loaded_model_knows_its_folder_and_equality_ignores_it(robot: Path) -> None:
-    """``base_dir`` is the file's folder, kept by the dict form; ``==`` and ``hash`` ignore it."""
-    model = load(robot)
-    assert model.base_dir == robot.parent.resolve()
-    again = loads(robot.read_text())
-    assert again.base_dir is None and Mujoco().base_dir is None
-    assert model == again and hash(model) == hash(again)
-    assert from_dict(to_dict(model)) == model
-    assert from_dict(to_dict(model)).base_dir == model.base_dir
-    assert "base_dir" not in to_dict(again)
-    assert loads("<mujoco/>", base_dir=robot.parent).base_dir == robot.parent.resolve()
 
 
 def test_dump_elsewhere_relocates_and_dump_in_place_keeps_the_text(
@@ -142,7 +128,7 @@ def test_inlined_includes_name_files_as_mujoco_finds_them(
 
 def test_most_of_the_corpus_names_files() -> None:
     """The relocation corpus is not trivially small."""
-    assert len(WITH_FILES) >= 40
+    assert len(with_files()) >= 40
 
 
 def test_a_linked_model_resolves_from_the_links_folder(tmp_path: Path) -> None:
