@@ -3,7 +3,7 @@
 The converter's generated hooks read every field of a class (dozens) where a
 node stores a few. A :class:`Codec` reads, once per class, the converter's own
 hook for each field's type, so both directions work on the fields a node
-stores and give the converter's own result (``tests/test_equality_speed_paths.py``).
+stores and give the converter's own result (``tests/serializers/test_dict_codec.py``).
 """
 
 from __future__ import annotations
@@ -46,7 +46,7 @@ class Codec:
     The converter's generated hooks read every field of a class (dozens) where a
     node stores a few; these tables let both directions work on the fields a node
     stores, calling for each value the hook the converter has for its type, so the
-    result is the converter's own (``tests/test_equality_speed_paths.py`` checks it).
+    result is the converter's own (``tests/serializers/test_dict_codec.py`` checks it).
     """
 
     def __init__(self, converter: cattrs.Converter, members: tuple[type, ...]) -> None:

@@ -176,7 +176,7 @@ def read_typed(
     once, then shared), and the node is given its fields at once. It returns
     ``None`` for an attribute without a field or a value its field cannot read,
     which :func:`build_element` keeps and explains. The result is the node
-    :func:`build_element` builds (``tests/test_reading_paths.py`` checks it).
+    :func:`build_element` builds (``tests/serializers/test_parsed_elements.py`` checks it).
 
     Args:
         cls: The element's typed class.

@@ -2,7 +2,7 @@ r"""Byte-level scans the text reader makes beside expat.
 
 Where a start tag ends (expat reports where it begins), and whether a file
 holds any character data other than white space. Every pattern is a single
-character class (``tests/test_hostile.py``): scans stay linear on any text.
+character class (``tests/mjcf_model/values/test_reading.py``): scans stay linear on any text.
 
 >>> start_tag_end(b"<a b='>'/><c/>", 0), may_hold_text(b"<a>\n  <b/>\n</a>")
 (10, False)

@@ -15,9 +15,10 @@ import re
 from pathlib import Path
 
 import mujoco
+import pytest
 from hypothesis import HealthCheck, Phase, settings
 
-from tests.plan_counting import plan_calls  # noqa: F401  (a fixture)
+from tests.support.plan_counting import plan_calls  # noqa: F401  (a fixture)
 
 settings.register_profile(  # 60: the two environments' runs fit in 15 minutes on 2 cores
     "ci",
@@ -127,3 +128,15 @@ def printed_schema() -> dict[str, set[str]]:
         key = "/".join(stack[1:]) or "mujoco"
         schema[key] = set(attributes)
     return schema
+
+
+@pytest.fixture
+def robot(tmp_path: Path) -> Path:
+    """A robot in a folder of its own, its mesh under ``assets/``."""
+    # Imported here: tests.support.model_files imports this module.
+    from tests.support.model_files import ROBOT, obj_mesh, write_tree
+
+    folder = write_tree(
+        tmp_path / "robots" / "arm", {"robot.xml": ROBOT, "assets/link.obj": obj_mesh(6)}
+    )
+    return folder / "robot.xml"

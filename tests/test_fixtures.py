@@ -11,7 +11,6 @@ import json
 import re
 from collections.abc import Iterator
 from pathlib import Path
-from typing import TypeVar
 
 import mujoco
 import pytest
@@ -22,8 +21,6 @@ from mjcf_model import (
     Attach,
     Body,
     Comment,
-    Compiler,
-    Contact,
     Default,
     Deformable,
     Element,
@@ -39,32 +36,20 @@ from mjcf_model import (
     Frame,
     GenericElement,
     Geom,
-    Include,
-    Joint,
     Key,
     Keyframe,
-    MjcfIncludeCycleError,
-    MjcfIncludeError,
     Model,
-    Mujoco,
-    Node,
-    Option,
     PluginConfig,
     PluginInstance,
     Replicate,
     Sensor,
-    Site,
     Tendon,
-    TypedElement,
     Worldbody,
 )
-from mjcf_model.bridge.compare import compile_text_beside, model_differences
 from mjcf_model.tools.check import check_file
 from serializers import dump, dumps, from_dict, from_etree, load, loads, to_dict, to_etree
-
-FIXTURES = Path(__file__).parent / "fixtures"
-
-T = TypeVar("T", bound=TypedElement)
+from tests.conftest import FIXTURES
+from tests.support.fixture_checks import comments, compile_round_trip, names, section, walk
 
 #: Every top-level fixture; the included parts live in ``fixtures/include_parts``.
 FIXTURE_NAMES = (
@@ -82,46 +67,10 @@ FIXTURE_NAMES = (
 )
 FIXTURE_PATHS = [FIXTURES / name for name in FIXTURE_NAMES]
 
-INCLUDES = FIXTURES / "includes.xml"
-INCLUDE_PARTS = (
-    FIXTURES / "include_parts" / "common.xml",
-    FIXTURES / "include_parts" / "robot.xml",
-    FIXTURES / "include_parts" / "nested" / "hand.xml",
-)
 
 _COMMENT = re.compile(r"<!--(.*?)-->", re.DOTALL)
 
 fixture_path = pytest.mark.parametrize("path", FIXTURE_PATHS, ids=FIXTURE_NAMES)
-
-
-def walk(node: Node) -> Iterator[Node]:
-    """Yield a node and all its descendants, in document order."""
-    yield node
-    if isinstance(node, Element):
-        for child in node.children:
-            yield from walk(child)
-
-
-def comments(node: Node) -> list[str]:
-    """Return the texts of all comments under a node, in document order."""
-    return [n.text for n in walk(node) if isinstance(n, Comment)]
-
-
-def names(model: mujoco.MjModel, objtype: mujoco.mjtObj, count: int) -> list[str]:
-    """Return the names of ``count`` compiled objects of one type, by id."""
-    return [mujoco.mj_id2name(model, objtype, i) for i in range(count)]
-
-
-def section(model: Mujoco, cls: type[T]) -> T:
-    """Return the first root child of a section type, without the section properties."""
-    found = [c for c in model.children if isinstance(c, cls)]
-    assert found, f"no <{cls.tag}> section"
-    return found[0]
-
-
-def compile_round_trip(model: Mujoco, beside: Path) -> mujoco.MjModel:
-    """Compile the written text of a loaded model as if it stood beside ``beside``."""
-    return compile_text_beside(dumps(model), beside)
 
 
 # -- the fixture set ----------------------------------------------------------------------
@@ -137,27 +86,6 @@ def test_fixture_compiles_in_mujoco(path: Path) -> None:
     """MuJoCo compiles the fixture as written."""
     model = mujoco.MjModel.from_xml_path(str(path))
     assert model.nbody >= 1
-
-
-def test_root_section_accessors() -> None:
-    """Each section property of the root returns the first child of that section type."""
-    model = load(FIXTURES / "mechanics.xml")
-    expected = {
-        "compiler": Compiler,
-        "option": Option,
-        "default": Default,
-        "worldbody": Worldbody,
-        "contact": Contact,
-        "tendon": Tendon,
-        "equality": Equality,
-        "actuator": Actuator,
-        "sensor": Sensor,
-    }
-    for attribute, cls in expected.items():
-        assert getattr(model, attribute) is section(model, cls)
-    absent = ("size", "statistic", "visual", "asset", "deformable", "keyframe", "custom")
-    for attribute in (*absent, "extension"):
-        assert getattr(model, attribute) is None
 
 
 # -- round trips every fixture must survive -----------------------------------------------
@@ -192,7 +120,7 @@ def test_file_round_trip(path: Path, tmp_path: Path) -> None:
     """Dumping to a file and loading it back gives an equal model and the same text.
 
     The model is read from text, so it has no folder of its own and is written as
-    it is (a loaded model dumped elsewhere is relocated: tests/test_provenance.py).
+    it is (a loaded model dumped elsewhere is relocated: tests/mjcf_model/files/test_provenance.py).
     """
     model = loads(path.read_bytes())
     target = tmp_path / path.name
@@ -545,125 +473,3 @@ def test_mechanics_counts_after_round_trip() -> None:
     again = compile_round_trip(model, path)
     counts = (again.nu, again.ntendon, again.neq, again.nsensor, again.npair, again.nexclude)
     assert counts == (12, 5, 7, 25, 2, 2)
-
-
-# -- includes -----------------------------------------------------------------------------
-
-
-def test_includes_kept() -> None:
-    """By default includes stay Include nodes and are written back as include elements."""
-    model = load(INCLUDES)
-    includes = [n for n in walk(model) if isinstance(n, Include)]
-    assert [i.file for i in includes] == ["include_parts/common.xml", "include_parts/robot.xml"]
-    assert model.children[1] == Include(file="include_parts/common.xml")
-    assert [type(e) for e in section(model, Worldbody).elements] == [Geom, Include, Geom]
-    written = dumps(model)
-    assert '  <include file="include_parts/common.xml"/>\n' in written
-    assert '    <include file="include_parts/robot.xml"/>\n' in written
-    again = loads(written)
-    assert [n for n in walk(again) if isinstance(n, Include)] == includes
-
-
-def test_includes_inlined() -> None:
-    """With inline_includes the included files' elements stand where the includes were."""
-    kept = load(INCLUDES)
-    model = load(INCLUDES, inline_includes=True)
-    assert not any(isinstance(n, Include) for n in walk(model))
-    assert "<include" not in dumps(model)
-    common = load(INCLUDE_PARTS[0])
-    assert model.children[0] == kept.children[0]
-    assert model.children[1:5] == common.children
-    assert model.children[5] == kept.children[2]
-    assert model.children[6] is section(model, Worldbody)
-    assert model.children[7:] == kept.children[4:]
-    world = section(model, Worldbody).elements
-    assert [(type(e), e.name) for e in world] == [
-        (Geom, "floor"),
-        (Body, "robot"),
-        (Geom, "robot_plate"),
-        (Geom, "after_robot"),
-    ]
-    robot = world[1]
-    assert [type(e) for e in robot.elements] == [Joint, Geom, Body]
-    hand = robot.bodies[0]
-    assert [(type(e), e.name) for e in hand.elements] == [
-        (Joint, "wrist"),
-        (Geom, "palm"),
-        (Site, "grip"),
-    ]
-    assert robot.children[-1] == Comment(text=" trailing comment after the included root ")
-
-
-def test_inlined_comments_come_from_every_file() -> None:
-    """Inlining keeps the comments of the main file and of every included file."""
-    model = load(INCLUDES, inline_includes=True)
-    sources = [INCLUDES, *INCLUDE_PARTS]
-    expected = sum(p.read_text(encoding="utf-8").count("<!--") for p in sources)
-    assert len(comments(model)) == expected == 4
-
-
-def test_kept_and_inlined_compile_alike() -> None:
-    """The kept and the inlined round trips compile to the same model."""
-    kept = compile_round_trip(load(INCLUDES), INCLUDES)
-    inlined = compile_round_trip(load(INCLUDES, inline_includes=True), INCLUDES)
-    assert model_differences(kept, inlined) == []
-    assert names(kept, mujoco.mjtObj.mjOBJ_BODY, kept.nbody) == ["world", "robot", "hand"]
-
-
-def test_missing_include_raises(tmp_path: Path) -> None:
-    """Inlining an include of a missing file names the including file and line."""
-    main = tmp_path / "main.xml"
-    main.write_text(
-        '<mujoco>\n  <worldbody>\n    <include file="missing.xml"/>\n  </worldbody>\n</mujoco>\n'
-    )
-    with pytest.raises(MjcfIncludeError) as info:
-        load(main, inline_includes=True)
-    assert isinstance(info.value, OSError)
-    message = str(info.value)
-    assert f"{main}:3" in message
-    assert "missing.xml" in message
-    kept = load(main)
-    assert section(kept, Worldbody).elements == (Include(file="missing.xml"),)
-
-
-def test_missing_nested_include_names_the_nested_file(tmp_path: Path) -> None:
-    """A missing include inside an included file is reported at that file and line."""
-    (tmp_path / "sub").mkdir()
-    main = tmp_path / "main.xml"
-    main.write_text(
-        '<mujoco>\n  <worldbody>\n    <include file="sub/a.xml"/>\n  </worldbody>\n</mujoco>\n'
-    )
-    part = tmp_path / "sub" / "a.xml"
-    part.write_text(
-        '<mujoco>\n  <body name="a">\n    <geom size="0.1"/>\n'
-        '    <include file="gone.xml"/>\n  </body>\n</mujoco>\n'
-    )
-    with pytest.raises(MjcfIncludeError) as info:
-        load(main, inline_includes=True)
-    message = str(info.value)
-    assert f"{part.resolve()}:4" in message
-    assert "gone.xml" in message
-
-
-def test_include_cycle_raises(tmp_path: Path) -> None:
-    """Files that include each other raise an error that mentions the cycle."""
-    a = tmp_path / "a.xml"
-    b = tmp_path / "b.xml"
-    a.write_text('<mujoco>\n  <include file="b.xml"/>\n</mujoco>\n')
-    b.write_text('<mujoco>\n  <include file="a.xml"/>\n</mujoco>\n')
-    with pytest.raises(MjcfIncludeCycleError, match="cycle") as info:
-        load(a, inline_includes=True)
-    assert isinstance(info.value, ValueError)
-    assert f"{b.resolve()}:2" in str(info.value)
-    with pytest.raises(ValueError, match="already included"):
-        mujoco.MjModel.from_xml_path(str(a))
-
-
-def test_self_include_raises(tmp_path: Path) -> None:
-    """A file that includes itself is a cycle too."""
-    a = tmp_path / "self.xml"
-    a.write_text(
-        '<mujoco>\n  <worldbody>\n    <include file="self.xml"/>\n  </worldbody>\n</mujoco>\n'
-    )
-    with pytest.raises(MjcfIncludeCycleError, match="cycle"):
-        load(a, inline_includes=True)

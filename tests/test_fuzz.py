@@ -1,7 +1,7 @@
 r"""Fuzzing the reader and writer with mutated real files and mutated generated models.
 
 Every case is a seed document after a few hypothesis-drawn mutations (see
-``tests/fuzzing.py``): byte flips, inserts and deletes, truncation, element and
+``tests/support/fuzzing.py``): byte flips, inserts and deletes, truncation, element and
 attribute deletion and duplication, number garbage in attribute values, deep
 nesting of bodies and default classes, odd unicode and control characters in
 names, lying or unknown encoding declarations, bare ``&`` and junk after the
@@ -38,7 +38,7 @@ varies the seed::
 Hypothesis stores every failure it finds in ``.hypothesis/`` and replays it first
 on the next run; ``--hypothesis-show-statistics`` shows the time per case. A
 failure prints the seed, each mutation and the mutated bytes; add the bytes to
-``MINIMAL_CASES`` in ``tests/fuzzing.py`` once it is understood.
+``MINIMAL_CASES`` in ``tests/support/fuzzing.py`` once it is understood.
 """
 
 from __future__ import annotations
@@ -48,7 +48,7 @@ import os
 import pytest
 from hypothesis import HealthCheck, given, note, settings
 
-from tests.fuzzing import (
+from tests.support.fuzzing import (
     MINIMAL_CASES,
     Mutant,
     Seed,

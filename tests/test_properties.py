@@ -15,6 +15,7 @@ from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.strategies import elements, models
 from serializers import dumps, from_dict, from_etree, loads, to_dict, to_etree
 from tests.conftest import PER_CLASS
+from tests.support.node_classes import TYPED_CLASSES
 
 
 @given(models())
@@ -52,10 +53,7 @@ def test_generated_models_compile_and_survive(model: Mujoco) -> None:
     assert model_differences(original, again) == []
 
 
-CLASSES = sorted({cls for cls in CLASS_BY_KEY.values()}, key=lambda c: c.__name__)
-
-
-@pytest.mark.parametrize("cls", CLASSES, ids=lambda c: c.__name__)
+@pytest.mark.parametrize("cls", TYPED_CLASSES, ids=lambda c: c.__name__)
 def test_every_element_type_round_trips(cls: type[TypedElement]) -> None:
     """Arbitrary values of every typed class survive dicts, ElementTree and text."""
 

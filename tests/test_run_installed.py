@@ -6,7 +6,7 @@ import xml.etree.ElementTree as ET
 
 from tests.run_installed import ENVIRONMENTS, MUST_RUN, skipped_must_run
 
-MODULE = "tests.test_compat_robosuite_environments"
+MODULE = "tests.mjcf_model.test_compat"
 
 
 def _report(*cases: str) -> ET.Element:
@@ -32,7 +32,7 @@ def test_a_skipped_robosuite_environment_test_fails_the_oldest_run() -> None:
 
 def test_a_must_run_module_with_no_test_in_the_report_fails() -> None:
     """A module not collected in a whole-suite run counts as not run; under -k it may be left."""
-    report = _report('<testcase classname="tests.test_nodes" name="test_x"/>')
+    report = _report('<testcase classname="tests.test_corpus" name="test_x"/>')
     assert skipped_must_run(report, (MODULE,)) == [f"{MODULE} ran no test"]
     assert skipped_must_run(report, (MODULE,), whole_suite=False) == []
 
@@ -40,7 +40,7 @@ def test_a_must_run_module_with_no_test_in_the_report_fails() -> None:
 def test_skips_elsewhere_and_runs_of_every_test_pass() -> None:
     """Skips in other modules and a must-run module whose tests all ran give no problem."""
     report = _report(
-        '<testcase classname="tests.test_nodes" name="test_x"><skipped message="no"/></testcase>',
+        '<testcase classname="tests.test_corpus" name="test_x"><skipped message="no"/></testcase>',
         f'<testcase classname="{MODULE}.TestTasks" name="test_lift"/>',
     )
     assert skipped_must_run(report, (MODULE,)) == []
@@ -52,4 +52,4 @@ def test_must_run_names_real_environments_and_modules() -> None:
     assert set(MUST_RUN) <= {path.stem for path in ENVIRONMENTS.glob("*.txt")}
     for modules in MUST_RUN.values():
         for module in modules:
-            assert (ENVIRONMENTS.parent / f"{module.split('.')[-1]}.py").is_file()
+            assert (ENVIRONMENTS.parents[1] / (module.replace(".", "/") + ".py")).is_file()

@@ -5,7 +5,7 @@ has dozens and an element writes a few. :func:`build_node` stores only the
 given fields in the instance's ``__dict__`` (absent ones read their default
 from the class, see :func:`~mjcf_model.nodes.declaring.node`), running each given
 field's converter and validator. It is an owned contract, checked by
-``tests/test_builders.py`` for every class of the registry: the result equals
+``tests/mjcf_model/nodes/test_building.py`` for every class of the registry: the result equals
 ``cls(**values)``, or ``attrs.evolve(base, **values)`` when a base is given.
 :func:`~mjcf_model.nodes.declaring.node` refuses, when a class is declared, what the
 builder could not honour (``__attrs_post_init__``, slots, non-init fields).

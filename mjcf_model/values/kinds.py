@@ -132,7 +132,7 @@ Value = str | int | float | bool | Floats | Ints | Unparsed
 
 
 #: One character XML 1.0 cannot carry. Every pattern in the library is a single
-#: character class, which cannot backtrack (tests/test_hostile.py checks this).
+#: character class, which cannot backtrack (tests/mjcf_model/values/test_reading.py checks this).
 NOT_XML_CHARACTER = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
 
 

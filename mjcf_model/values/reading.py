@@ -125,7 +125,7 @@ def floats_from_text(lo: int, hi: int | None, text: str) -> Floats:
 
     """
     # ``float`` reads one token in time linear in its length; no regular
-    # expression ever sees attribute text (see tests/test_hostile.py).
+    # expression ever sees attribute text (see tests/mjcf_model/values/test_reading.py).
     try:
         if len(text) > _CHUNK:
             items = tuple(f for chunk in _chunks(text) for f in map(float, chunk.split()))
