@@ -63,6 +63,13 @@ def replaced_at(node: _A, path: Path, new: Sequence[Node]) -> _A:
         (Site(), Site())
 
     """
+    if not path:  # the root itself: only one node of its own kind can stand there
+        if len(new) != 1 or not isinstance(new[0], type(node)):
+            raise MjcfValueError(
+                f"the root {type(node).__name__} can only be replaced by one node of its class,"
+                f" not {[type(n).__name__ for n in new]}"
+            )
+        return new[0]
     chain: list[AnyElement] = [node]
     for index in path[:-1]:
         inner = chain[-1].children[index]
@@ -73,8 +80,6 @@ def replaced_at(node: _A, path: Path, new: Sequence[Node]) -> _A:
         children = list(holder.children)
         children[index : index + 1] = replacement
         replacement = [with_children(holder, children)]
-    if not path:
-        replacement = list(new)
     result = replacement[0]
     assert isinstance(result, type(node))
     return result

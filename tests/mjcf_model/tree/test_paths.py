@@ -51,3 +51,12 @@ def test_appending_and_editing_change_only_their_paths() -> None:
     assert edited.worldbody.bodies[1].bodies[0] is MODEL.worldbody.bodies[1].bodies[0]
     assert "<!-- the right arm -->" in dumps(edited)
     assert edited_at(Body(name="x"), {}) == Body(name="x")
+
+
+def test_replacing_the_root_gives_the_new_root_or_says_why_not() -> None:
+    """The empty path is the root: one node of its class replaces it; anything else is refused."""
+    body, other = Body(name="a"), Body(name="b", children=[Geom(name="g")])
+    assert replaced_at(body, (), [other]) is other
+    for wrong in ([], [other, other], [Geom(name="g")]):
+        with pytest.raises(MjcfValueError, match="root Body can only be replaced"):
+            replaced_at(body, (), wrong)
