@@ -1,7 +1,7 @@
 """Shared test setup: hypothesis profiles and the real-world corpus.
 
 The profile comes from ``HYPOTHESIS_PROFILE``: ``ci`` (the default under
-``CI=true``; 60 examples per property), ``dev`` (50, for quick local runs) or
+``CI=true``; 45 examples per property), ``dev`` (50, for quick local runs) or
 ``mutation`` (30 fixed examples, no shrinking: the mutation tests run the suite
 once per mutant and need the same verdict each time, fast).
 """
@@ -20,9 +20,9 @@ from hypothesis import HealthCheck, Phase, settings
 
 from tests.support.plan_counting import plan_calls  # noqa: F401  (a fixture)
 
-settings.register_profile(  # 60: the two environments' runs fit in 15 minutes on 2 cores
+settings.register_profile(  # 45: the two environments' runs fit in 15 minutes on 2 cores, with room
     "ci",
-    max_examples=60,
+    max_examples=45,
     deadline=None,
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
     print_blob=True,
