@@ -49,7 +49,7 @@ PACKAGES = ("mjcf_model", "serializers")
 #: Hypothesis profiles by environment (``tests/conftest.py`` defines them); the others
 #: keep the caller's (``ci`` under ``CI=true``). The oldest runs every property at the
 #: ``compat`` profile's 25 examples: it checks that the library works on MuJoCo 3.9, the
-#: newest searches with 60; the two runs stay under 15 minutes on 2 cores.
+#: newest searches with 45; the two runs stay under 15 minutes on 2 cores.
 HYPOTHESIS_PROFILES = {"oldest": "compat"}
 #: Test modules whose every test must run (none skipped) in an environment: robosuite's
 #: own environments run only up to MuJoCo 3.9, so only ``oldest`` can run them. Named as
