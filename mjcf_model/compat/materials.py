@@ -43,11 +43,14 @@ TEXTURE_FILES: Mapping[str, str] = MappingProxyType(_TEXTURE_FILES)
 _E = TypeVar("_E", bound=Element)
 
 
-def material_nodes(material: Any, prefix: str = "") -> tuple[GenericElement, GenericElement]:
+def material_nodes(
+    material: Any, prefix: str = "", text: Callable[[Any], str] = attribute_text
+) -> tuple[GenericElement, GenericElement]:
     """The ``<texture>`` and ``<material>`` of a ``CustomMaterial`` (ours or robosuite's).
 
-    Their attributes are the material's, as text, in its order; unless the material is
-    ``shared``, the texture's and material's names get ``prefix``.
+    Their attributes are the material's, made text by ``text`` (as ``CustomMaterial``
+    writes them, by default), in its order; unless the material is ``shared``, the
+    texture's and material's names get ``prefix``.
 
     Examples:
         >>> wood = CustomMaterial(None, "wood", "wood_mat", tex_attrib={"builtin": "flat"})
@@ -57,8 +60,8 @@ def material_nodes(material: Any, prefix: str = "") -> tuple[GenericElement, Gen
 
     """
     add = "" if material.shared else prefix
-    texture = {k: attribute_text(v) for k, v in material.tex_attrib.items()}
-    own = {k: attribute_text(v) for k, v in material.mat_attrib.items()}
+    texture = {k: text(v) for k, v in material.tex_attrib.items()}
+    own = {k: text(v) for k, v in material.mat_attrib.items()}
     texture["name"] = add + texture["name"]
     own["name"] = add + own["name"]
     if "texture" in own:

@@ -21,6 +21,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from mjcf_model.compat.materials import material_nodes
 from mjcf_model.compat.mjcf_utils.constants import RED
 from mjcf_model.compat.mjcf_utils.materials import flat_material
 from mjcf_model.compat.mjcf_utils.text import array_to_string, get_size
@@ -35,7 +36,7 @@ from mjcf_model.compat.objects.habits import (
 )
 from mjcf_model.compat.objects.naming import robosuite_prefixed
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import AnyElement, GenericElement
+from mjcf_model.nodes.base import AnyElement
 from mjcf_model.tree.traversal import with_children
 
 __all__ = [
@@ -57,11 +58,8 @@ def material_parts(material: Any) -> tuple[str, str, bool, AnyElement, AnyElemen
     ``material`` is a ``CustomMaterial``, ours or robosuite's: its attributes are read as
     robosuite's ``new_element`` reads them.
     """
-    tex_attrib = {k: value_text(v) for k, v in material.tex_attrib.items()}
-    mat_attrib = {k: value_text(v) for k, v in material.mat_attrib.items()}
-    texture = GenericElement(tag="texture", attributes=tex_attrib)
-    node = GenericElement(tag="material", attributes=mat_attrib)
-    return str(material.name), tex_attrib["name"], bool(material.shared), texture, node
+    texture, node = material_nodes(material, text=value_text)
+    return str(material.name), texture.attributes["name"], bool(material.shared), texture, node
 
 
 def half_extents(geom_type: Any, size: Any) -> Any:
