@@ -48,6 +48,21 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.ge
 #: strategies, so each run draws a quarter of the profile's examples (at least 10).
 PER_CLASS = settings(max_examples=max(10, settings.default.max_examples // 4))
 
+
+@pytest.fixture(autouse=True)
+def _room_in_mujocos_asset_cache() -> None:
+    """Empty MuJoCo's asset cache before a test when it is more than half full.
+
+    MuJoCo keeps the meshes and textures it decodes (500 MB by default) and, once the cache
+    is full, keeps no new ones: every later compile of a robot decodes its meshes again
+    (robosuite's environments ran three times slower late in a run than alone). What a
+    test checks never depends on the cache, only how long it takes.
+    """
+    cache = mujoco.mj_getCache()
+    if mujoco.mj_getCacheSize(cache) > mujoco.mj_getCacheCapacity(cache) // 2:
+        mujoco.mj_clearCache(cache)
+
+
 FIXTURES = Path(__file__).parent / "fixtures"
 #: The MuJoCo release this process runs, as (major, minor).
 MUJOCO_VERSION = tuple(int(part) for part in mujoco.__version__.split(".")[:2])

@@ -3,8 +3,8 @@
 Each of robosuite's 19 manipulation environments is built twice on the same seed,
 once as robosuite ships it and once with every object class (and
 ``CustomMaterial``) the modules that build its objects import from robosuite
-replaced by this library's twin; both are reset and stepped with the same 100
-seeded random actions. The compiled models, the model XML, every observation,
+replaced by this library's twin; both are reset and stepped with the same seeded
+random actions (:data:`STEPS` of them). The compiled models, the model XML, every observation,
 every reward, every ``done`` flag and every success check must be identical. An
 environment that used an object class this library lacks fails here, since every
 robosuite object class a building module imports is replaced.
@@ -172,7 +172,7 @@ def test_every_robosuite_environment_is_run() -> None:
 def test_task_runs_identically_with_this_librarys_objects(
     task: str, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    """Same compiled model, XML, observations, rewards and done flags over 100 random steps."""
+    """Same compiled model, XML, observations, rewards and done flags over the random steps."""
     import importlib
 
     theirs = _record(task, seed=3)
