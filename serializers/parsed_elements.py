@@ -18,18 +18,28 @@ from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.nodes import layout as layouts
 from mjcf_model.nodes.base import (
     AnyElement,
+    Element,
     GenericElement,
     Node,
     TypedElement,
+    attribute_text,
     build_node,
     field_table,
+    get_attribute,
 )
 from mjcf_model.nodes.layout import Layout, LayoutDetail, detail
 from mjcf_model.nodes.node_info import NodeInfo, tuple_getter
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.values import Unparsed
 
-__all__ = ["ReadMemo", "build_element", "element_step", "element_text", "read_typed"]
+__all__ = [
+    "ReadMemo",
+    "build_element",
+    "element_step",
+    "element_text",
+    "read_typed",
+    "written_text",
+]
 
 
 def element_text(chunks: Sequence[str | None], has_children: bool) -> str | None:
@@ -292,6 +302,39 @@ def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout)
     if check is not None and None not in values:
         detail.getter, detail.stored = check
     return values
+
+
+def written_text(node: Node, name: str) -> str | None:
+    """The text the writer writes for attribute ``name``; ``None`` when not written or a comment.
+
+    For an element read from a file, an attribute still holding the value it was read
+    with is written as it was spelled there (``group="01"``); any other is formatted, as
+    :func:`~mjcf_model.nodes.base.attribute_text` formats it.
+
+    Examples:
+        >>> from serializers import loads
+        >>> geom = loads('<geom group="01" size="0.10"/>')
+        >>> written_text(geom, "group"), written_text(geom, "size"), written_text(geom, "pos")
+        ('01', '0.10', None)
+        >>> from mjcf_model import with_attributes
+        >>> written_text(with_attributes(geom, group=2), "group")
+        '2'
+
+    """
+    text = attribute_text(node, name)
+    if text is None:
+        return None
+    assert isinstance(node, Element)
+    layout = node.layout
+    if layout is None:
+        return text
+    cut = detail(layout)
+    if name not in cut.names:
+        return text
+    index = cut.names.index(name)
+    recorded = recorded_values(cut, type(node), layout)[index]
+    value = get_attribute(node, name)
+    return cut.texts[index] if value is recorded or value == recorded else text
 
 
 def holds_what_was_read(element: AnyElement, layout: Layout, cut: LayoutDetail) -> bool:

@@ -21,12 +21,12 @@ from mjcf_model.nodes.base import (
     AnyElement,
     Element,
     Node,
-    attribute_text,
     get_attribute,
     with_attributes,
 )
 from mjcf_model.tree.traversal import map_tree
 from mjcf_model.values import Value
+from serializers.parsed_elements import written_text
 
 __all__ = ["GeomRole", "geom_role", "role_of_group", "with_collision_color", "with_visual_material"]
 
@@ -39,7 +39,8 @@ GeomRole = Literal["collision", "visual"]
 def geom_role(element: AnyElement) -> GeomRole | None:
     """``"collision"`` for a geom in group 0 or none, ``"visual"`` in group 1, else ``None``.
 
-    The group is compared as written text, so ``group="1.0"`` has no role, as in
+    The group is compared as the text the writer writes (a file's own spelling while the
+    value is the one read), so ``group="1.0"`` and ``group="01"`` have no role, as in
     robosuite.
 
     Examples:
@@ -50,7 +51,7 @@ def geom_role(element: AnyElement) -> GeomRole | None:
     """
     if element.tag != "geom":
         return None
-    return role_of_group(attribute_text(element, "group"))
+    return role_of_group(written_text(element, "group"))
 
 
 def role_of_group(group: str | None) -> GeomRole | None:
@@ -85,18 +86,14 @@ def with_collision_color(
     """
     made: list[Value] = []
 
-    def visit(current: Node) -> Node:
-        if (
-            isinstance(current, Element)
-            and geom_role(current) == "collision"
-            and (exclude is None or not exclude(current))
-        ):
-            if not made:
-                made.append(color())
-            return with_attributes(current, {"rgba": made[0], "material": None})
-        return current
+    def paint(geom: AnyElement) -> dict[str, Value | None] | None:
+        if exclude is not None and exclude(geom):
+            return None
+        if not made:
+            made.append(color())
+        return {"rgba": made[0], "material": None}
 
-    return cast(_E, map_tree(visit, node))
+    return _with_role_changed(node, "collision", paint)
 
 
 def with_visual_material(node: _E, material: str) -> tuple[_E, bool]:
@@ -115,15 +112,26 @@ def with_visual_material(node: _E, material: str) -> tuple[_E, bool]:
     """
     used = False
 
-    def visit(current: Node) -> Node:
+    def give(geom: AnyElement) -> dict[str, Value | None] | None:
         nonlocal used
-        if (
-            isinstance(current, Element)
-            and geom_role(current) == "visual"
-            and get_attribute(current, "material") is None
-        ):
-            used = True
-            return with_attributes(current, {"material": material})
+        if get_attribute(geom, "material") is not None:
+            return None
+        used = True
+        return {"material": material}
+
+    return _with_role_changed(node, "visual", give), used
+
+
+def _with_role_changed(
+    node: _E, role: GeomRole, change: Callable[[AnyElement], dict[str, Value | None] | None]
+) -> _E:
+    """``node`` with each geom of ``role`` given the attributes ``change(geom)`` returns, if any."""
+
+    def visit(current: Node) -> Node:
+        if isinstance(current, Element) and geom_role(current) == role:
+            changes = change(current)
+            if changes is not None:
+                return with_attributes(current, changes)
         return current
 
-    return cast(_E, map_tree(visit, node)), used
+    return cast(_E, map_tree(visit, node))

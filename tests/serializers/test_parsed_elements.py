@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import xml.etree.ElementTree as ET
 from typing import Any
 from xml.sax.saxutils import quoteattr
 
@@ -17,13 +18,20 @@ from mjcf_model import (
     Unparsed,
     prefixed,
 )
-from mjcf_model.nodes.base import TypedElement, build_node
+from mjcf_model.nodes.base import Element, TypedElement, attribute_items, build_node
 from mjcf_model.nodes.layout import Layout, SourceText, detail
 from mjcf_model.nodes.node_info import xml_name
-from mjcf_model.strategies import element_values
+from mjcf_model.strategies import element_values, models
 from mjcf_model.values import format_value
 from serializers import dumps, loads
-from serializers.parsed_elements import DEFERRED_TEXT, build_element, read_typed, recorded_values
+from serializers.etree_view import paired
+from serializers.parsed_elements import (
+    DEFERRED_TEXT,
+    build_element,
+    read_typed,
+    recorded_values,
+    written_text,
+)
 from tests.support.node_classes import TYPED_CLASSES
 
 # -- Hostile and broken input: no hang, no stray exception, and MuJoCo decides what loads. -----
@@ -132,3 +140,45 @@ def test_equal_attribute_texts_share_one_value() -> None:
     model = loads('<mujoco><worldbody><geom pos="1 2 3"/><geom pos="1 2 3"/></worldbody></mujoco>')
     first, second = model.worldbody.geoms
     assert first.pos == (1.0, 2.0, 3.0) and first.pos is second.pos
+
+
+def _written_texts_match_the_writer(model: Any) -> int:
+    """Check ``written_text`` of every attribute against the text ``dumps`` writes."""
+    checked = 0
+    keeping_comments = ET.XMLParser(target=ET.TreeBuilder(insert_comments=True))
+    for element, node in paired(ET.fromstring(dumps(model), parser=keeping_comments), model):
+        if not isinstance(node, Element):
+            continue
+        for name, _ in attribute_items(node):
+            assert written_text(node, name) == element.get(name), (node.tag, name)
+            checked += 1
+        assert written_text(node, "no-such-attribute") is None
+    return checked
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        '<mujoco><worldbody><geom group="01" size=" 0.10  0.2" rgba="1 0 0 1"/>'
+        "</worldbody></mujoco>",
+        '<mujoco><worldbody><body pos="0 0 1e0"><joint range="-1.570 1.570"/></body>'
+        "</worldbody></mujoco>",
+    ],
+)
+def test_written_text_is_what_dumps_writes_for_each_attribute(text: str) -> None:
+    """Unchanged: the file's spelling; changed: the formatted value (``dumps`` is the referee)."""
+    model = loads(text)
+    assert _written_texts_match_the_writer(model) > 0
+    assert _written_texts_match_the_writer(prefixed(model, "p_")) > 0
+    (geom_or_body,) = model.worldbody.children
+    changed = attrs.evolve(geom_or_body, pos=(0.5, 0.0, 0.0))
+    assert written_text(changed, "pos") == "0.5 0 0"
+
+
+@given(models())
+@settings(max_examples=15)
+def test_written_text_of_a_drawn_model_read_back_is_what_dumps_writes(model: Any) -> None:
+    """Every attribute of a drawn model, dumped and read again, and of its prefixed copy."""
+    loaded = loads(dumps(model))
+    _written_texts_match_the_writer(loaded)
+    _written_texts_match_the_writer(prefixed(loaded, "p_"))

@@ -9,6 +9,7 @@ import pytest
 from robosuite.utils import mjcf_utils
 
 from mjcf_model import Body, Geom, Site
+from mjcf_model.compat import categorized
 from mjcf_model.compat.geom_roles import (
     geom_role,
     role_of_group,
@@ -16,7 +17,7 @@ from mjcf_model.compat.geom_roles import (
     with_visual_material,
 )
 from mjcf_model.nodes.base import get_attribute
-from serializers import from_etree, to_etree
+from serializers import from_etree, loads, to_etree
 
 #: robosuite's category of each role (its ``sort_elements`` filter).
 CATEGORY = {"collision": "contact_geoms", "visual": "visual_geoms", None: None}
@@ -50,6 +51,21 @@ def test_a_geoms_role_is_robosuites_category(group: str | None) -> None:
     assert isinstance(geom, Geom)
     assert CATEGORY[geom_role(geom)] == category
     assert CATEGORY[role_of_group(group)] == category
+
+
+@pytest.mark.parametrize("group", ["01", "00", "+1", " 1", "1", "0"])
+def test_a_loaded_geom_has_the_role_of_its_groups_spelling(group: str) -> None:
+    """Read from text, ``group="01"`` is 1 but written ``01``: robosuite gives it no role."""
+    text = f'<mujoco><worldbody><geom name="g" size="0.1" group="{group}"/></worldbody></mujoco>'
+    category = mjcf_utils._element_filter(ET.fromstring(text)[0][0], None)
+    model = loads(text)
+    (geom,) = model.worldbody.geoms
+    assert isinstance(geom, Geom) and geom.group == int(group)
+    assert CATEGORY[geom_role(geom)] == category
+    found = categorized(model)
+    assert [g.name for g in found.contact_geoms + found.visual_geoms] == (
+        [] if category is None else ["g"]
+    )
 
 
 def test_only_geoms_have_a_role() -> None:
