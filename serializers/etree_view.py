@@ -18,13 +18,14 @@ is new, and keeps what other code added to the elements.
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
+from collections.abc import Iterator
 
-from mjcf_model.nodes.base import AnyElement, Comment, Element, Node
+from mjcf_model.nodes.base import AnyElement, Comment, Element, GenericElement, Node
 from mjcf_model.tree.traversal import Path
 from serializers.canonical import attribute_texts
 from serializers.etree import converted_children, to_etree
 
-__all__ = ["EtreeView", "sync_element", "write_back"]
+__all__ = ["EtreeView", "element_index", "paired", "shallow_node", "sync_element", "write_back"]
 
 
 class EtreeView:
@@ -205,3 +206,46 @@ def write_back(element: ET.Element, old: Node, new: Node) -> None:
     """
     if isinstance(old, Element) and isinstance(new, Element):
         EtreeView(old, element).update(new)
+
+
+def shallow_node(element: ET.Element) -> Node:
+    """The element alone (no children) as a generic node holding its exact attribute text.
+
+    For code called once per element of a tree, which converting subtrees would make quadratic.
+
+    Examples:
+        >>> shallow_node(ET.fromstring('<geom size="0.1"><x/></geom>'))
+        GenericElement(tag='geom', attributes=AttributeMap({'size': '0.1'}))
+
+    """
+    if element.tag is ET.Comment:  # type: ignore[comparison-overlap]
+        return Comment(text=element.text or "")
+    return GenericElement(tag=element.tag, attributes=element.attrib)
+
+
+def paired(element: ET.Element, node: Node) -> Iterator[tuple[ET.Element, Node]]:
+    """``(element, node)`` for an element and each descendant, in document order.
+
+    ``node`` is what :func:`~serializers.etree.from_etree` made of ``element``.
+    """
+    stack = [(element, node)]
+    while stack:
+        current, current_node = stack.pop()
+        yield current, current_node
+        if isinstance(current_node, Element):
+            pairs = zip(converted_children(current), current_node.children, strict=True)
+            stack.extend(reversed(list(pairs)))
+
+
+def element_index(element: ET.Element, node: Node) -> dict[int, ET.Element]:
+    """The element of each node of ``node`` (made from ``element``), by ``id`` of the node.
+
+    Examples:
+        >>> from serializers.etree import from_etree
+        >>> element = ET.fromstring("<body><geom/></body>")
+        >>> node = from_etree(element, typed=False)
+        >>> element_index(element, node)[id(node.children[0])] is element[0]
+        True
+
+    """
+    return {id(n): e for e, n in paired(element, node)}

@@ -12,29 +12,9 @@ The robosuite conventions that are not robosuite's own API are here too, not in
 categories (:func:`categorized`) and its constructors as typed nodes (``new_body``...).
 """
 
-from mjcf_model.compat.materials import CustomMaterial, recolored_collision_geoms, with_material
+from mjcf_model.compat import materials, typed_builders
+from mjcf_model.compat.materials import *
 from mjcf_model.compat.mjcf_utils.queries import Categories, categorized
-from mjcf_model.compat.typed_builders import (
-    new_actuator,
-    new_body,
-    new_element,
-    new_geom,
-    new_inertial,
-    new_joint,
-    new_site,
-)
+from mjcf_model.compat.typed_builders import *
 
-__all__ = [
-    "Categories",
-    "CustomMaterial",
-    "categorized",
-    "new_actuator",
-    "new_body",
-    "new_element",
-    "new_geom",
-    "new_inertial",
-    "new_joint",
-    "new_site",
-    "recolored_collision_geoms",
-    "with_material",
-]
+__all__ = ["Categories", "categorized", *materials.__all__, *typed_builders.__all__]

@@ -17,19 +17,16 @@ that shares every unchanged subtree with the input, and neither changes the mate
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
-from types import MappingProxyType
+from collections.abc import Callable
 from typing import Any, Generic, NamedTuple, TypeVar
 
 from mjcf_model.compat.geom_roles import with_collision_color, with_visual_material
-from mjcf_model.compat.mjcf_utils.constants import TEXTURE_FILES as _TEXTURE_FILES
-from mjcf_model.compat.mjcf_utils.materials import CustomMaterial, attribute_text, default_material
+from mjcf_model.compat.mjcf_utils.materials import CustomMaterial, default_material, material_text
 from mjcf_model.nodes.base import AnyElement, Element, GenericElement
 from mjcf_model.nodes.tendon import TendonGeom
 from mjcf_model.values import Value, to_vec4
 
 __all__ = [
-    "TEXTURE_FILES",
     "CustomMaterial",
     "MaterialResult",
     "material_nodes",
@@ -37,14 +34,11 @@ __all__ = [
     "with_material",
 ]
 
-#: robosuite's named textures and their image files (``TEXTURE_FILES``), read-only.
-TEXTURE_FILES: Mapping[str, str] = MappingProxyType(_TEXTURE_FILES)
-
 _E = TypeVar("_E", bound=Element)
 
 
 def material_nodes(
-    material: Any, prefix: str = "", text: Callable[[Any], str] = attribute_text
+    material: Any, prefix: str = "", text: Callable[[Any], str] = material_text
 ) -> tuple[GenericElement, GenericElement]:
     """The ``<texture>`` and ``<material>`` of a ``CustomMaterial`` (ours or robosuite's).
 

@@ -66,7 +66,7 @@ def new_element(tag: str, name: str | None = None, **attributes: Any) -> AnyElem
 
 def new_joint(name: str | None = None, **attributes: Any) -> Joint:
     """A new ``<joint>``: the attributes, then ``name``."""
-    return cast(Joint, joint_node(name, attributes, None))
+    return cast(Joint, joint_node(None, name, **attributes))
 
 
 def new_actuator(
@@ -102,7 +102,7 @@ def new_site(
     **attributes: Any,
 ) -> Site:
     """A new ``<site>`` (a small red sphere by default)."""
-    return cast(Site, site_node(name, rgba, pos, size, attributes, None))
+    return cast(Site, site_node(None, name, rgba, pos, size, **attributes))
 
 
 def new_geom(
@@ -114,14 +114,14 @@ def new_geom(
     **attributes: Any,
 ) -> Geom:
     """A new ``<geom>`` (group 0, at the origin by default)."""
-    return cast(Geom, geom_node(name, type, size, pos, group, attributes, None))
+    return cast(Geom, geom_node(None, name, type, size, pos, group, **attributes))
 
 
 def new_body(name: str | None = None, pos: Any = (0, 0, 0), **attributes: Any) -> Body:
     """A new ``<body>`` (at the origin by default)."""
-    return cast(Body, body_node(name, pos, attributes, None))
+    return cast(Body, body_node(None, name, pos, **attributes))
 
 
 def new_inertial(pos: Any = (0, 0, 0), mass: Any = None, **attributes: Any) -> Inertial:
     """A new ``<inertial>``: the attributes, ``mass``, then ``pos`` (no name)."""
-    return cast(Inertial, inertial_node(pos, mass, attributes, None))
+    return cast(Inertial, inertial_node(None, pos, mass, **attributes))

@@ -419,16 +419,20 @@ def get_attribute(element: AnyElement, name: str) -> Value | None:
     return typed.extra.get(name)
 
 
-def attribute_text(element: AnyElement, name: str) -> str | None:
-    """The text attribute ``name`` is written as, or ``None`` when not written.
+def attribute_text(node: Node, name: str) -> str | None:
+    """The text attribute ``name`` is written as; ``None`` when not written or for a comment.
 
     Examples:
-        >>> from mjcf_model import Geom
+        >>> from mjcf_model import Comment, Geom
         >>> attribute_text(Geom(group=1), "group"), attribute_text(Geom(), "group")
         ('1', None)
+        >>> attribute_text(Comment(text="note"), "group") is None
+        True
 
     """
-    value = get_attribute(element, name)
+    if not isinstance(node, Element):
+        return None
+    value = get_attribute(node, name)
     return None if value is None else format_value(value)
 
 

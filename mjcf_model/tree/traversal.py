@@ -45,6 +45,7 @@ __all__ = [
     "refuse_opaque",
     "schema_key",
     "walk",
+    "walk_nodes",
     "with_children",
     "with_mapped_children",
 ]
@@ -319,6 +320,30 @@ def walk(node: Node) -> Iterator[tuple[Path, AnyElement]]:
         stack.extend(
             ((*path, index), child) for index, child in reversed(list(enumerate(current.children)))
         )
+
+
+def walk_nodes(node: Node) -> Iterator[tuple[AnyElement | None, Node, Path]]:
+    """Yield ``(parent, node, path)`` for ``node`` and every node below it, comments too.
+
+    Document order; ``path`` indexes ``children`` from ``node`` down, and the parent of
+    ``node`` itself is ``None``.
+
+    Examples:
+        >>> from mjcf_model import Body, Comment, Geom
+        >>> body = Body(children=[Comment(text="c"), Geom()])
+        >>> [(path, type(node).__name__) for _, node, path in walk_nodes(body)]
+        [((), 'Body'), ((0,), 'Comment'), ((1,), 'Geom')]
+
+    """
+    stack: list[tuple[AnyElement | None, Node, Path]] = [(None, node, ())]
+    while stack:
+        parent, current, path = stack.pop()
+        yield parent, current, path
+        if isinstance(current, Element):
+            stack.extend(
+                (current, child, (*path, index))
+                for index, child in reversed(list(enumerate(current.children)))
+            )
 
 
 def keyed_walk(

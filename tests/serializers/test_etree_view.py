@@ -12,11 +12,22 @@ import xml.etree.ElementTree as ET
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mjcf_model import Body, Geom, Mujoco, Site, prefixed, scaled, with_attributes
+from mjcf_model import (
+    Body,
+    Comment,
+    GenericElement,
+    Geom,
+    Mujoco,
+    Site,
+    prefixed,
+    scaled,
+    with_attributes,
+)
 from mjcf_model.strategies import models
 from mjcf_model.tree.paths import appended_at, replaced_at
 from serializers import to_etree
-from serializers.etree_view import EtreeView, write_back
+from serializers.etree import from_etree
+from serializers.etree_view import EtreeView, element_index, paired, shallow_node, write_back
 
 
 def _text(element: ET.Element) -> str:
@@ -90,3 +101,30 @@ def test_after_any_update_the_view_is_the_tree_of_the_new_model(model: Mujoco, c
     view.update(new)
     assert view.element is root
     assert _text(view.element) == _text(to_etree(new))
+
+
+@given(models())
+@settings(max_examples=10)
+def test_paired_matches_every_node_with_the_element_it_came_from(model: Mujoco) -> None:
+    """Each pair is an element and the node made from it: same tag, same attribute text."""
+    element = to_etree(model)
+    element.insert(0, ET.Comment(" a note "))
+    node = from_etree(element, typed=False)
+    pairs = list(paired(element, node))
+    assert [e for e, _ in pairs] == list(element.iter())
+    for live, made in pairs:
+        if live.tag is ET.Comment:  # type: ignore[comparison-overlap]
+            assert isinstance(made, Comment) and made.text == live.text
+        else:
+            assert isinstance(made, GenericElement)
+            assert (made.tag, dict(made.attributes)) == (live.tag, live.attrib)
+    index = element_index(element, node)
+    assert all(index[id(made)] is live for live, made in pairs)
+
+
+def test_shallow_node_keeps_the_attribute_text_and_drops_the_children() -> None:
+    """The element alone: exact attribute text, no children; a comment stays a comment."""
+    element = ET.fromstring('<geom size="0.10" pos="0  0 1"><x/></geom>')
+    node = shallow_node(element)
+    assert _text(to_etree(node)) == '<geom size="0.10" pos="0  0 1" />'
+    assert _text(to_etree(shallow_node(ET.Comment(" c ")))) == "<!-- c -->"

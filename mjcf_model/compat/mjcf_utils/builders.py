@@ -1,16 +1,16 @@
 """robosuite's element constructors (``new_element``, ``new_geom``...) and their node builders.
 
 Each node builder writes robosuite's order (keyword arguments, then the named
-parameters, then ``name``) with a text rule: :func:`convert_to_string` for the
-ElementTree constructors here, robosuite's object habits in
-:mod:`mjcf_model.compat.objects.habits`, or ``None`` for the typed nodes of
-:mod:`mjcf_model.compat.typed_builders`.
+parameters, then ``name``) with a text rule, its first argument:
+:func:`convert_to_string` for the ElementTree constructors here, robosuite's object
+habit (:func:`mjcf_model.compat.objects.habits.value_text`), or ``None`` for the typed
+nodes of :mod:`mjcf_model.compat.typed_builders`.
 """
 
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable
 from typing import Any, TypeVar
 
 import attrs
@@ -32,12 +32,6 @@ from mjcf_model.values import Value, format_value, plain_value, to_str
 from serializers.etree import to_etree
 
 __all__ = [
-    "TextRule",
-    "body_node",
-    "element_node",
-    "geom_node",
-    "inertial_node",
-    "joint_node",
     "new_actuator",
     "new_body",
     "new_element",
@@ -45,7 +39,6 @@ __all__ = [
     "new_inertial",
     "new_joint",
     "new_site",
-    "site_node",
 ]
 
 #: How a builder writes a value as attribute text; ``None``: a typed node keeps numbers.
@@ -100,20 +93,18 @@ def element_node(
     return build_node(GenericElement, {"tag": tag, "attributes": AttributeMap.unchecked(values)})
 
 
-def joint_node(
-    name: str | None, kwargs: Mapping[str, Any], text: TextRule = convert_to_string
-) -> AnyElement:
-    """The node of ``new_joint``: ``kwargs``, then ``name``."""
+def joint_node(text: TextRule, name: str | None = None, **kwargs: Any) -> AnyElement:
+    """The node of ``new_joint``: ``kwargs``, then ``name``, written by ``text``."""
     return element_node("joint", [*kwargs.items(), ("name", name)], text)
 
 
 def site_node(
-    name: str | None,
-    rgba: Any,
-    pos: Any,
-    size: Any,
-    kwargs: Mapping[str, Any],
-    text: TextRule = convert_to_string,
+    text: TextRule,
+    name: str | None = None,
+    rgba: Any = RED,
+    pos: Any = (0, 0, 0),
+    size: Any = (0.005,),
+    **kwargs: Any,
 ) -> AnyElement:
     """The node of ``new_site``: ``kwargs``, ``pos``, ``size``, ``rgba``, ``name``."""
     named = [("pos", pos), ("size", size), ("rgba", rgba), ("name", name)]
@@ -121,28 +112,34 @@ def site_node(
 
 
 def geom_node(
+    text: TextRule,
     name: str | None,
     type: Any,
     size: Any,
-    pos: Any,
-    group: Any,
-    kwargs: Mapping[str, Any],
-    text: TextRule = convert_to_string,
+    pos: Any = (0, 0, 0),
+    group: Any = 0,
+    **kwargs: Any,
 ) -> AnyElement:
-    """The node of ``new_geom``: ``kwargs``, ``type``, ``size``, ``pos``, ``group``, ``name``."""
+    """The node of ``new_geom``: ``kwargs``, ``type``, ``size``, ``pos``, ``group``, ``name``.
+
+    Examples:
+        >>> geom_node(None, "g", "box", [0.5, 0, 1]).size
+        (0.5, 0.0, 1.0)
+
+    """
     named = [("type", type), ("size", size), ("pos", pos), ("group", group), ("name", name)]
     return element_node("geom", [*kwargs.items(), *named], text)
 
 
 def body_node(
-    name: str | None, pos: Any, kwargs: Mapping[str, Any], text: TextRule = convert_to_string
+    text: TextRule, name: str | None = None, pos: Any = (0, 0, 0), **kwargs: Any
 ) -> AnyElement:
     """The node of ``new_body``: ``kwargs``, ``pos``, ``name``."""
     return element_node("body", [*kwargs.items(), ("pos", pos), ("name", name)], text)
 
 
 def inertial_node(
-    pos: Any, mass: Any, kwargs: Mapping[str, Any], text: TextRule = convert_to_string
+    text: TextRule, pos: Any = (0, 0, 0), mass: Any = None, **kwargs: Any
 ) -> AnyElement:
     """The node of ``new_inertial``: ``kwargs``, ``mass``, ``pos`` (no name)."""
     return element_node("inertial", [*kwargs.items(), ("mass", mass), ("pos", pos)], text)
@@ -171,7 +168,7 @@ def new_joint(name: str | None, **kwargs: Any) -> ET.Element:
         '<joint type="free" damping="0.0005" name="j" />'
 
     """
-    return to_etree(joint_node(name, kwargs))
+    return to_etree(joint_node(convert_to_string, name, **kwargs))
 
 
 def new_actuator(
@@ -204,7 +201,7 @@ def new_site(
         '<site pos="0 0 0" size="0.005" rgba="1 0 0 1" name="s" />'
 
     """
-    return to_etree(site_node(name, rgba, pos, size, kwargs))
+    return to_etree(site_node(convert_to_string, name, rgba, pos, size, **kwargs))
 
 
 def new_geom(
@@ -223,7 +220,7 @@ def new_geom(
         '<geom material="m" type="sphere" size="0.1" pos="0 0 0" name="g" />'
 
     """
-    return to_etree(geom_node(name, type, size, pos, group, kwargs))
+    return to_etree(geom_node(convert_to_string, name, type, size, pos, group, **kwargs))
 
 
 def new_body(name: str | None, pos: Any = (0, 0, 0), **kwargs: Any) -> ET.Element:
@@ -234,7 +231,7 @@ def new_body(name: str | None, pos: Any = (0, 0, 0), **kwargs: Any) -> ET.Elemen
         '<body pos="0 0 0" name="b" />'
 
     """
-    return to_etree(body_node(name, pos, kwargs))
+    return to_etree(body_node(convert_to_string, name, pos, **kwargs))
 
 
 def new_inertial(pos: Any = (0, 0, 0), mass: Any = None, **kwargs: Any) -> ET.Element:
@@ -245,4 +242,4 @@ def new_inertial(pos: Any = (0, 0, 0), mass: Any = None, **kwargs: Any) -> ET.El
         '<inertial diaginertia="1 1 1" mass="1.0" pos="0 0 0" />'
 
     """
-    return to_etree(inertial_node(pos, mass, kwargs))
+    return to_etree(inertial_node(convert_to_string, pos, mass, **kwargs))

@@ -18,25 +18,21 @@ import numpy as np
 from mjcf_model.compat.geom_roles import with_collision_color, with_visual_material
 from mjcf_model.compat.mjcf_utils.builders import new_element
 from mjcf_model.compat.mjcf_utils.constants import ALL_TEXTURES, TEXTURES
-from mjcf_model.compat.mjcf_utils.etree_sync import attribute, element_index, node_of, preorder
 from mjcf_model.compat.mjcf_utils.naming import already_prefixed
 from mjcf_model.compat.mjcf_utils.text import array_to_string, parse_numbers, xml_path_completion
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.files.png import png_bytes
-from mjcf_model.nodes.base import AnyElement, Element, Node
+from mjcf_model.nodes.base import AnyElement, Element, Node, attribute_text
 from mjcf_model.tree.paths import edited_at
-from serializers.etree_view import write_back
+from mjcf_model.tree.traversal import walk_nodes
+from serializers.etree import from_etree
+from serializers.etree_view import element_index, write_back
 
 __all__ = [
     "CustomMaterial",
     "add_material",
-    "attribute_text",
-    "default_material",
-    "flat_material",
     "recolor_collision_geoms",
-    "recolored",
     "set_alpha",
-    "with_alpha",
 ]
 
 #: Where robosuite writes the PNG of an RGBA texture (a fixed path in robosuite 1.5.2).
@@ -108,7 +104,7 @@ class CustomMaterial:
         self.mat_attrib["texture"] = tex_name
         for attrib in (self.tex_attrib, self.mat_attrib):
             for k, v in attrib.items():
-                attrib[k] = attribute_text(v)
+                attrib[k] = material_text(v)
         if not default:
             name = texture if "/" in texture else TEXTURES[texture]
             self.tex_attrib["file"] = xml_path_completion(name)
@@ -121,16 +117,16 @@ class CustomMaterial:
             self.tex_attrib["file"] = path
 
 
-def attribute_text(value: Any) -> str:
+def material_text(value: Any) -> str:
     """An attribute value as ``CustomMaterial`` writes it.
 
     Text stays; an iterable becomes ``array_to_string``; anything else ``str`` (so
     ``True`` is ``"True"``).
 
     Examples:
-        >>> attribute_text("1 1"), attribute_text([3, 3]), attribute_text(0.4)
+        >>> material_text("1 1"), material_text([3, 3]), material_text(0.4)
         ('1 1', '3 3', '0.4')
-        >>> attribute_text(True)
+        >>> material_text(True)
         'True'
 
     """
@@ -211,7 +207,7 @@ def add_material(
             naming_prefix + custom_material.mat_attrib["texture"]
         )
     used = False
-    node = node_of(root)
+    node = from_etree(root, typed=False)
     if isinstance(node, Element):
         tree, used = with_visual_material(node, custom_material.name)
         write_back(root, node, tree)
@@ -245,7 +241,7 @@ def recolor_collision_geoms(
         [None, '0.5 0.0 0.0 1.0']
 
     """
-    node = node_of(root)
+    node = from_etree(root, typed=False)
     node_exclude: Callable[[AnyElement], Any] | None = None
     if exclude is not None:
         live = element_index(root, node)
@@ -260,8 +256,8 @@ def recolor_collision_geoms(
 def with_alpha(node: Node, alpha: Any) -> Node:
     """``node`` with the alpha of every descendant's ``rgba`` (not ``node``'s) set to ``alpha``."""
     edits: dict[tuple[int, ...], dict[str, str | None]] = {}
-    for parent, current, path in preorder(node):
-        rgba = attribute(current, "rgba")
+    for parent, current, path in walk_nodes(node):
+        rgba = attribute_text(current, "rgba")
         if parent is not None and rgba is not None:
             edits[path] = {"rgba": array_to_string([*parse_numbers(rgba)[0:3], alpha])}
     return edited_at(node, edits)
@@ -280,5 +276,5 @@ def set_alpha(node: ET.Element, alpha: Any = 0.1) -> None:
         '1.0 0.0 0.0 0.3'
 
     """
-    old = node_of(node)
+    old = from_etree(node, typed=False)
     write_back(node, old, with_alpha(old, alpha))

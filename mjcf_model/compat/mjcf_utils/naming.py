@@ -7,12 +7,13 @@ from collections.abc import Callable, Collection, Iterable
 from typing import Any
 
 from mjcf_model.compat.mjcf_utils.constants import MUJOCO_NAMED_ATTRIBUTES
-from mjcf_model.compat.mjcf_utils.etree_sync import element_index, node_of, preorder
 from mjcf_model.nodes.base import Element, GenericElement, Node, TypedElement, attribute_items
 from mjcf_model.tree.paths import edited_at
-from serializers.etree_view import write_back
+from mjcf_model.tree.traversal import walk_nodes
+from serializers.etree import from_etree
+from serializers.etree_view import element_index, write_back
 
-__all__ = ["add_prefix", "already_prefixed", "prefixed_attributes"]
+__all__ = ["add_prefix"]
 
 #: ``exclude(node_or_value)``: whether to leave an element (or one attribute value) alone.
 NodeExclude = Callable[[Node | str], bool]
@@ -45,7 +46,7 @@ def prefixed_attributes(
     in robosuite's order.
     """
     edits: dict[tuple[int, ...], dict[str, str | None]] = {}
-    for _parent, current, path in preorder(node):
+    for _parent, current, path in walk_nodes(node):
         if tags is not None and not (isinstance(current, Element) and current.tag in tags):
             continue
         if exclude is not None and exclude(current):
@@ -94,7 +95,7 @@ def add_prefix(
         attribs = MUJOCO_NAMED_ATTRIBUTES
     attribs = {attribs} if type(attribs) is str else set(attribs)
 
-    node = node_of(root)
+    node = from_etree(root, typed=False)
     node_exclude: NodeExclude | None = None
     if exclude is not None:
         live = element_index(root, node)

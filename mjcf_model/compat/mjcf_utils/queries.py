@@ -15,14 +15,10 @@ import attrs
 
 from mjcf_model.compat.geom_roles import role_of_group
 from mjcf_model.compat.mjcf_utils.constants import SENSOR_TYPES
-from mjcf_model.compat.mjcf_utils.etree_sync import attribute
 from mjcf_model.nodes.base import AnyElement, Element, Node
+from serializers.parsed_elements import written_text
 
 __all__ = [
-    "Categories",
-    "categorized",
-    "category",
-    "filter_key",
     "find_elements",
     "find_elements_by_substring",
     "find_parent",
@@ -86,7 +82,11 @@ def filter_key(
 ) -> str | None:
     """The :func:`category` of ``node`` under ``parent``."""
     return category(
-        _tag(node), lambda name: attribute(node, name), _tag(parent), parent is None, sensor_tags
+        _tag(node),
+        lambda name: written_text(node, name),
+        _tag(parent),
+        parent is None,
+        sensor_tags,
     )
 
 
@@ -276,24 +276,10 @@ class Categories:
 def categorized(node: AnyElement) -> Categories:
     """Sort the elements of ``node`` (itself included) into robosuite's categories.
 
-    The rules are those of robosuite's ``_element_filter``, tried in this order,
-    by tag alone (so ``<default>`` geoms, joints and sites count too):
-
-    * any element child of an ``<actuator>`` section: ``actuators``;
-    * a ``joint`` with neither a ``joint`` nor a ``joint1`` attribute (not a
-      tendon or equality reference): ``joints``;
-    * a ``body`` whose parent is not a ``<body>`` (``worldbody``, ``frame``, ...)
-      or that is ``node`` itself: ``root_body``; any other body: ``bodies``;
-    * a ``site``: ``sites``;
-    * any element child of a ``<sensor>`` section: ``sensors``;
-    * a ``geom`` whose group is not written or ``0``: ``contact_geoms``; group
-      ``1``: ``visual_geoms``; other groups: neither.
-
-    Sensors differ from robosuite on purpose: robosuite files any element whose
-    tag is in its ``SENSOR_TYPES`` set (35 tags, wherever the element stands),
-    so newer sensors (``camprojection``, ``clock``, ``contact``, ``distance``,
-    ``e_kinetic``, ``plugin``, ...) are missing from its list. Here every
-    child of ``<sensor>`` is a sensor.
+    The rule is :func:`category`'s, by tag alone (so ``<default>`` geoms, joints and sites
+    count too), with one difference on purpose: every child of ``<sensor>`` is a sensor,
+    where robosuite files only the 35 tags of its ``SENSOR_TYPES`` wherever they stand
+    (newer sensors such as ``camprojection``, ``clock`` or ``contact`` are missing from it).
 
     Examples:
         >>> from serializers import loads

@@ -16,10 +16,9 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from mjcf_model.compat.mjcf_utils.etree_sync import attribute, shallow_node
 from mjcf_model.compat.mjcf_utils.text import array_to_string, normalize_scale_array, parse_numbers
-from mjcf_model.nodes.base import Element, Node, with_attributes
-from serializers.etree_view import sync_element
+from mjcf_model.nodes.base import Element, Node, attribute_text, with_attributes
+from serializers.etree_view import shallow_node, sync_element
 
 __all__ = [
     "scale_body_element",
@@ -28,11 +27,6 @@ __all__ = [
     "scale_mesh_element",
     "scale_mjcf_model",
     "scale_site_element",
-    "scaled_body",
-    "scaled_geom",
-    "scaled_joint",
-    "scaled_mesh",
-    "scaled_site",
 ]
 
 
@@ -45,14 +39,14 @@ def _changed(node: Node, changes: dict[str, str]) -> Node:
 
 def _scaled_pos(node: Node, scale_array: Any, changes: dict[str, str]) -> None:
     """Put the scaled ``pos`` (if any) in ``changes``."""
-    pos = attribute(node, "pos")
+    pos = attribute_text(node, "pos")
     if pos is not None:
         changes["pos"] = array_to_string(parse_numbers(pos) * scale_array)
 
 
 def _scaled_size(node: Node, scale_array: Any, what: str, changes: dict[str, str]) -> None:
     """Put the scaled ``size`` in ``changes``: by axis, by the x-y mean and z, or by the mean."""
-    size = attribute(node, "size")
+    size = attribute_text(node, "size")
     if size is None:
         return
     values = parse_numbers(size)
@@ -88,7 +82,7 @@ def scaled_site(node: Node, scale_array: Any) -> Node:
 
 def scaled_mesh(node: Node, scale_array: Any) -> Node:
     """A mesh node whose ``scale`` (``1 1 1`` when absent, then written last) is multiplied."""
-    scale = attribute(node, "scale")
+    scale = attribute_text(node, "scale")
     values = parse_numbers(scale) if scale is not None else np.ones(3)
     values *= scale_array
     return _changed(node, {"scale": array_to_string(values)})
@@ -114,10 +108,10 @@ def scaled_joint(node: Node, scale_array: Any, scale_slide_joints: bool = True) 
     changes: dict[str, str] = {}
     _scaled_pos(node, scale_array, changes)
     if scale_slide_joints:
-        joint_type = attribute(node, "type")
-        joint_range = attribute(node, "range")
+        joint_type = attribute_text(node, "type")
+        joint_range = attribute_text(node, "range")
         if joint_range is not None and joint_type == "slide":
-            axis = attribute(node, "axis")
+            axis = attribute_text(node, "axis")
             factor = _axis_factor("1 0 0" if axis is None else axis, scale_array)
             changes["range"] = array_to_string(parse_numbers(joint_range) * factor)
     return _changed(node, changes)

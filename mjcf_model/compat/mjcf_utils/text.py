@@ -18,10 +18,8 @@ __all__ = [
     "get_ids",
     "get_size",
     "normalize_scale_array",
-    "parse_numbers",
     "save_sim_model",
     "string_to_array",
-    "text_of",
     "xml_path_completion",
 ]
 

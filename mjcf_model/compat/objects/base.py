@@ -28,14 +28,7 @@ from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement
 from serializers.etree_view import write_back
 
-__all__ = [
-    "GEOMTYPE2GROUP",
-    "GEOM_GROUPS",
-    "MujocoModel",
-    "MujocoObject",
-    "prefixed_names",
-    "unanswered",
-]
+__all__ = ["GEOMTYPE2GROUP", "GEOM_GROUPS", "MujocoModel", "MujocoObject"]
 
 #: robosuite's geom groups kept for each ``obj_type``.
 GEOMTYPE2GROUP: dict[str, set[int]] = {"collision": {0}, "visual": {1}, "all": {0, 1}}

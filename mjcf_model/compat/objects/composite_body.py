@@ -1,4 +1,4 @@
-"""``CompositeBodyObject`` and its recipes: robosuite's objects made of objects' bodies.
+"""``CompositeBodyObject`` and ``HingedBoxObject``: robosuite's objects made of objects' bodies.
 
 >>> lid = BoxObject("lid", size=[0.05, 0.05, 0.01])
 >>> crate = CompositeBodyObject(
@@ -18,22 +18,22 @@ from typing import Any
 
 import numpy as np
 
+from mjcf_model.compat.mjcf_utils.builders import joint_node
 from mjcf_model.compat.mjcf_utils.constants import BLUE, RED
 from mjcf_model.compat.mjcf_utils.materials import CustomMaterial
 from mjcf_model.compat.mjcf_utils.text import array_to_string
 from mjcf_model.compat.objects.base import MujocoObject, Vector
 from mjcf_model.compat.objects.document import as_node, find_path, is_element
 from mjcf_model.compat.objects.generated import BoxObject, CylinderObject, MujocoGeneratedObject
-from mjcf_model.compat.objects.habits import named_specs, rs_joint
+from mjcf_model.compat.objects.habits import named_specs, value_text
 from mjcf_model.compat.objects.naming import robosuite_prefixed
 from mjcf_model.compat.objects.recipes import textured
-from mjcf_model.compat.objects.shells import HollowCylinderObject
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, with_attributes
 from mjcf_model.tree.paths import appended_at
 from mjcf_model.tree.traversal import with_children
 
-__all__ = ["CompositeBodyObject", "HingedBoxObject", "RatchetingWrenchObject"]
+__all__ = ["CompositeBodyObject", "HingedBoxObject"]
 
 
 def _without_joints(body: AnyElement) -> AnyElement:
@@ -177,7 +177,7 @@ class CompositeBodyObject(MujocoGeneratedObject):
         path = find_path(root, "body", name=body_name)
         if path is None:
             raise MjcfLookupError(f"Could not find body with name: {body_name}")
-        return appended_at(root, path, [rs_joint(**spec) for spec in joint_specs])
+        return appended_at(root, path, [joint_node(value_text, **spec) for spec in joint_specs])
 
     bottom_offset = property(lambda self: np.array([0.0, 0.0, self._bottom]), doc="Lowest bottom.")
     top_offset = property(lambda self: np.array([0.0, 0.0, self._top]), doc="Highest top.")
@@ -246,91 +246,4 @@ class HingedBoxObject(CompositeBodyObject):
             object_quats=[None, None, [0.707, 0.707, 0, 0]],
             object_parents=[None, objects[0].root_body, objects[1].root_body],
             body_joints={objects[1].root_body: [hinge_joint]},
-        )
-
-
-class RatchetingWrenchObject(CompositeBodyObject):
-    """robosuite's ``RatchetingWrenchObject``: a box handle between two rings, all of steel.
-
-    Args:
-        name: Name of the object.
-        handle_size: Half-size of the handle box.
-        outer_radius_1: Outer radius of the first ring (``hole1``, on -x).
-        inner_radius_1: Inner radius of the first ring.
-        height_1: Half-height of the first ring.
-        outer_radius_2: Outer radius of the second ring (``hole2``, on +x).
-        inner_radius_2: Inner radius of the second ring.
-        height_2: Half-height of the second ring.
-        ngeoms: Boxes per ring.
-        grip_size: Half-width and half-length of a dark grip along the handle (``None``: none).
-        density: Density of every geom.
-        solref: Contact ``solref`` of every geom.
-        solimp: Contact ``solimp`` of every geom.
-        friction: Friction of the rings and the handle (``None``: robosuite's default).
-
-    """
-
-    _robosuite_class = ("robosuite.models.objects", "RatchetingWrenchObject")
-
-    def __init__(
-        self,
-        name: str,
-        handle_size: Any = (0.08, 0.01, 0.005),
-        outer_radius_1: float = 0.0425,
-        inner_radius_1: float = 0.03,
-        height_1: float = 0.05,
-        outer_radius_2: float = 0.0425,
-        inner_radius_2: float = 0.03,
-        height_2: float = 0.05,
-        ngeoms: int = 8,
-        grip_size: Any = None,
-        density: Any = 1000.0,
-        solref: Any = (0.02, 1.0),
-        solimp: Any = (0.9, 0.95, 0.001),
-        friction: Any = None,
-    ) -> None:
-        self.handle_size = tuple(handle_size)
-        self.outer_radii = (outer_radius_1, outer_radius_2)
-        self.inner_radii = (inner_radius_1, inner_radius_2)
-        self.heights = (height_1, height_2)
-        self.ngeoms = ngeoms
-        self.grip_size = None if grip_size is None else tuple(grip_size)
-        steel = textured("SteelScratched", "steel", "steel_mat")
-        contact = {"density": density, "solref": solref, "solimp": solimp}
-        rings = [
-            HollowCylinderObject(
-                name=f"hole{i + 1}", outer_radius=self.outer_radii[i],
-                inner_radius=self.inner_radii[i], height=self.heights[i], ngeoms=ngeoms,
-                material=steel, friction=friction, **contact,
-            )
-            for i in range(2)
-        ]  # fmt: skip
-        handle = BoxObject("handle", size=handle_size, material=steel, friction=friction, **contact)
-        objects: list[MujocoObject] = [*rings, handle]
-        # Each ring overlaps the handle by one box's depth.
-        positions = [
-            np.array(
-                [-handle_size[0] - self.outer_radii[0] + 2.0 * rings[0].unit_box_height, 0, 0]
-            ),
-            np.array([handle_size[0] + self.outer_radii[1] - 2.0 * rings[1].unit_box_height, 0, 0]),
-            np.zeros(3),
-        ]
-        quats: list[Any] = [None, None, None]
-        if self.grip_size is not None:
-            grip = self.grip_size
-            objects.append(
-                BoxObject(
-                    name="grip", size=[grip[0], grip[0], grip[1]], rgba=(0.13, 0.13, 0.13, 1.0),
-                    friction=(1.0, 0.005, 0.0001), **contact,
-                )
-            )  # fmt: skip
-            positions.append(np.zeros(3))
-            quats.append((np.sqrt(2) / 2.0, 0.0, np.sqrt(2) / 2.0, 0.0))
-        super().__init__(
-            name=name,
-            objects=objects,
-            object_locations=positions,
-            object_quats=quats,
-            object_parents=[None] * len(objects),
-            joints=[{"type": "free", "damping": "0.0005"}],
         )

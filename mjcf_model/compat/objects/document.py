@@ -30,9 +30,8 @@ from collections.abc import Callable
 from typing import Any, ClassVar, TypeGuard
 
 from mjcf_model.caching import BoundedCache
-from mjcf_model.compat.mjcf_utils.etree_sync import attribute
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import AnyElement, Element
+from mjcf_model.nodes.base import AnyElement, Element, attribute_text
 from mjcf_model.tree.paths import appended_at, replaced_at, subtree_at
 from mjcf_model.tree.queries import find
 from mjcf_model.tree.traversal import Path, walk, with_children
@@ -130,7 +129,9 @@ def find_path(
     """
 
     def matches(element: AnyElement) -> bool:
-        return element.tag == tag and all(attribute(element, k) == v for k, v in attributes.items())
+        return element.tag == tag and all(
+            attribute_text(element, k) == v for k, v in attributes.items()
+        )
 
     if inside is None:
         return next((path for path, element in walk(node) if matches(element)), None)
@@ -220,7 +221,7 @@ class ModelBacked:
         mine = self._node("asset")
         added: list[AnyElement] = []
         for item in section_children(other, "asset"):
-            name = attribute(item, "name")
+            name = attribute_text(item, "name")
             if find(mine, item.tag, name=name) is None and all(
                 find(a, item.tag, name=name) is None for a in added
             ):

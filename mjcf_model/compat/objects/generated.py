@@ -22,18 +22,12 @@ from typing import Any, ClassVar
 import numpy as np
 
 from mjcf_model.compat.materials import material_nodes
+from mjcf_model.compat.mjcf_utils.builders import body_node, geom_node, joint_node, site_node
 from mjcf_model.compat.mjcf_utils.constants import RED
 from mjcf_model.compat.mjcf_utils.materials import flat_material
 from mjcf_model.compat.mjcf_utils.text import array_to_string, get_size
 from mjcf_model.compat.objects.base import MujocoObject, Vector
-from mjcf_model.compat.objects.habits import (
-    OBJECT_COLLISION_RGBA_TEXT,
-    rs_body,
-    rs_geom,
-    rs_joint,
-    rs_site,
-    value_text,
-)
+from mjcf_model.compat.objects.habits import OBJECT_COLLISION_RGBA_TEXT, value_text
 from mjcf_model.compat.objects.naming import robosuite_prefixed
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement
@@ -49,7 +43,7 @@ __all__ = [
 ]
 
 #: The bodies of a primitive and of a composite before their children (robosuite's ``new_body``).
-_MAIN_BODY, _ROOT_BODY = rs_body(name="main"), rs_body(name="root")
+_MAIN_BODY, _ROOT_BODY = body_node(value_text, "main"), body_node(value_text, "root")
 
 
 def material_parts(material: Any) -> tuple[str, str, bool, AnyElement, AnyElement]:
@@ -128,16 +122,20 @@ class MujocoGeneratedObject(MujocoObject):
         geoms: list[AnyElement] = []
         if obj_type in {"collision", "all"}:
             template = self.get_collision_attrib_template()
-            geoms.append(rs_geom(**{**base, **template, **collision()}))
+            geoms.append(geom_node(value_text, **{**base, **template, **collision()}))
         if obj_type in {"visual", "all"}:
             template = self.get_visual_attrib_template()
-            geoms.append(rs_geom(**{**base, **template, **visual, "name": base["name"] + "_vis"}))
+            geoms.append(
+                geom_node(
+                    value_text, **{**base, **template, **visual, "name": base["name"] + "_vis"}
+                )
+            )
         return geoms
 
     def _root_with_specs(self, more: Iterable[AnyElement] = ()) -> AnyElement:
         """A composite's ``root`` body: the joints and the sites of the specs, then ``more``."""
-        children: list[AnyElement] = [rs_joint(**spec) for spec in self.joint_specs]
-        children.extend(rs_site(**spec) for spec in self.site_specs)
+        children: list[AnyElement] = [joint_node(value_text, **spec) for spec in self.joint_specs]
+        children.extend(site_node(value_text, **spec) for spec in self.site_specs)
         return with_children(_ROOT_BODY, [*children, *more])
 
     def append_material(self, material: Any) -> None:
@@ -248,8 +246,8 @@ class PrimitiveObject(MujocoGeneratedObject):
             },
             visual,
         )
-        children.extend(rs_joint(**spec) for spec in self.joint_specs)
-        children.append(rs_site(**self._default_site()))
+        children.extend(joint_node(value_text, **spec) for spec in self.joint_specs)
+        children.append(site_node(value_text, **self._default_site()))
         return with_children(_MAIN_BODY, children)
 
 

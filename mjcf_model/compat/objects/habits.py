@@ -3,8 +3,8 @@
 Built on the compatible ``mjcf_utils`` wherever robosuite's objects call ``mjcf_utils``.
 Files are read into generic elements, so attribute text stays exactly as written.
 
->>> print(rs_geom("g", "box", [0.5, 0, 1]).attributes["size"], "|", value_text(np.float32(0.5)))
-0.5 0 1 | 0.5
+>>> value_text(np.float32(0.5)), value_text([0.5, 0, 1])
+('0.5', '0.5 0 1')
 >>> import tempfile, pathlib
 >>> path = pathlib.Path(tempfile.mkdtemp()) / "m.xml"
 >>> _ = path.write_text('<mujoco model="m"><default><default class="a"><geom group="1"/>'
@@ -27,8 +27,6 @@ import numpy as np
 
 from mjcf_model.caching import BoundedCache
 from mjcf_model.compat.mjcf_utils import constants as utils_constants
-from mjcf_model.compat.mjcf_utils.builders import body_node, geom_node, joint_node, site_node
-from mjcf_model.compat.mjcf_utils.etree_sync import attribute
 from mjcf_model.compat.mjcf_utils.scaling import (
     scaled_body,
     scaled_geom,
@@ -39,7 +37,13 @@ from mjcf_model.compat.mjcf_utils.scaling import (
 from mjcf_model.compat.mjcf_utils.text import array_to_string, text_of
 from mjcf_model.compat.objects.document import as_node, is_element
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.nodes.base import AnyElement, GenericElement, Node, with_attributes
+from mjcf_model.nodes.base import (
+    AnyElement,
+    GenericElement,
+    Node,
+    attribute_text,
+    with_attributes,
+)
 from mjcf_model.transforms.scaling.transform import three_factors
 from mjcf_model.tree.ancestry import fold_ancestors
 from mjcf_model.tree.defaults import MAIN, DefaultClasses
@@ -53,10 +57,6 @@ __all__ = [
     "named_specs",
     "read_like_robosuite",
     "robosuite_scaled",
-    "rs_body",
-    "rs_geom",
-    "rs_joint",
-    "rs_site",
     "split_geoms",
     "value_text",
     "visual_twin",
@@ -86,39 +86,6 @@ def value_text(value: Any) -> str:
     if text is None:
         raise MjcfValueError(f"unsupported attribute value type: got {type(value)} ({value!r})")
     return text
-
-
-def rs_geom(
-    name: str | None,
-    type: str | None,
-    size: Any,
-    pos: Any = (0, 0, 0),
-    group: Any = 0,
-    **extra: Any,
-) -> AnyElement:
-    """Like robosuite's ``new_geom``: extra attributes, then type, size, pos, group, name."""
-    return geom_node(name, type, size, pos, group, extra, value_text)
-
-
-def rs_site(
-    name: str | None = None,
-    rgba: Any = tuple(utils_constants.RED),
-    pos: Any = (0, 0, 0),
-    size: Any = (0.005,),
-    **extra: Any,
-) -> AnyElement:
-    """Like robosuite's ``new_site``: extra attributes, then pos, size, rgba, name."""
-    return site_node(name, rgba, pos, size, extra, value_text)
-
-
-def rs_joint(name: str | None = None, **extra: Any) -> AnyElement:
-    """Like robosuite's ``new_joint``: the attributes, then name."""
-    return joint_node(name, extra, value_text)
-
-
-def rs_body(name: str | None = None, pos: Any = (0, 0, 0), **extra: Any) -> AnyElement:
-    """Like robosuite's ``new_body``: the attributes, then pos, then name."""
-    return body_node(name, pos, extra, value_text)
 
 
 def named_specs(
@@ -200,7 +167,7 @@ def absolute_files(asset: AnyElement, folder: str) -> AnyElement:
         asset,
         [
             with_attributes(c, {"file": os.path.join(folder, file)})
-            if is_element(c) and (file := attribute(c, "file")) is not None
+            if is_element(c) and (file := attribute_text(c, "file")) is not None
             else c
             for c in asset.children
         ],
@@ -220,7 +187,7 @@ def inline_defaults(root: AnyElement, default: AnyElement) -> AnyElement:
         return tuple(c for c in classes.chain(name) if c != MAIN)
 
     def visit(element: AnyElement, _key: str | None, ancestors: Sequence[AnyElement]) -> AnyElement:
-        own = attribute(element, "class")
+        own = attribute_text(element, "class")
         chosen = own if own is not None else fold_ancestors(ancestors, _below, None)
         changes: dict[str, str | None] = {}
         if own is not None:
@@ -234,7 +201,7 @@ def inline_defaults(root: AnyElement, default: AnyElement) -> AnyElement:
                 for key, text in attribute_texts(setting):
                     if key not in present and key not in changes:
                         changes[key] = text
-        childclass = attribute(element, "childclass")
+        childclass = attribute_text(element, "childclass")
         if childclass is not None:
             chain(childclass)
             changes["childclass"] = None
@@ -245,7 +212,7 @@ def inline_defaults(root: AnyElement, default: AnyElement) -> AnyElement:
 
 def _below(inherited: str | None, ancestor: AnyElement) -> str | None:
     """The class ``ancestor``'s children inherit (its ``childclass``), given the one it inherits."""
-    childclass = attribute(ancestor, "childclass")
+    childclass = attribute_text(ancestor, "childclass")
     return inherited if childclass is None else childclass
 
 
@@ -264,11 +231,11 @@ def split_geoms(body: AnyElement, groups: set[int], duplicate: bool) -> AnyEleme
         if is_element(node, "geom"):  # geoms hold no geoms: visited in document order
             index = counter
             counter += 1
-            group = attribute(node, "group")
+            group = attribute_text(node, "group")
             if (0 if group is None else int(group)) not in groups:
                 dropped[id(node)] = node
                 return node
-            name = attribute(node, "name")
+            name = attribute_text(node, "name")
             if name is None:
                 name = f"g{index}"
             geom = with_attributes(node, {"name": name})
@@ -304,9 +271,9 @@ def named_geoms(node: AnyElement) -> AnyElement:
     counters = {"col": 0, "vis": 0}
 
     def name(geom: Node) -> Node:
-        if not is_element(geom, "geom") or attribute(geom, "name") is not None:
+        if not is_element(geom, "geom") or attribute_text(geom, "name") is not None:
             return geom
-        kind = _GEOM_KINDS.get(attribute(geom, "group"))
+        kind = _GEOM_KINDS.get(attribute_text(geom, "group"))
         if kind is None:
             return geom
         counters[kind] += 1

@@ -19,11 +19,17 @@ from collections.abc import Callable, Hashable
 from typing import Any
 
 from mjcf_model.caching import BoundedCache, IdentityCache
-from mjcf_model.compat.mjcf_utils.etree_sync import attribute
 from mjcf_model.compat.mjcf_utils.naming import already_prefixed
 from mjcf_model.compat.mjcf_utils.queries import categorized
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes.base import AnyElement, Element, GenericElement, Node, attribute_items
+from mjcf_model.nodes.base import (
+    AnyElement,
+    Element,
+    GenericElement,
+    Node,
+    attribute_items,
+    attribute_text,
+)
 from mjcf_model.schema.namespaces import SCHEMA
 from mjcf_model.transforms.naming.renaming import prefixed
 from mjcf_model.transforms.naming.repeated import PrefixPlan
@@ -124,8 +130,8 @@ def recorded_names(node: AnyElement) -> tuple[AnyElement, dict[str, Any]]:
             f"got {len(found.root_body)}"
         )
     root = found.root_body[0]
-    names: dict[str, Any] = {"_root_body": attribute(root, "name")}
-    names["_bodies"] = [attribute(e, "name") for e in (root, *found.bodies)]
+    names: dict[str, Any] = {"_root_body": attribute_text(root, "name")}
+    names["_bodies"] = [attribute_text(e, "name") for e in (root, *found.bodies)]
     for category in _CATEGORIES[1:]:
-        names[f"_{category}"] = [attribute(e, "name") for e in getattr(found, category)]
+        names[f"_{category}"] = [attribute_text(e, "name") for e in getattr(found, category)]
     return root, names

@@ -20,7 +20,7 @@ from mjcf_model.compat.objects.generated import material_parts
 from mjcf_model.compat.objects.recipes import add_geom, centred, marker_site
 from mjcf_model.errors import MjcfValueError
 
-__all__ = ["ConeObject", "HollowCylinderObject", "cone_layers"]
+__all__ = ["ConeObject", "HollowCylinderObject"]
 
 
 class _Shell(CompositeObject):

@@ -1,4 +1,4 @@
-"""robosuite's tools and frames: ``HammerObject`` and ``HookFrame``.
+"""robosuite's tools and frames: ``HammerObject``, ``HookFrame`` and ``RatchetingWrenchObject``.
 
 >>> hammer = HammerObject("hammer", rng=np.random.default_rng(0))
 >>> hammer.all_geoms
@@ -18,8 +18,10 @@ from typing import Any
 import numpy as np
 
 from mjcf_model.compat.mjcf_utils.constants import BLUE, CYAN, GREEN, RED
-from mjcf_model.compat.objects.base import Vector
+from mjcf_model.compat.objects.base import MujocoObject, Vector
 from mjcf_model.compat.objects.composite import CompositeObject
+from mjcf_model.compat.objects.composite_body import CompositeBodyObject
+from mjcf_model.compat.objects.generated import BoxObject
 from mjcf_model.compat.objects.recipes import (
     UPRIGHT,
     add_geom,
@@ -28,10 +30,10 @@ from mjcf_model.compat.objects.recipes import (
     marker_site,
     textured,
 )
-from mjcf_model.compat.objects.shells import cone_layers
+from mjcf_model.compat.objects.shells import HollowCylinderObject, cone_layers
 from mjcf_model.errors import MjcfValueError
 
-__all__ = ["HammerObject", "HookFrame"]
+__all__ = ["HammerObject", "HookFrame", "RatchetingWrenchObject"]
 
 
 def _range(value: Any) -> Any:
@@ -321,3 +323,90 @@ class HookFrame(CompositeObject):
     def init_quat(self) -> Vector:
         """The frame turned to hang (``x y z w``, float32 as robosuite's product gives it)."""
         return np.array([-0.5, -0.5, 0.5, 0.5], dtype=np.float32)
+
+
+class RatchetingWrenchObject(CompositeBodyObject):
+    """robosuite's ``RatchetingWrenchObject``: a box handle between two rings, all of steel.
+
+    Args:
+        name: Name of the object.
+        handle_size: Half-size of the handle box.
+        outer_radius_1: Outer radius of the first ring (``hole1``, on -x).
+        inner_radius_1: Inner radius of the first ring.
+        height_1: Half-height of the first ring.
+        outer_radius_2: Outer radius of the second ring (``hole2``, on +x).
+        inner_radius_2: Inner radius of the second ring.
+        height_2: Half-height of the second ring.
+        ngeoms: Boxes per ring.
+        grip_size: Half-width and half-length of a dark grip along the handle (``None``: none).
+        density: Density of every geom.
+        solref: Contact ``solref`` of every geom.
+        solimp: Contact ``solimp`` of every geom.
+        friction: Friction of the rings and the handle (``None``: robosuite's default).
+
+    """
+
+    _robosuite_class = ("robosuite.models.objects", "RatchetingWrenchObject")
+
+    def __init__(
+        self,
+        name: str,
+        handle_size: Any = (0.08, 0.01, 0.005),
+        outer_radius_1: float = 0.0425,
+        inner_radius_1: float = 0.03,
+        height_1: float = 0.05,
+        outer_radius_2: float = 0.0425,
+        inner_radius_2: float = 0.03,
+        height_2: float = 0.05,
+        ngeoms: int = 8,
+        grip_size: Any = None,
+        density: Any = 1000.0,
+        solref: Any = (0.02, 1.0),
+        solimp: Any = (0.9, 0.95, 0.001),
+        friction: Any = None,
+    ) -> None:
+        self.handle_size = tuple(handle_size)
+        self.outer_radii = (outer_radius_1, outer_radius_2)
+        self.inner_radii = (inner_radius_1, inner_radius_2)
+        self.heights = (height_1, height_2)
+        self.ngeoms = ngeoms
+        self.grip_size = None if grip_size is None else tuple(grip_size)
+        steel = textured("SteelScratched", "steel", "steel_mat")
+        contact = {"density": density, "solref": solref, "solimp": solimp}
+        rings = [
+            HollowCylinderObject(
+                name=f"hole{i + 1}", outer_radius=self.outer_radii[i],
+                inner_radius=self.inner_radii[i], height=self.heights[i], ngeoms=ngeoms,
+                material=steel, friction=friction, **contact,
+            )
+            for i in range(2)
+        ]  # fmt: skip
+        handle = BoxObject("handle", size=handle_size, material=steel, friction=friction, **contact)
+        objects: list[MujocoObject] = [*rings, handle]
+        # Each ring overlaps the handle by one box's depth.
+        positions = [
+            np.array(
+                [-handle_size[0] - self.outer_radii[0] + 2.0 * rings[0].unit_box_height, 0, 0]
+            ),
+            np.array([handle_size[0] + self.outer_radii[1] - 2.0 * rings[1].unit_box_height, 0, 0]),
+            np.zeros(3),
+        ]
+        quats: list[Any] = [None, None, None]
+        if self.grip_size is not None:
+            grip = self.grip_size
+            objects.append(
+                BoxObject(
+                    name="grip", size=[grip[0], grip[0], grip[1]], rgba=(0.13, 0.13, 0.13, 1.0),
+                    friction=(1.0, 0.005, 0.0001), **contact,
+                )
+            )  # fmt: skip
+            positions.append(np.zeros(3))
+            quats.append((np.sqrt(2) / 2.0, 0.0, np.sqrt(2) / 2.0, 0.0))
+        super().__init__(
+            name=name,
+            objects=objects,
+            object_locations=positions,
+            object_quats=quats,
+            object_parents=[None] * len(objects),
+            joints=[{"type": "free", "damping": "0.0005"}],
+        )

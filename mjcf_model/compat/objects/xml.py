@@ -29,7 +29,7 @@ import xml.etree.ElementTree as ET
 from typing import Any
 
 from mjcf_model.caching import IdentityCache
-from mjcf_model.compat.mjcf_utils.etree_sync import attribute
+from mjcf_model.compat.mjcf_utils.builders import joint_node
 from mjcf_model.compat.mjcf_utils.materials import recolored
 from mjcf_model.compat.mjcf_utils.text import array_to_string, string_to_array
 from mjcf_model.compat.objects.base import (
@@ -53,13 +53,13 @@ from mjcf_model.compat.objects.habits import (
     named_geoms,
     read_like_robosuite,
     robosuite_scaled,
-    rs_joint,
     split_geoms,
+    value_text,
     visual_twin,
 )
 from mjcf_model.compat.objects.naming import recorded_names, robosuite_prefixed
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
-from mjcf_model.nodes.base import AnyElement, GenericElement, with_attributes
+from mjcf_model.nodes.base import AnyElement, GenericElement, attribute_text, with_attributes
 from mjcf_model.tree.paths import appended_at, replaced_at, subtree_at
 from mjcf_model.tree.traversal import walk, with_children
 from mjcf_model.values import to_vec4
@@ -110,7 +110,7 @@ class MujocoXML(ModelBacked, RobosuiteCompatible):
     @property
     def name(self) -> Any:
         """The ``model`` attribute of the root."""
-        return attribute(self.mjcf, "model")
+        return attribute_text(self.mjcf, "model")
 
     def create_default_element(self, name: str) -> ET.Element:
         """The first ``<name>`` child of the root, added (empty, at the end) if missing."""
@@ -191,7 +191,9 @@ class MujocoXML(ModelBacked, RobosuiteCompatible):
         """Names of the ``element_type`` elements below ``root`` (an element or a node)."""
         if isinstance(root, ET.Element):
             return [e.get("name") for e in root.iter() if e is not root and e.tag == element_type]
-        return [attribute(e, "name") for path, e in walk(root) if path and e.tag == element_type]
+        return [
+            attribute_text(e, "name") for path, e in walk(root) if path and e.tag == element_type
+        ]
 
 
 class MujocoXMLObject(MujocoObject, MujocoXML):
@@ -259,7 +261,7 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
     def _prepared(self, obj: AnyElement) -> AnyElement:
         obj = with_attributes(obj, {"name": "main"})
         obj = split_geoms(obj, GEOMTYPE2GROUP[self.obj_type], self.duplicate_collision_geoms)
-        extra = [rs_joint(**spec) for spec in self.joint_specs]
+        extra = [joint_node(value_text, **spec) for spec in self.joint_specs]
         extra.append(GenericElement(tag="site", attributes=self._default_site(hidden=True)))
         return with_children(obj, [*obj.children, *extra])
 
@@ -294,7 +296,7 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
     @property
     def rot(self) -> Any:
         """The z Euler angle of the object body (0 when not set)."""
-        return string_to_array(attribute(self.obj_node, "euler") or "0.0 0.0 0.0")[2]
+        return string_to_array(attribute_text(self.obj_node, "euler") or "0.0 0.0 0.0")[2]
 
     def _outer_site_pos(self, name: str) -> Vector:
         world, wanted = self._node("worldbody"), self.naming_prefix + name
@@ -303,7 +305,7 @@ class MujocoXMLObject(MujocoObject, MujocoXML):
             raise MjcfLookupError(
                 f"{self.file}: no site {wanted!r} in a top-level body of <worldbody>"
             )
-        return string_to_array(attribute(subtree_at(world, path), "pos") or "0 0 0")
+        return string_to_array(attribute_text(subtree_at(world, path), "pos") or "0 0 0")
 
     bottom_offset = property(lambda self: self._outer_site_pos("bottom_site"), doc="Bottom site.")
     top_offset = property(lambda self: self._outer_site_pos("top_site"), doc="Top site.")
@@ -356,7 +358,7 @@ class MujocoXMLModel(MujocoXML, MujocoModel):
         document = named_geoms(self.mjcf)
         root, names = recorded_names(document)
         vars(self).update(names)  # _root_body, _bodies, _joints...
-        self._base_offset = string_to_array(attribute(root, "pos") or "0 0 0")
+        self._base_offset = string_to_array(attribute_text(root, "pos") or "0 0 0")
         self._set_mjcf(robosuite_prefixed(document, self.naming_prefix, self._excluded))
         rgba = self.contact_geom_rgba
         self._change("worldbody", lambda world: self._recolored(world, rgba))

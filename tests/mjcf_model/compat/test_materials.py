@@ -28,7 +28,6 @@ from mjcf_model import (
 )
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.compat.materials import (
-    TEXTURE_FILES,
     CustomMaterial,
     MaterialResult,
     material_nodes,
@@ -115,16 +114,8 @@ WOOD = {
 }
 
 
-def test_texture_files_are_robosuites_and_read_only() -> None:
-    """The 27 names map to robosuite's files, in robosuite's order; the mapping is read-only."""
-    assert list(TEXTURE_FILES.items()) == list(mjcf_utils.TEXTURE_FILES.items())
-    assert len(TEXTURE_FILES) == 27
-    with pytest.raises(TypeError):
-        TEXTURE_FILES["Oak"] = "oak.png"  # type: ignore[index]
-
-
 MATERIALS: list[dict[str, Any]] = [
-    *({"texture": name, "tex_name": "t", "mat_name": "m"} for name in TEXTURE_FILES),
+    *({"texture": name, "tex_name": "t", "mat_name": "m"} for name in mjcf_utils.TEXTURE_FILES),
     WOOD,
     {
         "texture": "WoodRed",
@@ -153,7 +144,7 @@ def test_the_one_material_class_is_robosuites(kwargs: dict[str, Any]) -> None:
     assert list(ours.mat_attrib.items()) == list(theirs.mat_attrib.items())
     assert (ours.name, ours.shared) == (theirs.name, theirs.shared)
     file = ours.tex_attrib.get("file")
-    if isinstance(kwargs["texture"], str) and kwargs["texture"] in TEXTURE_FILES:
+    if isinstance(kwargs["texture"], str) and kwargs["texture"] in mjcf_utils.TEXTURE_FILES:
         assert file is not None and os.path.isfile(file)
 
 

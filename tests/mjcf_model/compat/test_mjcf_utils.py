@@ -13,6 +13,7 @@ import pytest
 from mjcf_model.compat import mjcf_utils as compat_module
 from tests.conftest import corpus_files, corpus_id
 from tests.support.compat_utils import (
+    E2,
     RS_CONSTANTS,
     _parts,
     check_by_substring,
@@ -49,7 +50,7 @@ def test_every_public_name_of_robosuite_is_here() -> None:
     for name in RS_FUNCTIONS + RS_CONSTANTS:
         assert hasattr(compat_module, name), name
         assert (name in compat_module.__all__) == (not name.startswith("_")), name
-    assert compat_module.__all__ == sorted(compat_module.__all__)
+    assert len(set(compat_module.__all__)) == len(compat_module.__all__)
     assert set(compat_module.__all__) <= set(RS_FUNCTIONS + RS_CONSTANTS)
 
 
@@ -161,3 +162,16 @@ def test_tree_functions_match_robosuite_on_the_corpus(path: Path) -> None:
         differential(name, root, operation, right_on_crash=right_on_crash)
     check_by_substring(root, "geom", ["a", "1"])
     check_by_substring(root, ["body", "joint"], ["0"])
+
+
+def test_tree_functions_keep_the_element_objects() -> None:
+    """The tree functions change attributes on the same Element objects; none is replaced."""
+    root = ET.fromstring(E2)
+    before = list(root.iter())
+    ours.add_prefix(root, "p_")
+    ours.set_alpha(root, 0.5)
+    ours.recolor_collision_geoms(root, ours.RED)
+    ours.add_material(root, "p_")
+    ours.scale_mjcf_model(root, ET.Element("asset"), 2, ours.get_elements, worldbody=root)
+    assert all(a is b for a, b in zip(root.iter(), before, strict=True))
+    assert root[0].get("rgba") == "1 0 0 1" and root[0].get("name") == "p_g"
