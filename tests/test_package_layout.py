@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import ast
 import importlib
+import importlib.util
 import pkgutil
 import types
+from pathlib import Path
 
 import pytest
 
@@ -38,3 +41,29 @@ def test_no_package_hides_a_module_behind_a_name(package: types.ModuleType) -> N
         )
         imported = importlib.import_module(f"{package.__name__}.{module.name}")
         assert getattr(package, module.name) is imported
+
+
+def _modules_with_code() -> list[str]:
+    """The dotted names of the modules that define a function or a class."""
+    found = []
+    for root in (mjcf_model, serializers):
+        for info in pkgutil.walk_packages(root.__path__, root.__name__ + "."):
+            spec = importlib.util.find_spec(info.name)
+            assert spec is not None and spec.origin is not None
+            tree = ast.parse(Path(spec.origin).read_text(encoding="utf-8"))
+            if any(isinstance(node, (ast.FunctionDef, ast.ClassDef)) for node in tree.body):
+                found.append(info.name)
+    return found
+
+
+def test_every_module_with_code_has_a_test_file_named_after_it() -> None:
+    """A module ``a/b/c.py`` that defines anything is tested in ``tests/a/b/test_c.py``."""
+    tests = Path(__file__).parent
+    modules = _modules_with_code()
+    assert len(modules) > 100
+    missing = []
+    for name in modules:
+        *folders, module = name.split(".")
+        if not (tests.joinpath(*folders) / f"test_{module}.py").is_file():
+            missing.append(name)
+    assert missing == []
