@@ -214,8 +214,9 @@ def shallow_node(element: ET.Element) -> Node:
     For code called once per element of a tree, which converting subtrees would make quadratic.
 
     Examples:
-        >>> shallow_node(ET.fromstring('<geom size="0.1"><x/></geom>'))
-        GenericElement(tag='geom', attributes=AttributeMap({'size': '0.1'}))
+        >>> node = shallow_node(ET.fromstring('<geom size="0.10"><x/></geom>'))
+        >>> node.tag, dict(node.attributes), node.children
+        ('geom', {'size': '0.10'}, ())
 
     """
     if element.tag is ET.Comment:  # type: ignore[comparison-overlap]

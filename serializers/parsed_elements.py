@@ -313,7 +313,8 @@ def written_text(node: Node, name: str) -> str | None:
 
     Examples:
         >>> from serializers import loads
-        >>> geom = loads('<geom group="01" size="0.10"/>')
+        >>> model = loads('<mujoco><worldbody><geom group="01" size="0.10"/></worldbody></mujoco>')
+        >>> (geom,) = model.worldbody.geoms
         >>> written_text(geom, "group"), written_text(geom, "size"), written_text(geom, "pos")
         ('01', '0.10', None)
         >>> from mjcf_model import with_attributes
