@@ -2,327 +2,72 @@
 
 from __future__ import annotations
 
-from mjcf_model.nodes.actuator import (
-    Actuator,
-    ActuatorElement,
-    ActuatorPlugin,
-    Adhesion,
-    Cylinder,
-    Damper,
-    DcMotor,
-    General,
-    IntVelocity,
-    Motor,
-    Muscle,
-    Orientation,
-    Pid,
-    Position,
-    TransmissionActuator,
-    Velocity,
+from mjcf_model.nodes import (
+    asset,
+    body,
+    compiler,
+    contact,
+    custom,
+    default,
+    deformable,
+    equality,
+    geom,
+    keyframe,
+    plugin,
+    root,
+    tendon,
+    visual,
 )
-from mjcf_model.nodes.asset import (
-    Asset,
-    Bone,
-    Hfield,
-    Material,
-    MaterialLayer,
-    Mesh,
-    Model,
-    Skin,
-    Texture,
-)
-from mjcf_model.nodes.body import (
-    Attach,
-    Body,
-    Frame,
-    FreeJoint,
-    Inertial,
-    Joint,
-    Replicate,
-    TreeViews,
-    Worldbody,
-)
-from mjcf_model.nodes.compiler import Compiler, LengthRange, Option, OptionFlag, Size, Statistic
-from mjcf_model.nodes.contact import Contact, Exclude, Pair
-from mjcf_model.nodes.custom import Custom, Numeric, Text, Tuple, TupleElement
-from mjcf_model.nodes.default import Default
-from mjcf_model.nodes.deformable import (
-    Deformable,
-    Flex,
-    Flexcomp,
-    FlexcompEdge,
-    FlexcompPin,
-    FlexContact,
-    FlexEdge,
-    FlexElasticity,
-)
-from mjcf_model.nodes.equality import (
-    Connect,
-    DefaultEquality,
-    Equality,
-    EqualityElement,
-    EqualityFlex,
-    EqualityFlexStrain,
-    EqualityJoint,
-    EqualitySettings,
-    EqualityTendon,
-    Weld,
-)
-from mjcf_model.nodes.geom import Camera, Geom, Light, Oriented, Site
-from mjcf_model.nodes.keyframe import Key, Keyframe
-from mjcf_model.nodes.plugin import (
-    Extension,
-    ExtensionPlugin,
-    Plugin,
-    PluginConfig,
-    PluginInstance,
-    PluginUse,
-)
-from mjcf_model.nodes.root import Include, Mujoco
-from mjcf_model.nodes.sensor import (
-    Accelerometer,
-    ActuatorFrc,
-    ActuatorPos,
-    ActuatorSensor,
-    ActuatorVel,
-    BallAngVel,
-    BallQuat,
-    CamProjection,
-    Clock,
-    ContactSensor,
-    Distance,
-    EKinetic,
-    EPotential,
-    Force,
-    FrameAngAcc,
-    FrameAngVel,
-    FrameLinAcc,
-    FrameLinVel,
-    FramePos,
-    FrameQuat,
-    FrameSensor,
-    FrameXAxis,
-    FrameYAxis,
-    FrameZAxis,
-    FromTo,
-    GeomPairSensor,
-    Gyro,
-    InsideSite,
-    JointActuatorFrc,
-    JointLimitFrc,
-    JointLimitPos,
-    JointLimitVel,
-    JointPos,
-    JointSensor,
-    JointVel,
-    Magnetometer,
-    NoisySensor,
-    Normal,
-    ObjectSensor,
-    Rangefinder,
-    SampledSensor,
-    Sensor,
-    SensorElement,
-    SensorPlugin,
-    SiteSensor,
-    SubtreeAngMom,
-    SubtreeCom,
-    SubtreeLinVel,
-    SubtreeSensor,
-    Tactile,
-    TendonActuatorFrc,
-    TendonLimitFrc,
-    TendonLimitPos,
-    TendonLimitVel,
-    TendonPos,
-    TendonSensor,
-    TendonVel,
-    Torque,
-    Touch,
-    UserSensor,
-    Velocimeter,
-)
-from mjcf_model.nodes.tendon import (
-    DefaultTendon,
-    Fixed,
-    Pulley,
-    Spatial,
-    Tendon,
-    TendonElement,
-    TendonGeom,
-    TendonJoint,
-    TendonSettings,
-    TendonSite,
-)
-from mjcf_model.nodes.visual import (
-    Visual,
-    VisualGlobal,
-    VisualHeadlight,
-    VisualMap,
-    VisualQuality,
-    VisualRgba,
-    VisualScale,
-)
+from mjcf_model.nodes.actuator import base as actuator_base
+from mjcf_model.nodes.actuator import shortcuts as actuator_shortcuts
+from mjcf_model.nodes.actuator import special as actuator_special
+from mjcf_model.nodes.actuator.base import *
+from mjcf_model.nodes.actuator.shortcuts import *
+from mjcf_model.nodes.actuator.special import *
+from mjcf_model.nodes.asset import *
+from mjcf_model.nodes.body import *
+from mjcf_model.nodes.compiler import *
+from mjcf_model.nodes.contact import *
+from mjcf_model.nodes.custom import *
+from mjcf_model.nodes.default import *
+from mjcf_model.nodes.deformable import *
+from mjcf_model.nodes.equality import *
+from mjcf_model.nodes.geom import *
+from mjcf_model.nodes.keyframe import *
+from mjcf_model.nodes.plugin import *
+from mjcf_model.nodes.root import *
+from mjcf_model.nodes.sensor import base as sensor_base
+from mjcf_model.nodes.sensor import frames as sensor_frames
+from mjcf_model.nodes.sensor import global_sensors as sensor_global_sensors
+from mjcf_model.nodes.sensor import one_object as sensor_one_object
+from mjcf_model.nodes.sensor.base import *
+from mjcf_model.nodes.sensor.frames import *
+from mjcf_model.nodes.sensor.global_sensors import *
+from mjcf_model.nodes.sensor.one_object import *
+from mjcf_model.nodes.tendon import *
+from mjcf_model.nodes.visual import *
 
-__all__ = [
-    "Accelerometer",
-    "Actuator",
-    "ActuatorElement",
-    "ActuatorFrc",
-    "ActuatorPlugin",
-    "ActuatorPos",
-    "ActuatorSensor",
-    "ActuatorVel",
-    "Adhesion",
-    "Asset",
-    "Attach",
-    "BallAngVel",
-    "BallQuat",
-    "Body",
-    "Bone",
-    "CamProjection",
-    "Camera",
-    "Clock",
-    "Compiler",
-    "Connect",
-    "Contact",
-    "ContactSensor",
-    "Custom",
-    "Cylinder",
-    "Damper",
-    "DcMotor",
-    "Default",
-    "DefaultEquality",
-    "DefaultTendon",
-    "Deformable",
-    "Distance",
-    "EKinetic",
-    "EPotential",
-    "Equality",
-    "EqualityElement",
-    "EqualityFlex",
-    "EqualityFlexStrain",
-    "EqualityJoint",
-    "EqualitySettings",
-    "EqualityTendon",
-    "Exclude",
-    "Extension",
-    "ExtensionPlugin",
-    "Fixed",
-    "Flex",
-    "FlexContact",
-    "FlexEdge",
-    "FlexElasticity",
-    "Flexcomp",
-    "FlexcompEdge",
-    "FlexcompPin",
-    "Force",
-    "Frame",
-    "FrameAngAcc",
-    "FrameAngVel",
-    "FrameLinAcc",
-    "FrameLinVel",
-    "FramePos",
-    "FrameQuat",
-    "FrameSensor",
-    "FrameXAxis",
-    "FrameYAxis",
-    "FrameZAxis",
-    "FreeJoint",
-    "FromTo",
-    "General",
-    "Geom",
-    "GeomPairSensor",
-    "Gyro",
-    "Hfield",
-    "Include",
-    "Inertial",
-    "InsideSite",
-    "IntVelocity",
-    "Joint",
-    "JointActuatorFrc",
-    "JointLimitFrc",
-    "JointLimitPos",
-    "JointLimitVel",
-    "JointPos",
-    "JointSensor",
-    "JointVel",
-    "Key",
-    "Keyframe",
-    "LengthRange",
-    "Light",
-    "Magnetometer",
-    "Material",
-    "MaterialLayer",
-    "Mesh",
-    "Model",
-    "Motor",
-    "Mujoco",
-    "Muscle",
-    "NoisySensor",
-    "Normal",
-    "Numeric",
-    "ObjectSensor",
-    "Option",
-    "OptionFlag",
-    "Orientation",
-    "Oriented",
-    "Pair",
-    "Pid",
-    "Plugin",
-    "PluginConfig",
-    "PluginInstance",
-    "PluginUse",
-    "Position",
-    "Pulley",
-    "Rangefinder",
-    "Replicate",
-    "SampledSensor",
-    "Sensor",
-    "SensorElement",
-    "SensorPlugin",
-    "Site",
-    "SiteSensor",
-    "Size",
-    "Skin",
-    "Spatial",
-    "Statistic",
-    "SubtreeAngMom",
-    "SubtreeCom",
-    "SubtreeLinVel",
-    "SubtreeSensor",
-    "Tactile",
-    "Tendon",
-    "TendonActuatorFrc",
-    "TendonElement",
-    "TendonGeom",
-    "TendonJoint",
-    "TendonLimitFrc",
-    "TendonLimitPos",
-    "TendonLimitVel",
-    "TendonPos",
-    "TendonSensor",
-    "TendonSettings",
-    "TendonSite",
-    "TendonVel",
-    "Text",
-    "Texture",
-    "Torque",
-    "Touch",
-    "TransmissionActuator",
-    "TreeViews",
-    "Tuple",
-    "TupleElement",
-    "UserSensor",
-    "Velocimeter",
-    "Velocity",
-    "Visual",
-    "VisualGlobal",
-    "VisualHeadlight",
-    "VisualMap",
-    "VisualQuality",
-    "VisualRgba",
-    "VisualScale",
-    "Weld",
-    "Worldbody",
-]
+# Each section module lists its node classes in its own __all__.
+__all__ = (
+    actuator_base.__all__
+    + actuator_shortcuts.__all__
+    + actuator_special.__all__
+    + asset.__all__
+    + body.__all__
+    + compiler.__all__
+    + contact.__all__
+    + custom.__all__
+    + default.__all__
+    + deformable.__all__
+    + equality.__all__
+    + geom.__all__
+    + keyframe.__all__
+    + plugin.__all__
+    + root.__all__
+    + sensor_base.__all__
+    + sensor_one_object.__all__
+    + sensor_frames.__all__
+    + sensor_global_sensors.__all__
+    + tendon.__all__
+    + visual.__all__
+)

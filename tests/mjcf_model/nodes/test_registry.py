@@ -25,7 +25,7 @@ def test_registry_is_every_declared_schema_key() -> None:
     assert all(cls.__node_info__.tag == key.rsplit("/", 1)[-1] for key, cls in CLASS_BY_KEY.items())
 
 
-# -- The checklist for adding an MJCF element: three files, and a failure that names the one
+# -- The checklist for adding an MJCF element: two files, and a failure that names the one
 #    missed.
 #
 # A new element (say MuJoCo adds ``<sensor><jointcurrent joint="..."/>``) takes:
@@ -34,8 +34,9 @@ def test_registry_is_every_declared_schema_key() -> None:
 #    references and their namespaces);
 # 2. its class in the section module under ``mjcf_model/nodes/`` (``@node``,
 #    ``schema_keys`` naming its rows, a field helper per attribute: ``text()`` for
-#    names and references; the tag and the namespaces come from the table);
-# 3. its name in ``mjcf_model/nodes/__init__.py``.
+#    names and references; the tag and the namespaces come from the table), and its
+#    name in that module's ``__all__``, which ``mjcf_model.nodes`` and ``mjcf_model``
+#    gather.
 #
 # Everything else is derived: the registry, scaling (no lengths unless a rule
 # says so; ``scaling/test_rules.py`` flags length-sounding attributes), prefixing
@@ -45,7 +46,6 @@ def test_registry_is_every_declared_schema_key() -> None:
 
 
 _TABLE = "mjcf_model/schema/namespaces.py"
-_INIT = "mjcf_model/nodes/__init__.py"
 
 
 def _section_module(key: str) -> str:
@@ -62,11 +62,14 @@ def test_every_row_has_a_declared_class() -> None:
 
 
 def test_every_declared_class_is_exported() -> None:
-    """Step 3: each class is importable from ``mjcf_model`` (its name in the nodes facade)."""
+    """Step 2 ends with the class's name in its module's ``__all__``: then it is everywhere."""
     missing = sorted(
-        {cls.__name__ for cls in CLASS_BY_KEY.values() if cls.__name__ not in nodes.__all__}
+        f"add {cls.__name__!r} to the __all__ of {cls.__module__}"
+        for cls in CLASS_BY_KEY.values()
+        if cls.__name__ not in nodes.__all__
     )
-    assert not missing, f"add {missing} to __all__ and the imports of {_INIT}"
+    assert not missing, "\n".join(missing)
+    assert set(nodes.__all__) <= set(mjcf_model.__all__)
     assert all(getattr(mjcf_model, name) is getattr(nodes, name) for name in nodes.__all__)
 
 
