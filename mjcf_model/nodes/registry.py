@@ -9,24 +9,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from types import MappingProxyType
 
-from mjcf_model.nodes import (  # noqa: F401  (declares every node class)
-    actuator,
-    asset,
-    body,
-    compiler,
-    contact,
-    custom,
-    default,
-    deformable,
-    equality,
-    geom,
-    keyframe,
-    plugin,
-    root,
-    sensor,
-    tendon,
-    visual,
-)
+from mjcf_model import nodes  # noqa: F401  (its section modules declare every node class)
 from mjcf_model.nodes.base import TypedElement
 from mjcf_model.nodes.declaring import declared_classes
 
