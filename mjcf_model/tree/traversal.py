@@ -310,16 +310,9 @@ def walk(node: Node) -> Iterator[tuple[Path, AnyElement]]:
         [((), 'mujoco'), ((0,), 'worldbody'), ((0, 0), 'geom')]
 
     """
-    stack: list[tuple[Path, Node]] = [((), node)]
-    while stack:
-        path, current = stack.pop()
-        if not isinstance(current, Element):
-            continue
-        assert isinstance(current, Element)
-        yield path, current
-        stack.extend(
-            ((*path, index), child) for index, child in reversed(list(enumerate(current.children)))
-        )
+    for _, current, path in walk_nodes(node):
+        if isinstance(current, Element):
+            yield path, current
 
 
 def walk_nodes(node: Node) -> Iterator[tuple[AnyElement | None, Node, Path]]:

@@ -7,6 +7,7 @@
 
 from __future__ import annotations
 
+import functools
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Collection, Iterable, Iterator
 from typing import Any
@@ -16,6 +17,7 @@ import attrs
 from mjcf_model.compat.geom_roles import role_of_group
 from mjcf_model.compat.mjcf_utils.constants import SENSOR_TYPES
 from mjcf_model.nodes.base import AnyElement, Element, Node
+from mjcf_model.tree.traversal import walk_nodes
 from serializers.parsed_elements import written_text
 
 __all__ = [
@@ -75,19 +77,6 @@ def _tag(node: Node | ET.Element | None) -> str | None:
     if isinstance(node, ET.Element) and isinstance(node.tag, str):
         return node.tag
     return None
-
-
-def filter_key(
-    node: Node, parent: Node | None, sensor_tags: Collection[str] | None = SENSOR_TYPES
-) -> str | None:
-    """The :func:`category` of ``node`` under ``parent``."""
-    return category(
-        _tag(node),
-        lambda name: written_text(node, name),
-        _tag(parent),
-        parent is None,
-        sensor_tags,
-    )
 
 
 def _element_filter(element: ET.Element, parent: ET.Element | None) -> str | None:
@@ -297,13 +286,10 @@ def categorized(node: AnyElement) -> Categories:
 
     """
     found: dict[str, list[AnyElement]] = {f.name: [] for f in attrs.fields(Categories)}
-    stack: list[tuple[AnyElement, AnyElement | None]] = [(node, None)]
-    while stack:
-        element, parent = stack.pop()
-        key = filter_key(element, parent, sensor_tags=None)
-        if key is not None:
-            found[key].append(element)
-        stack.extend(
-            (child, element) for child in reversed(element.children) if isinstance(child, Element)
-        )
+    for parent, element, _ in walk_nodes(node):
+        if isinstance(element, Element):
+            attribute_of = functools.partial(written_text, element)
+            key = category(element.tag, attribute_of, _tag(parent), parent is None, None)
+            if key is not None:
+                found[key].append(element)
     return Categories(**found)
