@@ -261,16 +261,19 @@ def _check(
         assert scene.key_ctrl[row][actuator] == ctrl[0], (row, prefix)
 
 
-def test_merged_keys_match_by_name_and_new_names_stay_unprefixed() -> None:
-    """Two arms in one call: ``home`` joins the parent's, ``solo``/``extra`` join each other."""
+def _two_arms_merged() -> tuple[mujoco.MjModel, mujoco.MjModel, mujoco.MjModel]:
+    """The parent with two arms attached in one call, keys merged; the parent and arm alone."""
     arm = loads(ARM_MERGED_NAMES)
     scene = compiled(
         attach_all(loads(PARENT_MERGED_NAMES), [(arm, "a_"), (arm, "b_")], keyframes="merged")
     )
-    parent, alone = (
-        mujoco.MjModel.from_xml_string(PARENT_MERGED_NAMES),
-        mujoco.MjModel.from_xml_string(ARM_MERGED_NAMES),
-    )
+    parent = mujoco.MjModel.from_xml_string(PARENT_MERGED_NAMES)
+    return scene, parent, mujoco.MjModel.from_xml_string(ARM_MERGED_NAMES)
+
+
+def test_merged_keys_match_by_name_and_new_names_stay_unprefixed() -> None:
+    """Two arms in one call: ``home`` joins the parent's, ``solo``/``extra`` join each other."""
+    scene, parent, alone = _two_arms_merged()
     names = [scene.key(k).name for k in range(scene.nkey)]
     assert sorted(names) == ["", "", "", "extra", "home", "solo"]
     for name in ("home", "solo", "extra"):
@@ -289,14 +292,7 @@ def test_merged_keys_match_by_name_and_new_names_stay_unprefixed() -> None:
 
 def test_keys_named_empty_are_never_merged() -> None:
     """``name=""`` keys of parent and arms stay three keys, each setting only its own part."""
-    arm = loads(ARM_MERGED_NAMES)
-    scene = compiled(
-        attach_all(loads(PARENT_MERGED_NAMES), [(arm, "a_"), (arm, "b_")], keyframes="merged")
-    )
-    parent, alone = (
-        mujoco.MjModel.from_xml_string(PARENT_MERGED_NAMES),
-        mujoco.MjModel.from_xml_string(ARM_MERGED_NAMES),
-    )
+    scene, parent, alone = _two_arms_merged()
     unnamed = [k for k in range(scene.nkey) if scene.key(k).name == ""]
     assert len(unnamed) == 3
     parts = {"": (parent, "yaw"), "a_": (alone, "shoulder"), "b_": (alone, "shoulder")}
