@@ -31,6 +31,7 @@ from serializers import to_etree
 
 __all__ = [
     "CASES",
+    "DEFAULT_MATERIAL_TEXTURE",
     "at",
     "comparable",
     "differential",
@@ -44,6 +45,17 @@ __all__ = [
     "same_arrays",
     "tree_bytes",
 ]
+
+#: The texture attributes robosuite's ``add_material`` gives its default material
+#: (``CustomMaterial(None, "default_tex", "default_mat", tex_attrib=...)``, as it writes it).
+DEFAULT_MATERIAL_TEXTURE: dict[str, Any] = {
+    "type": "cube",
+    "builtin": "flat",
+    "width": 100,
+    "height": 100,
+    "rgb1": np.ones(3),
+    "rgb2": np.ones(3),
+}
 
 #: Differential cases run in this process, by function name.
 CASES: Counter[str] = Counter()

@@ -39,6 +39,7 @@ from mjcf_model.nodes.base import AnyElement, Element, get_attribute
 from mjcf_model.strategies import models
 from serializers import dumps, load, loads, to_etree
 from tests.conftest import corpus_id, loading_corpus
+from tests.support.compat_utils import DEFAULT_MATERIAL_TEXTURE
 
 CORPUS = loading_corpus()
 ROBOSUITE_CORPUS = [p for p in CORPUS if "robosuite" in p.parts]
@@ -154,14 +155,7 @@ def test_the_default_material_is_robosuites_and_new_each_time() -> None:
         texture=None,
         tex_name="default_tex",
         mat_name="default_mat",
-        tex_attrib={
-            "type": "cube",
-            "builtin": "flat",
-            "width": 100,
-            "height": 100,
-            "rgb1": np.ones(3),
-            "rgb2": np.ones(3),
-        },
+        tex_attrib=DEFAULT_MATERIAL_TEXTURE,
     )
     ours = default_material()
     assert list(ours.tex_attrib.items()) == list(theirs.tex_attrib.items())

@@ -19,6 +19,7 @@ from robosuite.models import assets_root as RS_ASSETS
 from mjcf_model import MjcfLookupError
 from tests.support.compat_utils import (
     CASES,
+    DEFAULT_MATERIAL_TEXTURE,
     at,
     comparable,
     differential,
@@ -68,16 +69,7 @@ def _material(module: Any, *args: Any, **kwargs: Any) -> tuple[Any, Any]:
         ),
         (
             (None, "default_tex", "default_mat"),
-            {
-                "tex_attrib": {
-                    "type": "cube",
-                    "builtin": "flat",
-                    "width": 100,
-                    "height": 100,
-                    "rgb1": np.ones(3),
-                    "rgb2": np.ones(3),
-                }
-            },
+            {"tex_attrib": DEFAULT_MATERIAL_TEXTURE},
             {
                 "type": "cube",
                 "builtin": "flat",
