@@ -74,8 +74,18 @@ def _working(files: Sequence[Path], work: Callable[[Path], object]) -> list[Path
     return fine
 
 
-def corpus_cases(files: Sequence[Path]) -> list[Case]:
-    """The corpus cases, on the files every available contender can read."""
+def _everyone(_name: str) -> bool:
+    return True
+
+
+def corpus_cases(
+    files: Sequence[Path], peer_wanted: Callable[[str], bool] = _everyone
+) -> list[Case]:
+    """The corpus cases, on the files every available contender can read.
+
+    ``peer_wanted`` tells which of the slow peers (dm_control, MjSpec) to set up at all:
+    finding the files they read costs as much as measuring them.
+    """
     from mjcf_model import prefixed, scaled
     from serializers import dumps, load
 
@@ -89,6 +99,7 @@ def corpus_cases(files: Sequence[Path]) -> list[Case]:
     except ImportError:
         pass
     peers["MjSpec"] = _mjspec
+    peers = {name: work for name, work in peers.items() if peer_wanted(f"{name} (load")}
     for work in peers.values():
         common = _working(common, work)
 

@@ -104,6 +104,58 @@ def test_tiny_run_writes_every_case_with_every_contender(tiny_results: str) -> N
     assert "failed:" not in text
 
 
+def test_only_measures_the_chosen_cases_and_peers(tmp_path: Path) -> None:
+    """``--only GROUP:WORD`` and ``--peers`` measure those cases and peers, and ours always."""
+    output = tmp_path / "only.md"
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "benchmarks",
+            "--tiny",
+            "--only",
+            "synthetic:dump",
+            "--peers",
+            "ElementTree",
+            "--output",
+            str(output),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=600,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr[-2000:]
+    rows = [
+        line.strip("|").split(" | ")[:3]
+        for line in output.read_text(encoding="utf-8").split("## All cases")[1].splitlines()
+        if line.startswith("| synthetic")
+    ]
+    cases = {case.strip() for case, _, _ in rows}
+    assert cases == {
+        f"synthetic {shape}: {case}"
+        for shape in ("deep", "wide")
+        for case in ("load + dump", "dump")
+    }
+    assert {contender.strip() for _, _, contender in rows} == {
+        OURS,
+        "ElementTree fromstring + tostring",
+    }
+
+
+def test_an_unknown_group_is_refused_with_the_groups_that_exist() -> None:
+    """``--only`` with a group that does not exist names the groups that do."""
+    done = subprocess.run(
+        [sys.executable, "-m", "benchmarks", "--only", "corpse"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert done.returncode == 2
+    assert "no benchmark group 'corpse'; the groups: corpus, synthetic" in done.stderr
+
+
 def test_every_target_finds_its_rows(tiny_results: str) -> None:
     """Each target line of the tiny run is measured: its case and contender names exist."""
     table = tiny_results.split("## Targets")[1].split("## Sizes")[0]
