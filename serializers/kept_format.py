@@ -256,6 +256,10 @@ def _start_tag(element: AnyElement, layout: Layout, cut: LayoutDetail) -> str:
     """The recorded start tag, with the attributes changed since edited in place."""
     if holds_what_was_read(element, layout, cut):
         return cut.start  # the fields stored and their values are the ones read
+    if cut.getter is not None:
+        spliced = _spliced_start(element, cut)
+        if spliced is not None:
+            return spliced
     values = recorded_values(cut, type(element), layout)
     items = attribute_items(element)
     names = cut.names
@@ -288,6 +292,74 @@ def _attribute_spans(start: str, position: int) -> Iterator[tuple[int, str, int,
         close = start.find(start[quote], quote + 1)
         yield position, name, quote + 1, close
         position = close + 1
+
+
+def _value_spans(cut: LayoutDetail) -> list[tuple[int, int, int]]:
+    """Where each attribute of the recorded start tag stands, worked out once.
+
+    For each: where the white space before it begins, and where its value begins and
+    ends (the closing quote's offset).
+    """
+    spans = cut.spans
+    if spans is None:
+        found = _attribute_spans(cut.start, 1 + len(cut.tag))
+        spans = cut.spans = [(begin, first, close) for begin, _, first, close in found]
+    return spans
+
+
+def _spliced_start(element: AnyElement, cut: LayoutDetail) -> str | None:
+    """The recorded start tag with only the attributes changed since reading spliced in.
+
+    For a typed element read with a field for each attribute (``cut.getter`` is set): each
+    value is compared with the one read (the same object, or an equal one), a changed one
+    replaces the text inside its quotes, a removed one goes with the white space before it,
+    and an attribute set since reading goes after the last one, in field order, as
+    :func:`_edited_start` writes them. ``None`` where :func:`_edited_start` must write the
+    tag: the attribute order or ``extra`` changed.
+    """
+    held = element.__dict__
+    names = cut.names
+    if held.get("attribute_order", ()) != names:
+        return None
+    stored = cut.stored
+    rank = type(element).__node_info__.rank
+    added = [key for key in held if key not in stored and key in rank]
+    if "extra" in held and "extra" not in stored:
+        return None
+    values = cut.values
+    assert values is not None
+    start = cut.start
+    spans = _value_spans(cut)
+    if len(spans) != len(names):
+        return None  # a start tag the scanner reads otherwise: the general edit decides
+    pieces: list[str] = []
+    position = 0
+    for index, field in enumerate(cut.fields):
+        value = held.get(field)
+        old = values[index]
+        if value is old or value == old:
+            continue
+        begin, first, close = spans[index]
+        if value is None:
+            pieces.append(start[position:begin])  # removed, with the white space before it
+        else:
+            text = format_value(value).translate(ATTRIBUTE_ESCAPES)
+            if start[close] == "'":
+                text = text.replace("'", "&apos;")
+            pieces += (start[position:first], text)
+            position = close
+            continue
+        position = close + 1
+    if added:
+        at = spans[-1][2] + 1 if spans else 1 + len(cut.tag)
+        pieces.append(start[position:at])
+        position = at
+        names_of = type(element).__node_info__.names
+        for key in sorted(added, key=rank.__getitem__):
+            text = format_value(held[key]).translate(ATTRIBUTE_ESCAPES)
+            pieces.append(f' {names_of[rank[key]]}="{text}"')
+    pieces.append(start[position:])
+    return "".join(pieces)
 
 
 def _edited_start(cut: LayoutDetail, items: list[tuple[str, Value]]) -> str:

@@ -300,7 +300,7 @@ def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout)
     if check is None:
         check = _FAST_CHECKS.remember(key, _fast_check(info, *key[1:]))
     if check is not None and None not in values:
-        detail.getter, detail.stored = check
+        detail.getter, detail.stored, detail.fields = check
     return values
 
 
@@ -423,8 +423,8 @@ def reread(
 
 def _fast_check(
     info: NodeInfo, names: tuple[str, ...], children: bool, text: bool
-) -> tuple[Callable[[Any], tuple[Any, ...]], frozenset[str]] | None:
-    """The getter of the fields of ``names``, and the fields an element read so stores.
+) -> tuple[Callable[[Any], tuple[Any, ...]], frozenset[str], tuple[str, ...]] | None:
+    """The getter of the fields of ``names``, the fields an element read so stores, and those.
 
     ``None`` when an attribute has no field (the element keeps it in ``extra``).
     """
@@ -436,14 +436,14 @@ def _fast_check(
         stored.add("children")
     if text:
         stored.add("text")
-    return tuple_getter(fields), frozenset(stored)
+    return tuple_getter(fields), frozenset(stored), fields
 
 
 #: Per class, attribute names and kind of content, what :func:`_fast_check` made.
 #: (Hostile text could make any number of attribute sets, hence the bound.)
 _FAST_CHECKS: BoundedCache[
     tuple[type, tuple[str, ...], bool, bool],
-    tuple[Callable[[Any], tuple[Any, ...]], frozenset[str]] | None,
+    tuple[Callable[[Any], tuple[Any, ...]], frozenset[str], tuple[str, ...]] | None,
 ] = BoundedCache(4096)
 
 

@@ -37,12 +37,21 @@ from numpy.typing import NDArray
 from mjcf_model.caching import BoundedCache
 from mjcf_model.errors import MjcfAssetError, MjcfSyntaxError
 from mjcf_model.files.provenance import file_references, file_stem
-from mjcf_model.nodes.asset import Bone, Skin
-from mjcf_model.nodes.base import AnyElement, Comment, Node, get_attribute, with_attributes
+from mjcf_model.nodes.asset import Asset, Bone, Skin
+from mjcf_model.nodes.base import (
+    AnyElement,
+    Comment,
+    Node,
+    attribute_items,
+    get_attribute,
+    with_attributes,
+)
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tree.traversal import SKIN_KEYS, map_elements
 from mjcf_model.values import format_float
+from serializers.dumping import dumps
+from serializers.loading import loads
 
 __all__ = [
     "inline_skin_files",
@@ -140,12 +149,29 @@ def _read_skin(path: str | os.PathLike[str]) -> Skin:
         raise MjcfSyntaxError(
             f"not a MuJoCo skin file: {left} bytes after the last bone", file=str(path)
         )
-    return Skin(
+    skin = Skin(
         vertex=_floats(vertex),
         texcoord=_floats(texcoord),
         face=_ints(face) or None,
         children=bones,
     )
+    return _with_own_text(skin)
+
+
+def _with_own_text(skin: Skin) -> Skin:
+    """``skin`` read back from its own text, so that it carries that text as a loaded element.
+
+    A skin file holds tens of thousands of numbers; written inline they are most of a
+    model's text. Formatted once here (a file is read once, see :data:`_READ`), they are
+    written from then on as the slices of this text that they are, like any loaded value
+    nobody changed: prefixing a model renames its bones' bodies, and writing it copies
+    every number's text instead of formatting it again.
+    """
+    text = dumps(Mujoco(children=[Asset(children=[skin])]), canonical=True)
+    (asset,) = loads(text).elements
+    (read,) = asset.elements
+    assert isinstance(read, Skin) and read == skin
+    return read
 
 
 def float32_as_written(values: Sequence[float]) -> NDArray[np.float32]:
@@ -185,7 +211,7 @@ def skin_file_bytes(skin: Skin) -> bytes | None:
     or counts that do not fit the format.
 
     Examples:
-        >>> from mjcf_model.nodes.asset import Bone, Skin
+        >>> from mjcf_model.nodes.asset import Asset, Bone, Skin
         >>> bone = Bone(body="torso", bindpos=[0, 0, 0], bindquat=[1, 0, 0, 0],
         ...             vertid=[0], vertweight=[1])
         >>> data = skin_file_bytes(Skin(vertex=[0.5, 0, 0], children=[bone]))
@@ -271,17 +297,13 @@ def inline_skin_files(node: _N, directory: str | os.PathLike[str] | None = None)
             raise MjcfAssetError(
                 f"cannot read skin file {str(reference.path)!r}: {error.strerror or error}"
             ) from None
-        name = get_attribute(element, "name") or file_stem(reference.text)
-        inline = with_attributes(
-            element,
-            {
-                "file": None,
-                "name": name,
-                "vertex": data.vertex,
-                "texcoord": data.texcoord,
-                "face": data.face,
-            },
-        )
-        return build_node(type(inline), {"children": (*inline.children, *data.children)}, inline)
+        own = dict(attribute_items(element))
+        own["name"] = get_attribute(element, "name") or file_stem(reference.text)
+        del own["file"]
+        # the skin read (which carries its numbers' text), with the element's own attributes
+        inline = with_attributes(data, own)
+        if not element.children:
+            return inline
+        return build_node(type(inline), {"children": (*element.children, *data.children)}, inline)
 
     return map_elements(visit, model)  # type: ignore[return-value]

@@ -432,10 +432,12 @@ class LayoutDetail:
     __slots__ = (
         "comments",
         "end",
+        "fields",
         "gaps",
         "getter",
         "names",
         "sources",
+        "spans",
         "start",
         "stored",
         "tag",
@@ -497,3 +499,9 @@ class LayoutDetail:
         #: that stores the same fields, with ``values`` for its attributes, is unchanged
         #: (the writer's fast check).
         self.stored: Set[str] = frozenset()
+        #: With ``getter``: the field of each of ``names``, in order.
+        self.fields: tuple[str, ...] = ()
+        #: Where each attribute stands in ``start``: where the white space before it begins,
+        #: the character after its opening quote, and its closing quote; in order. ``None``
+        #: until the writer first edits the start tag.
+        self.spans: list[tuple[int, int, int]] | None = None

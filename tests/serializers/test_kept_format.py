@@ -18,7 +18,14 @@ from hypothesis import strategies as st
 
 from mjcf_model import Body, Geom, Mujoco, Site, prefixed, scaled
 from mjcf_model.bridge.compare import compile_text_beside, model_differences, path_fields
-from mjcf_model.nodes.base import AnyElement, Node, build_node, get_attribute, with_attributes
+from mjcf_model.nodes.base import (
+    AnyElement,
+    Node,
+    attribute_items,
+    build_node,
+    get_attribute,
+    with_attributes,
+)
 from mjcf_model.strategies import models
 from mjcf_model.tree.traversal import map_tree, with_children
 from mjcf_model.values import Value
@@ -484,3 +491,114 @@ def test_stray_text_anywhere_around_inlined_includes(
     main = folder / "main.xml"
     main.write_text(f"<mujoco>{root}</mujoco>\n")
     _round_trip(main)
+
+
+# -- Editing a start tag: only what changed is spliced in, escaped for its quotes. ---------
+
+
+def _edited_elements(model: Node) -> list[AnyElement]:
+    """The elements of ``model`` that carry a layout, each once."""
+    from mjcf_model import walk
+
+    return [element for _, element in walk(model) if element.layout is not None]
+
+
+@pytest.mark.parametrize("path", compiling_corpus()[::3], ids=corpus_id)
+def test_splicing_changed_attributes_writes_the_general_edit(path: Path) -> None:
+    """The writer's fast splice gives, for every edited start tag, the general edit's text.
+
+    Prefixed (names change), scaled (values change, attributes are added) and with every
+    third attribute removed: each start tag the splice writes equals the one the general
+    edit (``_edited_start`` over every attribute) writes, and the splice handles most tags.
+    """
+    from mjcf_model.nodes.layout import detail
+    from serializers.kept_format import _edited_start, _spliced_start
+    from serializers.parsed_elements import recorded_values
+
+    model = load(path, inline_includes=True)
+
+    def thinned(element: AnyElement) -> AnyElement:
+        names = [name for name, _ in attribute_items(element)][::3]
+        return with_attributes(element, dict.fromkeys(names))
+
+    spliced = 0
+    for variant in (prefixed(model, "p_"), scaled(model, 1.5), map_tree(_thinning(thinned), model)):
+        for element in _edited_elements(variant):
+            layout = element.layout
+            assert layout is not None
+            cut = detail(layout)
+            recorded_values(cut, type(element), layout)
+            if cut.getter is None or element.tag != layout.tag:
+                continue
+            fast = _spliced_start(element, cut)
+            if fast is not None:
+                spliced += 1
+                assert fast == _edited_start(cut, attribute_items(element))
+    assert spliced > 0
+
+
+def _thinning(change: Callable[[AnyElement], AnyElement]) -> Callable[[Node], Node]:
+    def visit(node: Node) -> Node:
+        if isinstance(node, Mujoco) or not hasattr(node, "layout") or node.layout is None:
+            return node
+        return change(node)  # type: ignore[arg-type]
+
+    return visit
+
+
+def _single_quoted(text: str) -> str:
+    """Canonical text with every attribute value in single quotes (comments left alone)."""
+    pieces = re.split(r"(<!--.*?-->)", text, flags=re.DOTALL)
+    for index in range(0, len(pieces), 2):
+        pieces[index] = re.sub(
+            r'="([^"]*)"', lambda m: "='" + m.group(1).replace("'", "&apos;") + "'", pieces[index]
+        )
+    return "".join(pieces)
+
+
+#: Text with every character XML escapes in an attribute, and plain letters between.
+_MARKUP_TEXT = st.text(alphabet="&<>\"' ab", min_size=1, max_size=12).filter(
+    lambda text: text.strip() == text
+)
+
+
+@given(models(), st.booleans(), st.data())
+def test_attributes_edited_to_markup_characters_read_back(
+    model: Mujoco, single: bool, data: st.DataObject
+) -> None:
+    """Names and unknown attributes set to text with ``& < > " '`` are written escaped.
+
+    The model is loaded from its text (in double or single quotes, so that its start tags
+    are edited in place), a few of its elements are renamed and given an unknown attribute
+    holding such text, and the written text reads back to the edited model.
+    """
+    text = dumps(model)
+    loaded = loads(_single_quoted(text) if single else text)
+    assert loaded == model
+    named = [
+        (path, element)
+        for path, element in walk_paths(loaded)
+        if isinstance(get_attribute(element, "name"), str)
+    ]
+    chosen = data.draw(st.lists(st.sampled_from(named), min_size=1, max_size=4, unique_by=id))
+    edits: dict[tuple[int, ...], dict[str, Value | None]] = {}
+    for index, (path, _) in enumerate(chosen):
+        renamed, noted = data.draw(st.sampled_from([(True, False), (False, True), (True, True)]))
+        edits[path] = {}
+        if renamed:  # a typed field: the splice of changed values writes it
+            edits[path]["name"] = data.draw(_MARKUP_TEXT) + str(index)
+        if noted:  # an attribute without a field: the general edit writes it
+            edits[path]["note"] = data.draw(_MARKUP_TEXT)
+    from mjcf_model.tree.paths import edited_at
+
+    edited = edited_at(loaded, edits)
+    written = dumps(edited)
+    assert loads(written) == edited
+    assert ET.fromstring(written) is not None  # well-formed for any XML reader too
+
+
+def walk_paths(model: Node) -> list[tuple[tuple[int, ...], AnyElement]]:
+    """Every element of ``model`` with its path, the root left out."""
+    from mjcf_model import walk
+
+    return [(path, element) for path, element in walk(model) if path]
