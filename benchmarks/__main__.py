@@ -81,7 +81,17 @@ _TINY_CORPUS = 12
 
 #: The groups of cases, in the order a whole run measures them (``sizes`` is the table of
 #: sizes, not timed cases).
-GROUPS = ("corpus", "synthetic", "objects", "imports", "compile", "variants", "sweep", "sizes")
+GROUPS = (
+    "corpus",
+    "synthetic",
+    "scene",
+    "objects",
+    "imports",
+    "compile",
+    "variants",
+    "sweep",
+    "sizes",
+)
 
 
 @dataclass(frozen=True)
@@ -157,6 +167,10 @@ def _group_cases(group: str, tiny: bool, selection: Selection) -> list[Case]:
         from benchmarks.cases_synthetic import synthetic_cases
 
         return synthetic_cases(50 if tiny else 5000)
+    if group == "scene":
+        from benchmarks.cases_scene import SCENE_BODIES, scene_cases
+
+        return scene_cases(50 if tiny else SCENE_BODIES)
     if group == "objects":
         from benchmarks.cases_objects import object_cases
 

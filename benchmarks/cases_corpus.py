@@ -141,6 +141,14 @@ def corpus_cases(
             inputs,
         ),
         Case(
+            "corpus: load",
+            [
+                Contender(OURS, _each(common, load)),
+                Contender("ElementTree parse", _each(common, ET.parse)),
+            ],
+            inputs,
+        ),
+        Case(
             "corpus: load + dump",
             [
                 Contender(OURS, _each(common, lambda p: dumps(load(p)))),

@@ -31,6 +31,7 @@ from mjcf_model.nodes.base import (
     TypedElement,
     get_attribute,
 )
+from mjcf_model.tree.indexes import index_of
 from mjcf_model.tree.traversal import walk
 from mjcf_model.values import Value, format_value, plain_value
 
@@ -122,14 +123,49 @@ def _tag_matches(element: AnyElement, tag: str | Collection[str]) -> bool:
     return element.tag in tag
 
 
+def _below(node: Node) -> Iterator[AnyElement]:
+    """Every element below ``node``, in document order (a walk that can stop early)."""
+    if not isinstance(node, Element):
+        return
+    stack = [child for child in reversed(node.children) if isinstance(child, Element)]
+    while stack:
+        element = stack.pop()
+        yield element
+        if element.children:
+            stack.extend([c for c in reversed(element.children) if isinstance(c, Element)])
+
+
+def _candidates(node: Node, tag: str | Collection[str], name: object) -> Iterator[AnyElement]:
+    """The elements below ``node`` that may match: from its index when it has one.
+
+    ``name``: the ``name`` text looked for, or ``None`` when the lookup is not by name.
+    """
+    index = index_of(node)
+    if index is None:
+        yield from (e for e in _below(node) if _tag_matches(e, tag))
+    elif not isinstance(tag, str):
+        yield from (e for e in index.order if e.tag in tag)
+    elif isinstance(name, str):
+        found = index.named(tag, name)
+        if found is not None:
+            yield found  # the first of that name; later ones follow in document order
+            yield from (e for e in index.tagged(tag) if e is not found)
+    else:
+        yield from index.tagged(tag)
+
+
 def _iter_matches(
     node: Node, tag: str | Collection[str], attributes: dict[str, object]
 ) -> Iterator[AnyElement]:
     wanted = [(_KEYWORD_ATTRIBUTES.get(k, k), v) for k, v in attributes.items()]
-    for _path, element in walk(node):
-        if _tag_matches(element, tag) and all(
-            _matches(get_attribute(element, name), expected) for name, expected in wanted
-        ):
+
+    def matches(element: AnyElement) -> bool:
+        return all(_matches(get_attribute(element, name), expected) for name, expected in wanted)
+
+    if isinstance(node, Element) and _tag_matches(node, tag) and matches(node):
+        yield node
+    for element in _candidates(node, tag, attributes.get("name")):
+        if matches(element):
             yield element
 
 

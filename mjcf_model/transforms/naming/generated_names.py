@@ -55,6 +55,7 @@ from mjcf_model.tree.traversal import keyed_walk
 
 __all__ = [
     "DECLARING_KEYS",
+    "MAIN_CLASS",
     "DEFAULT_MODEL_NAME",
     "SAME_MODEL_ATTACH",
     "GeneratedNames",
@@ -87,8 +88,8 @@ _NAMED_BY_FILE = frozenset(
 #: The schema keys of elements that declare a name (the others need no look).
 DECLARING_KEYS = frozenset(key for key, spec in SCHEMA.items() if spec.declares)
 
-#: The top-level default class: MuJoCo does not allow renaming it.
-_MAIN_CLASS = ("main", "class")
+#: The top-level default class, as (name, namespace): MuJoCo does not allow renaming it.
+MAIN_CLASS = ("main", "class")
 
 #: The attributes of an ``<attach>`` without ``model``: they name this model's body or frame.
 SAME_MODEL_ATTACH = attrs.evolve(
@@ -165,7 +166,7 @@ def declarations(
         return
     for attribute, namespace in SCHEMA[key].declares.items():
         name = get_attribute(element, attribute)
-        if isinstance(name, str) and name and (name, namespace) != _MAIN_CLASS:
+        if isinstance(name, str) and name and (name, namespace) != MAIN_CLASS:
             yield attribute, namespace, name
         elif name is None and key in _NAMED_BY_FILE:
             file = get_attribute(element, "file")

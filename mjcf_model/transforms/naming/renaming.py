@@ -45,6 +45,7 @@ from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import NAMESPACES, SCHEMA, ElementSpec, reference_namespace
 from mjcf_model.transforms.naming.generated_names import (
     DECLARING_KEYS,
+    MAIN_CLASS,
     SAME_MODEL_ATTACH,
     GeneratedNames,
     declarations,
@@ -145,13 +146,16 @@ def prefix_map(
 class _Plan:
     """What renaming reads on the elements of one schema key, worked out once per key."""
 
-    __slots__ = ("declares", "names", "references", "spec")
+    __slots__ = ("declared", "declares", "names", "namespaces", "references", "spec")
 
     def __init__(self, spec: ElementSpec) -> None:
         #: The table's entry.
         self.spec = spec
         #: Whether the element declares a name.
         self.declares = bool(spec.declares)
+        #: The attributes that declare names, read at once, and the namespace of each.
+        self.declared = tuple(spec.declares)
+        self.namespaces = tuple(spec.declares.values())
         #: The reference attributes, read at once.
         self.names = tuple(spec.references)
         #: Per reference: its namespace (``None`` when an ``objtype``-style attribute
@@ -188,10 +192,19 @@ def _renamed_attributes(
         plan = _SAME_MODEL_PLAN
     changes: dict[str, Value | None] = {}
     if plan.declares:
-        for attribute, namespace, name in declarations(element, key, base_dir=base_dir):
-            new = rename(namespace, name)
-            if new != name:
-                changes[attribute] = new
+        names = attribute_values(element, plan.declared)
+        if all(type(name) is str and name for name in names):
+            # every declaring attribute written: the names are these, as ``declarations``
+            # reads them (but for ``<default class="main">``, which declares none)
+            for attribute, namespace, name in zip(plan.declared, plan.namespaces, names):  # noqa: B905
+                new = rename(namespace, name)  # type: ignore[arg-type]
+                if new != name and (name, namespace) != MAIN_CLASS:
+                    changes[attribute] = new
+        else:  # an element named after its file, or not named: the general rule
+            for attribute, namespace, name in declarations(element, key, base_dir=base_dir):
+                new = rename(namespace, name)
+                if new != name:
+                    changes[attribute] = new
     if not plan.names:
         return changes
     for attribute, value, (target, selector, listed) in zip(

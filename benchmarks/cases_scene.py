@@ -1,0 +1,86 @@
+"""Cases on a generated scene of 20,000 bodies: what a new user's big file costs.
+
+Each body holds a joint, a capsule and a site (``synthetic_xml``, all in the world):
+loading it, finding one geom by name (the first query of a tree, and asked again),
+and prefixing and writing it, each beside ElementTree doing the same.
+"""
+
+from __future__ import annotations
+
+import copy
+import xml.etree.ElementTree as ET
+
+from benchmarks.etree_path import MISSING_ROBOSUITE, robosuite_utils
+from benchmarks.harness import OURS, Case, Contender
+from benchmarks.inputs import synthetic_xml
+
+__all__ = ["SCENE_BODIES", "scene_cases"]
+
+#: The bodies of the scene a whole run measures.
+SCENE_BODIES = 20_000
+
+
+def scene_cases(bodies: int) -> list[Case]:
+    """Load, find by name (first and repeated query), prefix + write a ``bodies``-body scene."""
+    from mjcf_model import find, prefixed
+    from mjcf_model.tree import indexes
+    from serializers import dumps, loads
+
+    utils = robosuite_utils()
+    text = synthetic_xml(bodies, "wide")
+    model, twin = loads(text), loads(text)
+    tree = ET.fromstring(text)
+    last = f"g{bodies - 1}"
+    path = f".//geom[@name='{last}']"
+    inputs = f"{bodies:,} bodies (a joint, a capsule, a site each)"
+
+    def first_query() -> object:
+        indexes._INDEXES.clear()  # as for a tree nobody queried yet
+        return find(model, "geom", name=last)
+
+    for _ in range(2):  # the second query builds the twin's index
+        find(twin, "geom", name=last)
+
+    def robosuite_path() -> str:
+        copied = copy.deepcopy(tree)
+        utils.add_prefix(copied, "p_")  # type: ignore[union-attr]
+        return ET.tostring(copied, encoding="unicode")
+
+    return [
+        Case(
+            "scene: load",
+            [
+                Contender(OURS, lambda: loads(text)),
+                Contender("ElementTree fromstring", lambda: ET.fromstring(text)),
+            ],
+            inputs,
+        ),
+        Case(
+            "scene: find a geom by name, first query of a tree",
+            [
+                Contender(OURS, first_query, note="find(model, 'geom', name=...), the last geom"),
+                Contender("ElementTree find", lambda: tree.find(path), note=path),
+            ],
+            inputs,
+        ),
+        Case(
+            "scene: find a geom by name, asked again",
+            [
+                Contender(OURS, lambda: find(twin, "geom", name=last), note="from the index"),
+                Contender("ElementTree find", lambda: tree.find(path), note=path),
+            ],
+            inputs,
+        ),
+        Case(
+            "scene: prefix + write",
+            [
+                Contender(OURS, lambda: dumps(prefixed(model, "p_"))),
+                Contender(
+                    "robosuite (deepcopy + add_prefix + tostring)",
+                    robosuite_path if utils else None,
+                    MISSING_ROBOSUITE,
+                ),
+            ],
+            inputs,
+        ),
+    ]
