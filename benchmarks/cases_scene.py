@@ -23,8 +23,12 @@ SCENE_BODIES = 20_000
 def scene_cases(bodies: int) -> list[Case]:
     """Load, find by name (first and repeated query), prefix + write a ``bodies``-body scene."""
     from mjcf_model import find, prefixed
-    from mjcf_model.tree import indexes
     from serializers import dumps, loads
+
+    try:
+        from mjcf_model.tree.indexes import _INDEXES as indexed
+    except ImportError:  # a library before the index (measuring a change against it)
+        indexed = {}
 
     utils = robosuite_utils()
     text = synthetic_xml(bodies, "wide")
@@ -35,7 +39,7 @@ def scene_cases(bodies: int) -> list[Case]:
     inputs = f"{bodies:,} bodies (a joint, a capsule, a site each)"
 
     def first_query() -> object:
-        indexes._INDEXES.clear()  # as for a tree nobody queried yet
+        indexed.clear()  # as for a tree nobody queried yet
         return find(model, "geom", name=last)
 
     for _ in range(2):  # the second query builds the twin's index

@@ -172,7 +172,7 @@ _set_dict = object.__setattr__
 
 def read_typed(
     cls: type[TypedElement],
-    attributes: list[str],
+    attributes: Sequence[str],
     children: tuple[Node, ...],
     layout: Layout,
     memo: ReadMemo,

@@ -224,7 +224,7 @@ class Reader:
                 item.begin,
                 stop,
                 after,
-                item.attributes,
+                tuple(item.attributes),  # a tuple of strings: the collector stops tracking it
                 children,
                 text,
                 item.comments,

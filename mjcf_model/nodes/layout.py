@@ -265,9 +265,10 @@ class Layout(NamedTuple):
     begin: int
     stop: int
     after: int
-    #: The attribute names and texts as read, alternating, in source order (the
-    #: reader's own list, never changed).
-    attributes: list[str]
+    #: The attribute names and texts as read, alternating, in source order (a tuple of
+    #: strings, which the garbage collector stops tracking: a big model's collections
+    #: then have a fifth fewer objects to scan).
+    attributes: Sequence[str]
     #: The children the element was read with: while the element still holds this
     #: very tuple, nothing below it changed.
     children: tuple[Any, ...]
