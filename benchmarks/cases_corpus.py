@@ -87,7 +87,7 @@ def corpus_cases(
     finding the files they read costs as much as measuring them.
     """
     from mjcf_model import prefixed, scaled
-    from serializers import dumps, load
+    from mjcf_model.serializers import dumps, load
 
     utils = robosuite_utils()
     common = list(files)

@@ -49,7 +49,7 @@ def _installed(module: str) -> bool:
 
 def import_cases() -> list[Case]:
     """One case: the import of mjcf-model beside robosuite's, dm_control's and the floor."""
-    contenders = [Contender(OURS, _fresh_process("import mjcf_model, serializers"), note=_NOTE)]
+    contenders = [Contender(OURS, _fresh_process("import mjcf_model"), note=_NOTE)]
     for name, module in (
         ("robosuite", "robosuite.utils.mjcf_utils"),
         ("dm_control", "dm_control.mjcf"),

@@ -80,7 +80,7 @@ def _construction_cases(ours: Any, theirs: Any) -> list[Case]:
 def _compose_cases(can_xml: str, theirs: Any, sizes: tuple[int, ...]) -> list[Case]:
     """Composing N cans into one world, written and (peak memory) unwritten."""
     from mjcf_model import attach_all
-    from serializers import dumps, loads
+    from mjcf_model.serializers import dumps, loads
 
     model = loads(can_xml)
     cases = []

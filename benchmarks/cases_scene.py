@@ -23,7 +23,7 @@ SCENE_BODIES = 20_000
 def scene_cases(bodies: int) -> list[Case]:
     """Load, find by name (first and repeated query), prefix + write a ``bodies``-body scene."""
     from mjcf_model import find, prefixed
-    from serializers import dumps, loads
+    from mjcf_model.serializers import dumps, loads
 
     try:
         from mjcf_model.tree.indexes import _INDEXES as indexed

@@ -16,7 +16,7 @@ def synthetic_cases(bodies: int) -> list[Case]:
     import lxml.etree
 
     from mjcf_model import prefixed, scaled
-    from serializers import dumps, from_dict, loads, to_dict
+    from mjcf_model.serializers import dumps, from_dict, loads, to_dict
 
     robosuite = robosuite_utils() is not None
     cases = []

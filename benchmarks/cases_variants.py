@@ -283,7 +283,7 @@ def _variant_case(path: Path, tiny: bool) -> Case:
 
     from mjcf_model import compiled, patched
     from mjcf_model.bridge.compare import model_differences, path_fields
-    from serializers import load
+    from mjcf_model.serializers import load
 
     # Includes read once, as MjSpec.from_file reads them: a model that keeps its <include>
     # elements has them inlined again by every compiled() call.
@@ -361,7 +361,7 @@ def scaled_differences(ours: Any, theirs: Any) -> list[str]:
 def _scaled_case(path: Path, tiny: bool) -> Case:
     count = TINY_VARIANTS if tiny else VARIANTS
     from mjcf_model import compiled, scaled
-    from serializers import load
+    from mjcf_model.serializers import load
 
     model = load(path, inline_includes=True)
     spec = spec_with_skins_inline(mujoco.MjSpec.from_file(str(path)))
@@ -435,7 +435,7 @@ def sweep_cases(tiny: bool = False) -> list[Case]:
     from concurrent.futures import ProcessPoolExecutor
 
     from benchmarks.inputs import package_dir
-    from serializers import load
+    from mjcf_model.serializers import load
 
     folder = package_dir("robosuite")
     if folder is None:
@@ -472,7 +472,7 @@ def compile_cases(files: list[Path], most: int | None = None) -> list[Case]:
     import mujoco
 
     from mjcf_model import compiled
-    from serializers import load
+    from mjcf_model.serializers import load
 
     cases: list[Case] = []
     for path in files:

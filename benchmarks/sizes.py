@@ -40,7 +40,7 @@ def _pickled(files: tuple[Path, ...], most: int | None) -> list[str]:
     """Robosuite's Panda: a geom, its biggest body, the model; every element of ``most`` files."""
     from benchmarks.inputs import package_dir
     from mjcf_model import Body, Geom, walk
-    from serializers import load
+    from mjcf_model.serializers import load
 
     lines = []
     robosuite = package_dir("robosuite")
@@ -92,7 +92,7 @@ def _traced(run: Callable[[], Any]) -> tuple[Any, float, int, int]:
 def _prefixed_memory(files: tuple[Path, ...], count: int) -> str:
     """The memory ``count`` loaded-then-prefixed corpus models keep (the corpus in turn)."""
     from mjcf_model import prefixed
-    from serializers import load
+    from mjcf_model.serializers import load
 
     def keep() -> list[Any]:
         paths = itertools.cycle(files)
@@ -116,7 +116,7 @@ def _numbers(megabytes: int) -> Iterator[str]:
 
 def _big_list(megabytes: int) -> list[str]:
     """A mesh with a ``megabytes`` MB ``vertex`` attribute: load time and peak memory growth."""
-    from serializers import load
+    from mjcf_model.serializers import load
 
     numbers = list(_numbers(megabytes))
     numbers = numbers[: len(numbers) - len(numbers) % 3]

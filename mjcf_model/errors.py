@@ -7,7 +7,7 @@ builtin exception that existing code already catches (``ValueError``,
 A message says *where* (file, line and element path, as far as they are
 known), *what was expected* and *what was found*:
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> try:
 ...     loads('<mujoco><worldbody><geom pos="0 1"/><bad></worldbody></mujoco>')
 ... except MjcfSyntaxError as error:

@@ -9,12 +9,12 @@
 True
 """
 
-from serializers.collector import collector_paused
-from serializers.dicts import from_dict, make_converter, to_dict
-from serializers.dumping import dump, dumps
-from serializers.etree import from_etree, to_etree
-from serializers.exporting import export
-from serializers.loading import load, loads
+from mjcf_model.serializers.collector import collector_paused
+from mjcf_model.serializers.dicts import from_dict, make_converter, to_dict
+from mjcf_model.serializers.dumping import dump, dumps
+from mjcf_model.serializers.etree import from_etree, to_etree
+from mjcf_model.serializers.exporting import export
+from mjcf_model.serializers.loading import load, loads
 
 __all__ = [
     "collector_paused",

@@ -2,10 +2,10 @@
 
 :func:`bundled` replaces every file path by a readable name (the file's own
 name, made unique), stores identical contents once, and bundles asset
-``<model>`` files with their own files. :func:`serializers.export` writes a
+``<model>`` files with their own files. :func:`mjcf_model.serializers.export` writes a
 bundle into a folder; :func:`mjcf_model.compiled` hands one to MuJoCo.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> model = loads('<mujoco><asset><texture name="t" file="a/sky.png"/></asset></mujoco>')
 >>> bundle = bundled(model, assets={"a/sky.png": b"PNG"})
 >>> bundle.model.asset.elements[0].file, bundle.files
@@ -23,8 +23,8 @@ import attrs
 from mjcf_model.errors import Advice, MjcfAssetError, MjcfIncludeCycleError
 from mjcf_model.files.provenance import FileReference, Folders, with_folders, with_paths
 from mjcf_model.nodes.root import Mujoco
-from serializers.dumping import dumps, inlined_includes
-from serializers.loading import loads
+from mjcf_model.serializers.dumping import dumps, inlined_includes
+from mjcf_model.serializers.loading import loads
 
 __all__ = ["Bundle", "bundled", "bundled_on_disk"]
 
@@ -105,7 +105,7 @@ def bundled(
         MjcfIncludeError: Asset ``<model>`` files refer to each other in a cycle.
 
     Examples:
-        >>> from serializers import dumps, loads
+        >>> from mjcf_model import dumps, loads
         >>> model = loads('<mujoco><compiler meshdir="m"/><asset><mesh file="x/a.obj"/>'
         ...               '</asset></mujoco>')
         >>> bundle = bundled(model, assets={"m/x/a.obj": b"v 0 0 0"}, folder="assets/")

@@ -1,7 +1,7 @@
 r"""The canonical form: escapes, attribute texts, and each element on its own line.
 
-Shared by :mod:`serializers.dumping` (``canonical=True``, and every model built
-in code) and :mod:`serializers.kept_format` (elements added to a loaded model).
+Shared by :mod:`mjcf_model.serializers.dumping` (``canonical=True``, and every model built
+in code) and :mod:`mjcf_model.serializers.kept_format` (elements added to a loaded model).
 
 >>> from mjcf_model import Geom
 >>> out: list[str] = []

@@ -1,4 +1,4 @@
-"""The per-class plans behind :func:`~serializers.to_dict` and :func:`~serializers.from_dict`.
+"""The per-class plans behind :func:`~mjcf_model.to_dict` and :func:`~mjcf_model.from_dict`.
 
 The converter's generated hooks read every field of a class (dozens) where a
 node stores a few. A :class:`Codec` reads, once per class, the converter's own

@@ -35,10 +35,16 @@ from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AttributeMap, Element, Node, TypedElement
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.declaring import declared_count
-from mjcf_model.nodes.layout import Layout
+from mjcf_model.serializers.dict_codec import (
+    UNPARSED,
+    Codec,
+    built_directly,
+    is_unparsed,
+    union_members,
+)
+from mjcf_model.serializers.layout import Layout
 from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import Floats, Unparsed
-from serializers.dict_codec import UNPARSED, Codec, built_directly, is_unparsed, union_members
 
 __all__ = ["NodeConverter", "default_converter", "from_dict", "make_converter", "to_dict"]
 

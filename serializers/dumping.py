@@ -1,10 +1,10 @@
 """Writing MJCF: nodes into text and files.
 
-The mirror of :mod:`serializers.loading`. A loaded model is written as it was
-read (:mod:`serializers.kept_format`): each element that carries a
-:class:`~mjcf_model.nodes.layout.Layout` is written as its source text, with only what
+The mirror of :mod:`mjcf_model.serializers.loading`. A loaded model is written as it was
+read (:mod:`mjcf_model.serializers.kept_format`): each element that carries a
+:class:`~mjcf_model.serializers.layout.Layout` is written as its source text, with only what
 changed edited in place, and an element added in code is written in the
-canonical form, indented to fit. The canonical form (:mod:`serializers.canonical`;
+canonical form, indented to fit. The canonical form (:mod:`mjcf_model.serializers.canonical`;
 ``canonical=True``, and every model built in code) writes each element on its
 own line, indented by ``indent``. Attribute values are formatted by
 :func:`mjcf_model.values.format_value`, the one place numbers become text, and
@@ -31,10 +31,10 @@ from mjcf_model.errors import Advice, MjcfAssetError, MjcfValueError
 from mjcf_model.files.provenance import Folders, file_references, relocated
 from mjcf_model.nodes.base import Element, Node
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.serializers.canonical import attribute_texts, write_canonical
+from mjcf_model.serializers.kept_format import write_kept
+from mjcf_model.serializers.loading import loads
 from mjcf_model.tree.traversal import keyed_walk
-from serializers.canonical import attribute_texts, write_canonical
-from serializers.kept_format import write_kept
-from serializers.loading import loads
 
 __all__ = [
     "attribute_texts",
@@ -68,7 +68,7 @@ def dumps(node: Node, *, indent: str = "  ", canonical: bool = False) -> str:
         >>> from mjcf_model import Site
         >>> dumps(Site(name="tip", pos=(0, 0, 0.1)))
         '<site name="tip" pos="0 0 0.1"/>\n'
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads("<mujoco>\n\n  <option timestep='2e-3'/>\n</mujoco>\n")
         >>> dumps(model)
         "<mujoco>\n\n  <option timestep='2e-3'/>\n</mujoco>\n"
@@ -103,7 +103,7 @@ def dump(
     Writing to a path is atomic: the text goes to a temporary file beside the
     target, which then replaces it. If anything fails, the old file is untouched
     and no partial file is left. Missing folders on the way to the path are
-    created, as :func:`serializers.export` creates them. The text is written as
+    created, as :func:`mjcf_model.serializers.export` creates them. The text is written as
     :func:`dumps` gives it (line breaks are not translated), encoded as UTF-8.
 
     Args:
@@ -241,11 +241,11 @@ def inlined_includes(model: Mujoco) -> Mujoco:
     """``model`` with kept ``<include>`` elements replaced by their files' elements.
 
     The files are found from the model's ``base_dir`` (a model built in code:
-    the working folder), as :func:`serializers.load` with ``inline_includes``
+    the working folder), as :func:`mjcf_model.serializers.load` with ``inline_includes``
     finds them.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads("<mujoco><worldbody/></mujoco>")
         >>> inlined_includes(model) is model
         True

@@ -1,7 +1,7 @@
 """ElementTree and nodes: :func:`from_etree` and its mirror :func:`to_etree`.
 
 Each element read goes through
-:func:`serializers.parsed_elements.build_element`, as in the text reader, so the two
+:func:`mjcf_model.serializers.parsed_elements.build_element`, as in the text reader, so the two
 readers cannot disagree.
 """
 
@@ -15,8 +15,8 @@ import attrs
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, Comment, Node
 from mjcf_model.schema.namespaces import child_key, children_context, guess_context
-from serializers.canonical import attribute_texts
-from serializers.parsed_elements import build_element, element_step, element_text
+from mjcf_model.serializers.canonical import attribute_texts
+from mjcf_model.serializers.parsed_elements import build_element, element_step, element_text
 
 __all__ = ["converted_children", "from_etree", "to_etree"]
 

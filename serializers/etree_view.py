@@ -21,9 +21,9 @@ import xml.etree.ElementTree as ET
 from collections.abc import Iterator
 
 from mjcf_model.nodes.base import AnyElement, Comment, Element, GenericElement, Node
+from mjcf_model.serializers.canonical import attribute_texts
+from mjcf_model.serializers.etree import converted_children, to_etree
 from mjcf_model.tree.traversal import Path
-from serializers.canonical import attribute_texts
-from serializers.etree import converted_children, to_etree
 
 __all__ = ["EtreeView", "element_index", "paired", "shallow_node", "sync_element", "write_back"]
 
@@ -227,7 +227,7 @@ def shallow_node(element: ET.Element) -> Node:
 def paired(element: ET.Element, node: Node) -> Iterator[tuple[ET.Element, Node]]:
     """``(element, node)`` for an element and each descendant, in document order.
 
-    ``node`` is what :func:`~serializers.etree.from_etree` made of ``element``.
+    ``node`` is what :func:`~mjcf_model.serializers.etree.from_etree` made of ``element``.
     """
     stack = [(element, node)]
     while stack:
@@ -242,7 +242,7 @@ def element_index(element: ET.Element, node: Node) -> dict[int, ET.Element]:
     """The element of each node of ``node`` (made from ``element``), by ``id`` of the node.
 
     Examples:
-        >>> from serializers.etree import from_etree
+        >>> from mjcf_model.serializers.etree import from_etree
         >>> element = ET.fromstring("<body><geom/></body>")
         >>> node = from_etree(element, typed=False)
         >>> element_index(element, node)[id(node.children[0])] is element[0]

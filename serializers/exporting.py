@@ -1,7 +1,7 @@
 """Exporting a model as a self-contained folder: the XML and every file it uses.
 
 >>> import pathlib, tempfile
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> model = loads('<mujoco model="cube"><worldbody><geom size="0.1"/></worldbody></mujoco>')
 >>> written = export(model, pathlib.Path(tempfile.mkdtemp()) / "cube")
 >>> written.name, sorted(p.name for p in written.parent.iterdir())
@@ -19,8 +19,8 @@ from pathlib import Path
 
 from mjcf_model.errors import MjcfAssetError, MjcfValueError
 from mjcf_model.nodes.root import Mujoco
-from serializers.bundling import bundled
-from serializers.dumping import dumps
+from mjcf_model.serializers.bundling import bundled
+from mjcf_model.serializers.dumping import dumps
 
 __all__ = ["ASSET_FOLDER", "export"]
 
@@ -66,7 +66,7 @@ def export(
 
     Examples:
         >>> import pathlib, tempfile
-        >>> from serializers import load, loads
+        >>> from mjcf_model import load, loads
         >>> model = loads('<mujoco><asset><texture name="t" type="2d" file="../img/wood.png"/>'
         ...               '</asset></mujoco>')
         >>> folder = pathlib.Path(tempfile.mkdtemp()) / "scene"

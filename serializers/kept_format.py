@@ -1,12 +1,12 @@
 r"""The format-keeping writer: a loaded model written as it was read.
 
-Each element that carries a :class:`~mjcf_model.nodes.layout.Layout` is written as its
+Each element that carries a :class:`~mjcf_model.serializers.layout.Layout` is written as its
 source text, with only what changed edited in place (a changed value inside its
 quotes, a removed attribute or child with the white space before it); an element
-added in code is written in the canonical form (:mod:`serializers.canonical`),
+added in code is written in the canonical form (:mod:`mjcf_model.serializers.canonical`),
 indented as its siblings.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> out: list[str] = []
 >>> write_kept(loads("<mujoco>\n\t<option timestep='2e-3'/>\n</mujoco>"), out)
 >>> "".join(out)
@@ -19,15 +19,22 @@ from collections.abc import Iterator, Sequence
 from typing import Any
 
 from mjcf_model.nodes.base import AnyElement, Comment, Node, attribute_items
-from mjcf_model.nodes.layout import Layout, LayoutDetail, detail, place_key, read_slots
-from mjcf_model.values import Value, format_value
-from serializers.canonical import (
+from mjcf_model.serializers.canonical import (
     ATTRIBUTE_ESCAPES,
     TEXT_ESCAPES,
     checked_element,
     write_canonical,
 )
-from serializers.parsed_elements import holds_what_was_read, recorded_values
+from mjcf_model.serializers.layout import (
+    Layout,
+    LayoutDetail,
+    detail,
+    layout_of,
+    place_key,
+    read_slots,
+)
+from mjcf_model.serializers.parsed_elements import holds_what_was_read, recorded_values
+from mjcf_model.values import Value, format_value
 
 __all__ = ["write_kept"]
 
@@ -96,7 +103,7 @@ def write_kept(root: AnyElement, out: list[str]) -> None:
 
     An explicit stack of pieces (text, or a node still to write), so any depth is written.
     """
-    layout = root.layout
+    layout = layout_of(root)
     assert layout is not None
     style = _Style(layout)
     children = root.children
@@ -120,7 +127,7 @@ def write_kept(root: AnyElement, out: list[str]) -> None:
             out.append(f"<!--{item.text}-->")
         else:
             element = checked_element(item)
-            kept = element.layout
+            kept = layout_of(element)
             if kept is not None and element.tag == kept.tag:
                 _open(element, kept, element.children, out, stack, style)
             else:

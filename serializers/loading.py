@@ -1,9 +1,9 @@
 """Reading MJCF: text and files into nodes.
 
 :func:`load` and :func:`loads` read the main document with the expat reader
-(:mod:`serializers.parsing`) and, with ``inline_includes``, every file it
-includes (:mod:`serializers.includes`). :func:`from_etree` lives in
-:mod:`serializers.etree` and is importable from here too.
+(:mod:`mjcf_model.serializers.parsing`) and, with ``inline_includes``, every file it
+includes (:mod:`mjcf_model.serializers.includes`). :func:`from_etree` lives in
+:mod:`mjcf_model.serializers.etree` and is importable from here too.
 
 >>> model = loads('<mujoco model="m"><worldbody><geom size="0.1"/></worldbody></mujoco>')
 >>> model.model, model.worldbody.geoms[0].size
@@ -25,9 +25,8 @@ from mjcf_model.files.provenance import with_included_paths
 from mjcf_model.nodes.base import AnyElement, Comment, Element
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.tree.traversal import with_children
-from serializers.etree import from_etree
-from serializers.includes import (
+from mjcf_model.serializers.etree import from_etree
+from mjcf_model.serializers.includes import (
     STRING_FILENAME,
     Document,
     Session,
@@ -36,7 +35,8 @@ from serializers.includes import (
     resolve_include,
     splice,
 )
-from serializers.parsing import Reader
+from mjcf_model.serializers.parsing import Reader
+from mjcf_model.tree.traversal import with_children
 
 __all__ = ["from_etree", "load", "loads"]
 
@@ -72,7 +72,7 @@ def _read(data: str | bytes, filename: str, session: Session) -> Mujoco:
     Included files are read one after another from an explicit stack, not by
     recursion, so an include chain as long as MuJoCo follows (it has no limit)
     is read too. The garbage collector is left alone: a caller who reads big models
-    while holding others can pause it (:func:`serializers.collector_paused`).
+    while holding others can pause it (:func:`mjcf_model.serializers.collector_paused`).
     """
     stack = [_parse(data, filename, session)]
     reading = {path: 0 for path in session.include_chain} if stack[0].includes else {}

@@ -1,6 +1,6 @@
 """An element the text reader has begun and not yet closed.
 
-:class:`OpenElement` holds what :class:`serializers.parsing.Reader` gathers
+:class:`OpenElement` holds what :class:`mjcf_model.serializers.parsing.Reader` gathers
 between an element's start tag and its end tag: its attributes, its children and
 where its start tag stands in the text.
 

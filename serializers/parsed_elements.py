@@ -1,6 +1,6 @@
 """Turning one parsed element (tag, attributes, children) into a node.
 
-Both readers, the text reader and :func:`serializers.from_etree`, hand every
+Both readers, the text reader and :func:`mjcf_model.serializers.from_etree`, hand every
 element to :func:`build_element`, so the two cannot disagree.
 
 >>> node = build_element("body/geom", "geom", [("name", "g"), ("size", "0.1")], [], None)
@@ -15,7 +15,6 @@ from typing import Any
 
 from mjcf_model.caching import BoundedCache
 from mjcf_model.errors import MjcfError, MjcfValueError
-from mjcf_model.nodes import layout as layouts
 from mjcf_model.nodes.base import (
     AnyElement,
     Element,
@@ -27,9 +26,9 @@ from mjcf_model.nodes.base import (
     field_table,
     get_attribute,
 )
-from mjcf_model.nodes.layout import Layout, LayoutDetail, detail
 from mjcf_model.nodes.node_info import NodeInfo, tuple_getter
 from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.serializers.layout import Layout, LayoutDetail, detail, layout_of
 from mjcf_model.values import Unparsed
 
 __all__ = [
@@ -202,7 +201,7 @@ def read_typed(
 
     Examples:
         >>> from mjcf_model import Geom
-        >>> from mjcf_model.nodes.layout import SourceText
+        >>> from mjcf_model.serializers.layout import SourceText
         >>> origin = SourceText(b'<geom size="1"/>')
         >>> layout = Layout(origin, "geom", 0, 16, 16, ["size", "1"], (), None)
         >>> read_typed(Geom, ["size", "1"], (), layout, {}, {}) == Geom(size=[1.0])
@@ -263,7 +262,7 @@ def recorded_values(detail: LayoutDetail, cls: type[AnyElement], layout: Layout)
 
     Examples:
         >>> from mjcf_model import Geom
-        >>> from mjcf_model.nodes.layout import SourceText, detail
+        >>> from mjcf_model.serializers.layout import SourceText, detail
         >>> text = b'<geom size="1" condim="x" colour="red"/>'
         >>> flat = ["size", "1", "condim", "x", "colour", "red"]
         >>> layout = Layout(SourceText(text), "geom", 0, len(text), len(text), flat, (), None)
@@ -312,7 +311,7 @@ def written_text(node: Node, name: str) -> str | None:
     :func:`~mjcf_model.nodes.base.attribute_text` formats it.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads('<mujoco><worldbody><geom group="01" size="0.10"/></worldbody></mujoco>')
         >>> (geom,) = model.worldbody.geoms
         >>> written_text(geom, "group"), written_text(geom, "size"), written_text(geom, "pos")
@@ -326,7 +325,7 @@ def written_text(node: Node, name: str) -> str | None:
     if text is None:
         return None
     assert isinstance(node, Element)
-    layout = node.layout
+    layout = layout_of(node)
     if layout is None:
         return text
     cut = detail(layout)
@@ -362,7 +361,7 @@ def reduced_from_text(element: AnyElement) -> tuple[Any, ...] | None:
     for an element with character data or an attribute without a field, or not read
     from text: pickled field by field.
     """
-    layout = element.layout
+    layout = layout_of(element)
     if (
         layout is None
         or not isinstance(element, TypedElement)
@@ -445,6 +444,3 @@ _FAST_CHECKS: BoundedCache[
     tuple[type, tuple[str, ...], bool, bool],
     tuple[Callable[[Any], tuple[Any, ...]], frozenset[str], tuple[str, ...]] | None,
 ] = BoundedCache(4096)
-
-
-layouts.REDUCE_FROM_TEXT = reduced_from_text  # the node layer pickles what was read through this

@@ -3,9 +3,9 @@
 :class:`Reader` drives expat directly and builds nodes as elements close, so it
 knows the line of every element for error messages, keeps comments, and never
 sees a DTD or an entity: both are refused. Text that MuJoCo's parser reads and
-expat refuses is repaired (:mod:`serializers.repairs`) and read again.
+expat refuses is repaired (:mod:`mjcf_model.serializers.repairs`) and read again.
 
->>> from serializers.includes import Session
+>>> from mjcf_model.serializers.includes import Session
 >>> top = Reader("<string>", Session(inline_includes=False, main_dir=None), None).parse(
 ...     "<!-- a --><mujoco/>"
 ... )
@@ -26,20 +26,20 @@ from mjcf_model.errors import (
     MjcfValueError,
 )
 from mjcf_model.nodes.base import AnyElement, Comment, Element, Node, TypedElement
-from mjcf_model.nodes.layout import DocumentText, Layout, SourceText
 from mjcf_model.nodes.root import Include
-from mjcf_model.values import Unparsed
-from serializers.includes import PendingInclude, Session
-from serializers.open_element import STEPS, OpenElement, step_of
-from serializers.parsed_elements import (
+from mjcf_model.serializers.includes import PendingInclude, Session
+from mjcf_model.serializers.layout import DocumentText, Layout, SourceText, layout_of
+from mjcf_model.serializers.open_element import STEPS, OpenElement, step_of
+from mjcf_model.serializers.parsed_elements import (
     Deferred,
     ReadMemo,
     build_element,
     element_step,
     element_text,
     read_typed,
+    reduced_from_text,
 )
-from serializers.repairs import (
+from mjcf_model.serializers.repairs import (
     NUMERIC_ATTRIBUTES,
     blank_text_before_root,
     character_hint,
@@ -47,7 +47,8 @@ from serializers.repairs import (
     escape_stray_markup,
     exact_attributes,
 )
-from serializers.scanning import BREAK, may_hold_text, start_tag_end
+from mjcf_model.serializers.scanning import BREAK, may_hold_text, start_tag_end
+from mjcf_model.values import Unparsed
 
 __all__ = ["Reader"]
 
@@ -95,7 +96,7 @@ class Reader:
         #: The element being closed, for :meth:`locate`.
         self.closing: OpenElement | None = None
         #: Each long attribute left to convert after parsing: its node, and where it
-        #: stands, with what :func:`~serializers.parsed_elements.read_typed` deferred.
+        #: stands, with what :func:`~mjcf_model.serializers.parsed_elements.read_typed` deferred.
         self.deferred: list[tuple[TypedElement, int, str, Deferred]] = []
         # MuJoCo reads the bytes as UTF-8 whatever the XML declaration says; so do we.
         self.parser = expat.ParserCreate(encoding="utf-8")
@@ -313,7 +314,7 @@ class Reader:
 
         The nodes are not yet handed out, so they get their values in place; a text
         the field cannot read is kept as :class:`~mjcf_model.values.Unparsed`, as
-        :func:`~serializers.parsed_elements.build_element` keeps it.
+        :func:`~mjcf_model.serializers.parsed_elements.build_element` keeps it.
         """
         deferred, self.deferred = self.deferred, []
         for node, line, path, (field, name, text, convert) in deferred:
@@ -354,7 +355,7 @@ class Reader:
             )
         try:
             self.raw = raw
-            self.origin = SourceText(raw, self.filename)
+            self.origin = SourceText(raw, self.filename, reducer=reduced_from_text)
             self.origin.values = self.known
             if not self.origin.raw:
                 self.ascii = self.origin.text
@@ -402,11 +403,12 @@ class Reader:
         """Give the root's layout the text around the root, up to byte ``stop``."""
         comments = [n for n in self.top if isinstance(n, Comment)]
         root = next((n for n in self.top if not isinstance(n, Comment)), None)
-        if not isinstance(root, Element) or root.layout is None:
+        layout = layout_of(root)
+        if not isinstance(root, Element) or layout is None:
             return
         count = self.top.index(root)
-        origin = root.layout.origin
-        origin.root_begin = root.layout.begin
+        origin = layout.origin
+        origin.root_begin = layout.begin
         origin.document = DocumentText(
             self.source(0, self.root_begin),
             self.source(self.root_end, stop),

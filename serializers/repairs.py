@@ -3,7 +3,7 @@ r"""Repairs of text MuJoCo's parser (tinyxml2) reads and expat refuses, so both 
 tinyxml2 is lenient: it reads text and declarations before the root and ignores
 markup after it, reads a stray ``&`` or ``<`` as itself, accepts ``--`` in a
 comment and no space between attributes, and keeps tabs and line breaks in
-attribute values. The text reader (:mod:`serializers.parsing`) parses with
+attribute values. The text reader (:mod:`mjcf_model.serializers.parsing`) parses with
 expat; when expat refuses the text, it reads it again as repaired here.
 
 >>> escape_stray_markup(b'<mujoco model="a & b"/>')

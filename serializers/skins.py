@@ -48,10 +48,10 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.serializers.dumping import dumps
+from mjcf_model.serializers.loading import loads
 from mjcf_model.tree.traversal import SKIN_KEYS, map_elements
 from mjcf_model.values import format_float
-from serializers.dumping import dumps
-from serializers.loading import loads
 
 __all__ = [
     "inline_skin_files",
@@ -264,7 +264,7 @@ def inline_skin_files(node: _N, directory: str | os.PathLike[str] | None = None)
     every model they rename or scale (a skin file names bodies, and holds lengths).
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> m = loads('<mujoco><worldbody/></mujoco>')
         >>> inline_skin_files(m, ".") is m
         True

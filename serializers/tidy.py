@@ -17,7 +17,7 @@ author chose, everything kept:
 Elements added in code, without a layout, are written as the canonical form writes
 them. The tidy form of a tidy text is that text (the formatter is idempotent).
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> text = '<mujoco><option timestep="2e-3"/>\n\n\n<worldbody/><!-- the world --></mujoco>'
 >>> print(tidy_text(loads(text)), end="")
 <mujoco>
@@ -34,10 +34,10 @@ from __future__ import annotations
 from typing import Any
 
 from mjcf_model.nodes.base import AnyElement, Comment, Node, attribute_items
-from mjcf_model.nodes.layout import Layout, detail, read_slots
+from mjcf_model.serializers.canonical import ATTRIBUTE_ESCAPES, TEXT_ESCAPES, checked_element
+from mjcf_model.serializers.layout import Layout, detail, layout_of, read_slots
+from mjcf_model.serializers.parsed_elements import recorded_values
 from mjcf_model.values import Unparsed, format_value
-from serializers.canonical import ATTRIBUTE_ESCAPES, TEXT_ESCAPES, checked_element
-from serializers.parsed_elements import recorded_values
 
 __all__ = ["DEFAULT_WIDTH", "tidy_text"]
 
@@ -70,7 +70,7 @@ def tidy_text(
     """
     writer = _Tidy(indent, width, normalize_numbers)
     element = checked_element(root)
-    layout = element.layout
+    layout = layout_of(element)
     document = layout.document() if layout is not None else None
     children = element.children
     before = after = ""
@@ -175,7 +175,7 @@ class _Tidy:
 
 def _read_texts(element: AnyElement) -> dict[str, tuple[Any, str]]:
     """Each attribute the element was read with: the value it was read as and its text."""
-    layout = element.layout
+    layout = layout_of(element)
     if layout is None or layout.tag != element.tag:
         return {}
     cut = detail(layout)
@@ -187,7 +187,7 @@ def _read_texts(element: AnyElement) -> dict[str, tuple[Any, str]]:
 
 def _gaps_before(element: AnyElement, children: tuple[Node, ...]) -> list[str]:
     """The white space read before each child (a line break for a child added since)."""
-    layout: Layout | None = element.layout
+    layout: Layout | None = layout_of(element)
     if layout is None or layout.tag != element.tag:
         return ["\n"] * len(children)
     cut = detail(layout)

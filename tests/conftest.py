@@ -104,7 +104,7 @@ def compiling_corpus() -> list[Path]:
 def loading_corpus() -> list[Path]:
     """The corpus files mjcf-model loads (the non-MJCF ones are left out)."""
     from mjcf_model.errors import MjcfError
-    from serializers import load
+    from mjcf_model.serializers import load
 
     loading = []
     for path in corpus_files():

@@ -11,8 +11,8 @@ The README's test command ends with this script. It
 3. copies ``tests/`` (with its sub-folders: ``support/`` and the test folders
    ``mjcf_model/`` and ``serializers/`` that mirror the packages) and ``benchmarks/``
    (which the tests run) into a folder of their own, so that the source folders are
-   not importable from where pytest runs, and checks that ``mjcf_model`` and
-   ``serializers`` import from the environment's site-packages;
+   not importable from where pytest runs, and checks that ``mjcf_model`` (with its
+   ``mjcf_model.serializers``) imports from the environment's site-packages;
 4. runs pytest there: the tests, and the doctests of the installed modules.
 
 It ends with one line ``total: N passed, N failed`` and exits non-zero when
@@ -45,7 +45,7 @@ WORK = SOURCE_TREE / "build" / "installed"
 #: The folders copied beside each other to form the suite (tests import both).
 SUITE_FOLDERS = ("tests", "benchmarks")
 #: The installed packages whose doctests run too.
-PACKAGES = ("mjcf_model", "serializers")
+PACKAGES = ("mjcf_model",)
 #: Hypothesis profiles by environment (``tests/conftest.py`` defines them); the others
 #: keep the caller's (``ci`` under ``CI=true``). The oldest runs every property at the
 #: ``compat`` profile's 25 examples: it checks that the library works on MuJoCo 3.9, the

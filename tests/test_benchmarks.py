@@ -26,7 +26,7 @@ from benchmarks.inputs import package_dir, synthetic_xml
 from benchmarks.targets import targets
 from mjcf_model import compiled, scaled
 from mjcf_model.bridge.compare import compile_text_beside, model_differences, path_fields
-from serializers import load, loads
+from mjcf_model.serializers import load, loads
 from tests.conftest import compiling_corpus, corpus_id
 
 #: Corpus files with ``<include>`` elements (robosuite's ElementTree path must inline them).

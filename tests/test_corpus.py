@@ -8,8 +8,8 @@ import pytest
 
 from mjcf_model import Comment, Include, Node
 from mjcf_model.nodes.base import Element
+from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.tools.check import check_file
-from serializers import dumps, load, loads
 from tests.conftest import compiling_corpus, corpus_files, corpus_id
 
 CORPUS = compiling_corpus()

@@ -46,8 +46,17 @@ from mjcf_model import (
     Tendon,
     Worldbody,
 )
+from mjcf_model.serializers import (
+    dump,
+    dumps,
+    from_dict,
+    from_etree,
+    load,
+    loads,
+    to_dict,
+    to_etree,
+)
 from mjcf_model.tools.check import check_file
-from serializers import dump, dumps, from_dict, from_etree, load, loads, to_dict, to_etree
 from tests.conftest import FIXTURES
 from tests.support.fixture_checks import comments, compile_round_trip, names, section, walk
 

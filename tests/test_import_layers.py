@@ -1,7 +1,7 @@
 """The import contract: every import points down the layer table of ARCHITECTURE.md.
 
 The table is read from ARCHITECTURE.md itself, so the document and the contract cannot
-drift apart. Every ``import`` in ``mjcf_model`` and ``serializers`` counts: at module
+drift apart. Every ``import`` in ``mjcf_model`` (its serializers too) counts: at module
 level, inside functions and under ``TYPE_CHECKING``. The modules read are the ones Python
 imports (the installed wheel, when ``tests/run_installed.py`` runs the suite).
 """
@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ast
 import importlib.util
+import os
 import subprocess
 import sys
 from collections.abc import Iterator
@@ -18,22 +19,30 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-PACKAGES = ("mjcf_model", "serializers")
+PACKAGES = ("mjcf_model",)
 
 
 def _modules() -> dict[str, Path]:
-    """Every module of the two packages by dotted name (a package by its own name)."""
+    """Every module of the package by dotted name (a package by its own name).
+
+    The folders are walked through links: in a checkout, ``mjcf_model/serializers`` is a
+    link to the folder ``serializers/``.
+    """
     found = {}
     for package in PACKAGES:
         spec = importlib.util.find_spec(package)
         assert spec is not None and spec.origin is not None, f"{package} is not importable"
         top = Path(spec.origin).parent.parent
-        for path in sorted((top / package).rglob("*.py")):
-            parts = list(path.relative_to(top).with_suffix("").parts)
-            if parts[-1] == "__init__":
-                parts.pop()
-            found[".".join(parts)] = path
-    return found
+        for folder, _, files in os.walk(top / package, followlinks=True):
+            for file in sorted(files):
+                if not file.endswith(".py"):
+                    continue
+                path = Path(folder) / file
+                parts = list(path.relative_to(top).with_suffix("").parts)
+                if parts[-1] == "__init__":
+                    parts.pop()
+                found[".".join(parts)] = path
+    return dict(sorted(found.items()))
 
 
 MODULES = _modules()
@@ -195,7 +204,7 @@ def package_of(module: str, depth: int) -> str:
 
 @pytest.mark.parametrize("depth", [2, 3], ids=["packages", "sub-packages"])
 def test_no_packages_import_each_other(depth: int) -> None:
-    """``mjcf_model.transforms`` and ``serializers``; ``transforms.naming`` and ``.scaling``.
+    """``mjcf_model.transforms`` and ``.serializers``; ``transforms.naming`` and ``.scaling``.
 
     A package's own modules importing each other (``nodes/sensor`` from ``nodes/base``,
     ``nodes/__init__`` gathering ``nodes/sensor``) is one package at that depth.
@@ -225,10 +234,83 @@ def test_cycles_finds_every_loop(graph: dict[str, set[str]], expected: list[list
 
 def test_an_import_inside_a_function_counts(tmp_path: Path) -> None:
     """The contract reads every import statement, not only those at module level."""
-    tree = ast.parse("def f():\n    from serializers.loading import loads\n")
+    tree = ast.parse("def f():\n    from mjcf_model.serializers.loading import loads\n")
     statement = tree.body[0].body[0]  # type: ignore[attr-defined]
-    assert list(_targets("mjcf_model.nodes.base", statement)) == ["serializers.loading"]
-    assert layer_of("serializers.loading") > layer_of("mjcf_model.nodes.base")
+    assert list(_targets("mjcf_model.nodes.base", statement)) == ["mjcf_model.serializers.loading"]
+    assert layer_of("mjcf_model.serializers.loading") > layer_of("mjcf_model.nodes.base")
+
+
+#: What a function may import where it runs, and why: MuJoCo is imported on first use, so
+#: that reading and writing never load it (a third of a second) and the command line can
+#: choose MuJoCo's OpenGL backend before MuJoCo is imported (it reads ``MUJOCO_GL`` then).
+LAZY_IMPORTS = frozenset({"mujoco"})
+
+
+def _imports_inside_functions() -> list[str]:
+    """Every import statement inside a function, as ``module:line imported-name``."""
+    found = []
+    for module, path in MODULES.items():
+        tree = ast.parse(path.read_text(encoding="utf-8"), str(path))
+        for function in ast.walk(tree):
+            if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                continue
+            for node in ast.walk(function):
+                if isinstance(node, ast.Import):
+                    found += [f"{module}:{node.lineno} {alias.name}" for alias in node.names]
+                elif isinstance(node, ast.ImportFrom):
+                    found.append(f"{module}:{node.lineno} {'.' * node.level}{node.module or ''}")
+    return found
+
+
+def test_functions_import_only_what_is_imported_on_first_use() -> None:
+    """Imports stand at the top of their module, but MuJoCo's (see :data:`LAZY_IMPORTS`).
+
+    An import inside a function hides a module's dependencies and, for our own modules,
+    usually dodges an import cycle the layers should not have.
+    """
+    hidden = [
+        found
+        for found in _imports_inside_functions()
+        if found.split(" ", 1)[1].split(".")[0] not in LAZY_IMPORTS
+    ]
+    assert hidden == []
+
+
+def test_importing_a_low_layer_loads_only_that_layer() -> None:
+    """``import mjcf_model.errors`` loads the facade and the errors, nothing more.
+
+    The facade imports its names when first asked for them (``mjcf_model.load``).
+    """
+    code = (
+        "import sys, mjcf_model.errors; "
+        "print(sorted(m for m in sys.modules if m.startswith('mjcf_model')))"
+    )
+    loaded = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    ).stdout
+    assert loaded.strip() == "['mjcf_model', 'mjcf_model.errors']"
+
+
+def test_the_facade_gives_every_public_name() -> None:
+    """Every name of ``mjcf_model.__all__`` is there, from the module that defines it."""
+    import mjcf_model
+    from mjcf_model.serializers import loading
+
+    assert {"load", "loads", "dump", "dumps", "to_dict", "from_dict", "Geom"} <= set(
+        mjcf_model.__all__
+    )
+    for name in mjcf_model.__all__:
+        assert getattr(mjcf_model, name) is not None, name
+    assert mjcf_model.load is loading.load
+    assert set(mjcf_model.__all__) <= set(dir(mjcf_model))
+
+
+def test_an_unknown_name_of_the_facade_is_an_attribute_error() -> None:
+    """``mjcf_model.nothing`` raises ``AttributeError``, as any module does."""
+    import mjcf_model
+
+    with pytest.raises(AttributeError, match="no attribute 'nothing'"):
+        _ = mjcf_model.nothing  # type: ignore[attr-defined]
 
 
 def test_importing_mjcf_model_loads_no_robosuite_layer() -> None:

@@ -14,7 +14,7 @@ from mjcf_model import (
     prefixed,
     scaled,
 )
-from serializers import dumps, from_dict, from_etree, loads, to_dict, to_etree
+from mjcf_model.serializers import dumps, from_dict, from_etree, loads, to_dict, to_etree
 from tests.support.oracles import _compiled, _round_trips_like_mujoco
 
 # -- Hostile and broken input: no hang, no stray exception, and MuJoCo decides what loads. -----

@@ -29,8 +29,9 @@ import pytest
 import mjcf_model
 from tests.conftest import compiling_corpus, corpus_files
 
-#: The folders of the checkout that hold the packages.
-PACKAGE_FOLDERS = ("mjcf_model", "serializers")
+#: The folders of the checkout that hold the package, and where each goes in the wheel
+#: (``serializers/`` installs as ``mjcf_model.serializers``).
+PACKAGE_FOLDERS = {"mjcf_model": "mjcf_model", "serializers": "mjcf_model/serializers"}
 
 
 @functools.cache
@@ -80,14 +81,18 @@ def test_wheel_holds_every_package_file_and_nothing_else() -> None:
     """Every module and data file under the package folders is in the wheel, and no more."""
     tree = source_tree()
     sources = {
-        path.relative_to(tree).as_posix()
-        for folder in PACKAGE_FOLDERS
-        for path in (tree / folder).rglob("*")
+        f"{installed}/{path.relative_to(tree / folder).as_posix()}"
+        for folder, installed in PACKAGE_FOLDERS.items()
+        for path in (tree / folder).rglob("*")  # links are not followed: serializers/ once
         if path.is_file() and "__pycache__" not in path.parts
     }
     packaged = {name for name in _wheel_names() if ".dist-info/" not in name}
     assert {"mjcf_model/nodes/body.py", "mjcf_model/compat/objects/__init__.py"} <= sources
-    assert {"mjcf_model/py.typed", "serializers/py.typed", "mjcf_model/examples/arm.xml"} <= sources
+    assert {
+        "mjcf_model/py.typed",
+        "mjcf_model/serializers/py.typed",
+        "mjcf_model/examples/arm.xml",
+    } <= sources
     assert "mjcf_model/examples/workcell/meshes/wedge.obj" in packaged  # the examples' mesh
     assert sorted(sources - packaged) == []
     assert sorted(packaged - sources) == []
@@ -177,9 +182,8 @@ def test_mujoco_is_a_tested_release() -> None:
 @pytest.mark.parametrize(
     "statement",
     [
-        "import serializers",
-        "from serializers import loads, to_dict",
-        "import serializers.dicts",
+        "from mjcf_model.serializers import loads, to_dict",
+        "import mjcf_model.serializers.dicts",
         "import mjcf_model",
         "import mjcf_model.compat.objects",
         "from mjcf_model.compat import mjcf_utils",

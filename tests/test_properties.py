@@ -12,8 +12,8 @@ from hypothesis import given
 from mjcf_model import Mujoco, TypedElement
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.serializers import dumps, from_dict, from_etree, loads, to_dict, to_etree
 from mjcf_model.strategies import elements, models
-from serializers import dumps, from_dict, from_etree, loads, to_dict, to_etree
 from tests.conftest import PER_CLASS
 from tests.support.node_classes import TYPED_CLASSES
 

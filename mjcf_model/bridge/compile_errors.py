@@ -7,7 +7,7 @@ line, and follows it to the element of the user's model: its element path, and
 the file and line it was read from (a part attached from another folder: the
 part's own file). Nothing here runs unless MuJoCo rejects a model.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> from mjcf_model.bridge.compiling import compiled
 >>> model = loads('<mujoco>\n<worldbody>\n<geom class="x" size="1"/>\n</worldbody>\n</mujoco>',
 ...               filename="arm.xml")
@@ -28,12 +28,14 @@ import attrs
 
 from mjcf_model.errors import MjcfCompileError, MjcfError
 from mjcf_model.nodes.base import AnyElement, Element, attribute_text
-from mjcf_model.nodes.layout import Layout, SourceText
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.serializers import dumps, loads
+from mjcf_model.serializers.layout import Layout, SourceText, layout_of
+from mjcf_model.serializers.parsed_elements import element_step
 from mjcf_model.tree.traversal import Path, keyed_walk, walk
 
 if TYPE_CHECKING:
-    from serializers.bundling import Bundle
+    from mjcf_model.serializers.bundling import Bundle
 
 __all__ = ["Complaint", "compile_error"]
 
@@ -111,8 +113,8 @@ def compile_error(message: str, model: Mujoco, bundle: Bundle, text: str) -> Mjc
 
     Examples:
         >>> from mjcf_model import Geom, Mujoco, Worldbody
-        >>> from serializers.bundling import bundled
-        >>> from serializers import dumps
+        >>> from mjcf_model.serializers.bundling import bundled
+        >>> from mjcf_model import dumps
         >>> model = Mujoco(children=[Worldbody(children=[Geom(), Geom(dclass="x", size=[1])])])
         >>> bundle = bundled(model)
         >>> message = "XML Error: unknown default class name 'x'\nElement 'geom', line 4"
@@ -146,13 +148,12 @@ def compile_error(message: str, model: Mujoco, bundle: Bundle, text: str) -> Mjc
 
 
 def _main_file(model: Mujoco) -> str | None:
-    return model.layout.origin.filename if model.layout is not None else None
+    layout = layout_of(model)
+    return layout.origin.filename if layout is not None else None
 
 
 def _standing_on(text: str, complaint: Complaint) -> list[tuple[Path, AnyElement]]:
     """The elements of ``text`` starting on the line MuJoCo names, and named as it names them."""
-    from serializers import loads
-
     data = text.encode("utf-8", "surrogatepass")
     if complaint.line is None or complaint.line < 1:  # an included file's line is 0
         return []
@@ -169,7 +170,7 @@ def _standing_on(text: str, complaint: Complaint) -> list[tuple[Path, AnyElement
         return []
     found = []
     for path, element in walk(written):
-        layout = element.layout
+        layout = layout_of(element)
         if layout is None or not begin <= layout.begin <= end:
             continue
         if complaint.tag is not None and element.tag != complaint.tag:
@@ -184,8 +185,6 @@ def _standing_on_canonical(bundle: Bundle, complaint: Complaint) -> list[tuple[P
     """:func:`_standing_on` for the canonical text, if MuJoCo says the same of it."""
     import mujoco
 
-    from serializers import dumps
-
     canonical = dumps(bundle.model, canonical=True)
     try:
         mujoco.MjModel.from_xml_string(canonical, bundle.files)
@@ -198,8 +197,6 @@ def _standing_on_canonical(bundle: Bundle, complaint: Complaint) -> list[tuple[P
 
 def _in_model(model: Mujoco, written: tuple[Path, AnyElement]) -> tuple[AnyElement, str] | None:
     """The element of ``model`` at the index path of ``written``, and its element path."""
-    from serializers.parsed_elements import element_step
-
     path, element = written
     current: AnyElement = model
     steps = [f"/{model.tag}"]
@@ -221,7 +218,7 @@ def _in_model(model: Mujoco, written: tuple[Path, AnyElement]) -> tuple[AnyEleme
 
 def _source_of(element: AnyElement, model: Mujoco) -> tuple[str | None, int | None]:
     """The file and line ``element`` was read from (``None``: built in code)."""
-    layout = element.layout
+    layout = layout_of(element)
     if layout is None:
         return None, None
     if _includes(model) and _read_from_written(layout.origin, model):
@@ -237,7 +234,6 @@ def _includes(model: Mujoco) -> bool:
 
 
 def _read_from_written(origin: SourceText, model: Mujoco) -> bool:
-    from serializers import dumps
 
     return (origin.raw or origin.text.encode("ascii")) == dumps(model).encode(
         "utf-8", "surrogatepass"
@@ -246,11 +242,10 @@ def _read_from_written(origin: SourceText, model: Mujoco) -> bool:
 
 def _user_layout(layout: Layout, model: Mujoco) -> Layout | None:
     """The layout of the element of ``model`` written at ``layout`` in the model's text."""
-    from serializers import dumps, loads
-
     written = loads(dumps(model))
     for path, element in walk(written):
-        if element.layout is not None and element.layout.begin == layout.begin:
+        found = layout_of(element)
+        if found is not None and found.begin == layout.begin:
             located = _in_model(model, (path, element))
-            return located[0].layout if located is not None else None
+            return layout_of(located[0]) if located is not None else None
     return None

@@ -1,10 +1,10 @@
 """Compiling a model in memory.
 
 :func:`compiled` hands MuJoCo the model's text and the bytes of every file it
-names (MuJoCo's asset dictionary, gathered by :func:`serializers.bundling.bundled`),
+names (MuJoCo's asset dictionary, gathered by :func:`mjcf_model.serializers.bundling.bundled`),
 so nothing is written and the model may combine files from many folders.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> model = loads('<mujoco><worldbody><geom size="0.1"/></worldbody></mujoco>')
 >>> compiled(model).ngeom
 1
@@ -21,10 +21,10 @@ from mjcf_model.nodes.asset import Skin
 from mjcf_model.nodes.base import Element, Node
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.serializers.bundling import bundled_on_disk
+from mjcf_model.serializers.dumping import dumps
+from mjcf_model.serializers.skins import skin_file_bytes
 from mjcf_model.tree.traversal import with_children
-from serializers.bundling import bundled_on_disk
-from serializers.dumping import dumps
-from serializers.skins import skin_file_bytes
 
 if TYPE_CHECKING:
     import mujoco
@@ -45,7 +45,7 @@ def _skins_as_files(model: Mujoco, files: dict[str, bytes]) -> tuple[Mujoco, dic
     have rounded the text to (only ``paths`` records the file's name,
     ``mjcf-model-skin-0.skn``). An unnamed skin stays inline (MuJoCo would name it
     after the file), and so does one the format cannot hold (see
-    :func:`serializers.skins.skin_file_bytes`).
+    :func:`mjcf_model.serializers.skins.skin_file_bytes`).
     """
     added = dict(files)
     made = iter(f"mjcf-model-skin-{n}.skn" for n in itertools.count())
@@ -97,7 +97,7 @@ def compiled(model: Mujoco, *, assets: Mapping[str, bytes] | None = None) -> muj
         MjcfAssetError: A file cannot be read and is not in ``assets``.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads('<mujoco><asset><mesh name="m" file="tet.obj"/></asset>'
         ...               '<worldbody><geom type="mesh" mesh="m"/></worldbody></mujoco>')
         >>> points = "v 0 0 0 \n v 1 0 0 \n v 0 1 0 \n v 0 0 1 \n"

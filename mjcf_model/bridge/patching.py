@@ -10,7 +10,7 @@ class, a size, a position...) is compiled again in full, with a
 :class:`~mjcf_model.MjcfRecompiledWarning` that names the first such change.
 
 >>> from mjcf_model import compiled, map_elements, with_attributes
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> before = loads('<mujoco><worldbody><geom name="g" size="0.1" rgba="1 0 0 1"/>'
 ...                '</worldbody></mujoco>')
 >>> def green(element, key, ancestors):
@@ -28,12 +28,19 @@ import warnings
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
+from mjcf_model.bridge.compiling import compiled
 from mjcf_model.caching import BoundedCache
 from mjcf_model.errors import MjcfRecompiledWarning
-from mjcf_model.nodes.base import AnyElement, Element, attribute_items, get_attribute
+from mjcf_model.nodes.base import (
+    AnyElement,
+    Element,
+    attribute_items,
+    get_attribute,
+    with_attributes,
+)
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import child_key
-from mjcf_model.tree.traversal import keyed_walk
+from mjcf_model.tree.traversal import keyed_walk, with_children
 from mjcf_model.values import numbers_of
 
 if TYPE_CHECKING:
@@ -126,7 +133,7 @@ def patched(
     Examples:
         >>> import copy
         >>> from mjcf_model import compiled, map_elements, with_attributes
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> robot = loads('<mujoco><worldbody><geom size="0.1"/></worldbody></mujoco>')
         >>> base = compiled(robot)
         >>> scratch = copy.copy(base)
@@ -140,8 +147,6 @@ def patched(
 
     """
     import mujoco
-
-    from mjcf_model.bridge.compiling import compiled
 
     changes: list[tuple[str, str, int, tuple[float, ...]]] = []
     problem = _mapped(model, before, after, changes)
@@ -335,8 +340,6 @@ def _numbering(before: Mujoco) -> dict[tuple[int, ...], int]:
         return known[1]
     import mujoco
 
-    from mjcf_model.bridge.compiling import compiled
-
     labels: dict[tuple[str, str], tuple[int, ...]] = {}
     named = _labelled(before, None, (), labels)
     compiled_model = compiled(named)
@@ -364,9 +367,6 @@ def _labelled(
 
     ``labels`` gets the path of each (object type, name); a body's is its inertial's path.
     """
-    from mjcf_model.nodes.base import with_attributes
-    from mjcf_model.tree.traversal import with_children
-
     key = (
         child_key(context, element.tag) if context is not None or element.tag == "mujoco" else None
     )

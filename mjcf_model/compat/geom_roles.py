@@ -24,9 +24,9 @@ from mjcf_model.nodes.base import (
     get_attribute,
     with_attributes,
 )
+from mjcf_model.serializers.parsed_elements import written_text
 from mjcf_model.tree.traversal import map_tree
 from mjcf_model.values import Value
-from serializers.parsed_elements import written_text
 
 __all__ = ["GeomRole", "geom_role", "role_of_group", "with_collision_color", "with_visual_material"]
 

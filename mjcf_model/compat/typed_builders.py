@@ -5,7 +5,7 @@ The same defaults and attribute order as robosuite's ``mjcf_utils`` functions
 node's ``attribute_order`` so the writer keeps it; ``None`` values are dropped
 and numbers are written in the shortest form (``"0 0 0"``, not ``"0.0 0.0 0.0"``).
 
->>> from serializers import dumps
+>>> from mjcf_model import dumps
 >>> print(dumps(new_geom("g", "box", [0.1, 0.1, 0.1])), end="")
 <geom type="box" size="0.1 0.1 0.1" pos="0 0 0" group="0" name="g"/>
 >>> print(dumps(new_site("s")), end="")

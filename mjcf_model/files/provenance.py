@@ -15,10 +15,10 @@ A model built in code has no ``base_dir``: its paths resolve from wherever it is
 compiled or written (the working folder, when compiled).
 :func:`relocated` rewrites the relative paths of a model so that they resolve
 to the same files from another folder (and under other compiler folders): what
-:func:`serializers.dump` does when it writes a model somewhere else and what
+:func:`mjcf_model.serializers.dump` does when it writes a model somewhere else and what
 :func:`mjcf_model.attach` does when a child comes from another folder.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> model = loads('<mujoco><compiler meshdir="meshes"/><asset><mesh file="arm.stl"/></asset>'
 ...               '</mujoco>', base_dir="/robots/panda")
 >>> [str(reference.path) for reference in file_references(model)]
@@ -92,7 +92,7 @@ class Folders:
     """The ``<compiler>`` settings that say where files are.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> Folders.of(loads('<mujoco><compiler assetdir="a" texturedir="t"/></mujoco>'))
         Folders(mesh='a', texture='t', strip=False)
 
@@ -113,7 +113,7 @@ class Folders:
         same or a later section overrides it, as MuJoCo reads them.
 
         Examples:
-            >>> from serializers import loads
+            >>> from mjcf_model import loads
             >>> Folders.of(loads('<mujoco><compiler meshdir="m"/><compiler assetdir="a"/>'
             ...                  '</mujoco>'))
             Folders(mesh='a', texture='a', strip=False)
@@ -212,7 +212,7 @@ def file_references(model: Mujoco) -> Iterator[FileReference]:
     """Every file path written in ``model`` (kept ``<include>`` elements, not their contents).
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads('<mujoco><asset><texture type="2d" file="wood.png"/></asset></mujoco>')
         >>> [(r.key, r.attribute, r.text, r.kind) for r in file_references(model)]
         [('asset/texture', 'file', 'wood.png', 'texture')]
@@ -229,7 +229,7 @@ def with_paths(
     """``model`` with each file path replaced by ``new_path(reference)``; the rest is shared.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads('<mujoco><asset><mesh file="a.stl"/></asset></mujoco>')
         >>> with_paths(model, lambda r: r.text.upper()).asset.elements[0].file
         'A.STL'
@@ -278,7 +278,7 @@ def relocated(
             not directly in its folder.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads('<mujoco><include file="parts/arm.xml"/></mujoco>', base_dir="/robots")
         >>> relocated(model, "/robots/scenes").elements[0].file
         '../parts/arm.xml'
@@ -344,7 +344,7 @@ def with_included_paths(model: Mujoco, origins: Mapping[int, tuple[AnyElement, P
 
     Examples:
         >>> import pathlib, tempfile
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> folder = pathlib.Path(tempfile.mkdtemp())
         >>> (folder / "parts").mkdir()
         >>> _ = (folder / "parts" / "arm.obj").write_text("v 0 0 0")
@@ -378,7 +378,7 @@ def with_folders(model: Mujoco, folders: Folders) -> Mujoco:
     ``Folders()`` removes them all: every path then names its file directly.
 
     Examples:
-        >>> from serializers import dumps, loads
+        >>> from mjcf_model import dumps, loads
         >>> model = loads('<mujoco><compiler meshdir="m" angle="radian"/></mujoco>')
         >>> dumps(with_folders(model, Folders()), canonical=True)
         '<mujoco>\n  <compiler angle="radian"/>\n</mujoco>\n'

@@ -50,7 +50,7 @@ class AttributeMap(Mapping[str, str]):
 
         Only for the robosuite layer, whose ElementTree elements take any text
         (robosuite's ``new_element(name="\x1f")`` works); such a map is converted
-        to ElementTree at once and never written by :mod:`serializers`.
+        to ElementTree at once and never written by :mod:`mjcf_model.serializers`.
         """
         made = cls.__new__(cls)
         made._data = data

@@ -22,12 +22,11 @@ from typing import TYPE_CHECKING, Any, ClassVar, SupportsIndex, TypeVar, cast
 import attrs
 
 from mjcf_model.errors import MjcfValueError
-from mjcf_model.nodes import layout as layouts
 from mjcf_model.nodes.attribute_map import EMPTY_ATTRIBUTES, AttributeMap, to_attribute_map
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.comparing import Subtree, forest_hash, forests_equal
 from mjcf_model.nodes.declaring import node
-from mjcf_model.nodes.layout import Layout
+from mjcf_model.nodes.file_layout import FileLayout
 from mjcf_model.nodes.node_info import NodeInfo, xml_name
 from mjcf_model.values import Value, check_name, check_text, format_value
 
@@ -144,17 +143,17 @@ class Element(Node):
     text: str | None = attrs.field(default=None, validator=_optional_text)
     #: How the element was written in its file (ignored by ``==``, ``hash`` and the dict
     #: form); ``None`` for an element built in code.
-    layout: Layout | None = attrs.field(default=None, eq=False, repr=False)
+    layout: FileLayout | None = attrs.field(default=None, eq=False, repr=False)
 
     def __reduce_ex__(self, protocol: SupportsIndex) -> str | tuple[Any, ...]:
-        """Pickle an element read from text as its class, layout, children and changes.
+        """Pickle an element read from text as its layout says, any other field by field.
 
-        Its values are read again from its text when unpickled (see
-        :data:`~mjcf_model.nodes.layout.REDUCE_FROM_TEXT`); any other element is
-        pickled field by field (:meth:`__getstate__`).
+        A loaded element pickles small: its values are read again from its text when
+        unpickled (:meth:`~mjcf_model.nodes.file_layout.FileLayout.reduced`); any other
+        element is pickled field by field (:meth:`__getstate__`).
         """
-        if self.layout is not None and layouts.REDUCE_FROM_TEXT is not None:
-            reduced = layouts.REDUCE_FROM_TEXT(self)
+        if self.layout is not None:
+            reduced = self.layout.reduced(self)
             if reduced is not None:
                 return reduced
         return super().__reduce_ex__(protocol)
@@ -163,7 +162,7 @@ class Element(Node):
         """The fields to pickle: the layout first, so that it cuts the text its children share.
 
         A pickled element carries the piece of its file's text it stands in (see
-        :meth:`Layout.__reduce__ <mjcf_model.nodes.layout.Layout.__reduce__>`), and of the
+        :meth:`Layout.__reduce__ <mjcf_model.serializers.layout.Layout.__reduce__>`), and of the
         children it was read with only what the writer needs when they were replaced.
         """
         state = self.__dict__
@@ -289,9 +288,10 @@ def _short_or_full_repr(node: TypedElement | GenericElement) -> str:
     label = node.tag if isinstance(node, GenericElement) else type(node).__name__
     where = ""
     layout = node.layout
-    if layout is not None and layout.origin.filename is not None:
-        line = layout.origin.line(layout.begin)
-        where = f" from {layout.origin.filename!r}, line {line}"
+    if layout is not None:
+        filename, line = layout.where()
+        if filename is not None:
+            where = f" from {filename!r}, line {line}"
     return f"<{' '.join([label, *named])}: {count:,} elements{where}>"
 
 

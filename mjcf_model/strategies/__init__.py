@@ -19,7 +19,7 @@ Use them to property-test code that builds, edits or converts MJCF:
 
 Example:
     >>> from hypothesis import given
-    >>> from serializers import dumps, loads
+    >>> from mjcf_model import dumps, loads
     >>> @given(models())
     ... def test_round_trip(model):
     ...     assert loads(dumps(model)) == model

@@ -309,7 +309,7 @@ def models(draw: _Draw[Any], max_trees: int = 3) -> Mujoco:
 
     Examples:
         >>> import mujoco
-        >>> from serializers import dumps
+        >>> from mjcf_model import dumps
         >>> model = models().example()
         >>> mujoco.MjModel.from_xml_string(dumps(model)).nbody >= 2
         True

@@ -19,8 +19,11 @@ from typing import TYPE_CHECKING, Any, Literal
 import attrs
 
 from mjcf_model.bridge.compare import model_differences, path_fields
+from mjcf_model.bridge.compile_errors import Complaint
 from mjcf_model.bridge.compiling import compiled
 from mjcf_model.errors import MjcfCompileError, MjcfError
+from mjcf_model.serializers import dumps, load, loads
+from mjcf_model.tools.diff import changes_between
 
 if TYPE_CHECKING:
     from mjcf_model.nodes.root import Mujoco
@@ -83,8 +86,6 @@ def check_file(
 
     """
     import mujoco
-
-    from serializers import load
 
     name = str(path)
     if not Path(path).is_file():
@@ -179,8 +180,6 @@ def _checked_part(path: Path, includers: list[Path]) -> CheckResult:
     """A part for ``<include>``: it reads back the same, and the files including it compile."""
     import mujoco
 
-    from serializers import dumps, load
-
     name = str(path)
     try:
         model = load(path)
@@ -213,8 +212,6 @@ def check_text(text: str, *, filename: str = "<stdin>") -> CheckResult:
 
     """
     import mujoco
-
-    from serializers import loads
 
     return _checked(
         filename,
@@ -250,8 +247,6 @@ def _checked(
     beside: str | None = None,
 ) -> CheckResult:
     """Compile ``original()``, write ``loaded()`` back, compile that, compare."""
-    from serializers import dumps
-
     try:
         model = original()
     except ValueError as error:
@@ -272,8 +267,6 @@ def _rejection(message: str, loaded: Callable[[], Mujoco]) -> str:
     model mjcf-model reads is compiled again, so that the error names the file,
     line and element path (:func:`mjcf_model.compiled`), if MuJoCo says the same of it.
     """
-    from mjcf_model.bridge.compile_errors import Complaint
-
     plain = f"MuJoCo rejects the model: {message.strip()}"
     try:
         compiled(loaded())
@@ -295,14 +288,11 @@ def written_changes(model: Mujoco, written: str, filename: str) -> tuple[str, ..
         MjcfError: ``written`` cannot be read.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> written_changes(loads("<mujoco><worldbody/></mujoco>"), "<mujoco/>", "m.xml")
         ('- /mujoco/worldbody',)
 
     """
-    from mjcf_model.tools.diff import changes_between
-    from serializers import loads
-
     reread = loads(written, base_dir=text_folder(filename), filename=filename)
     return tuple(map(str, changes_between(model, reread)))
 
@@ -323,8 +313,6 @@ def written_differences(original: Any, written: str, path: str) -> tuple[str, ..
         ()
 
     """
-    from serializers import loads
-
     reread = loads(written, base_dir=Path(path).parent, filename=path)
     try:
         again = compiled(reread)

@@ -14,7 +14,7 @@ Paths are written as in error messages: ``/mujoco/worldbody/body[@name='arm']/ge
 is the second unnamed ``geom`` of the body ``arm``.
 * An added or removed element is listed once: what is below it is not listed again.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> a = loads('<mujoco><worldbody><body name="arm"><geom size="0.10"/></body></worldbody></mujoco>')
 >>> b = loads('<mujoco><worldbody><body name="arm"><geom size=".1" rgba="1 0 0 1"/>'
 ...           '<site name="tip"/></body></worldbody></mujoco>')
@@ -124,7 +124,7 @@ def changes_between(first: Node, second: Node) -> list[Change]:
     """The differences from ``first`` to ``second``: removals first, then the rest in order.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> a = loads('<mujoco><worldbody><body name="a"><body name="b"/></body></worldbody>'
         ...           '</mujoco>')
         >>> b = loads('<mujoco><worldbody><body name="a"/><body name="b"/></worldbody></mujoco>')

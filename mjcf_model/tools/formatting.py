@@ -1,6 +1,6 @@
 """The tidy form of an MJCF file, and the proof that it compiles to the same model.
 
-:func:`format_text` rewrites MJCF text in its tidy form (:mod:`serializers.tidy`):
+:func:`format_text` rewrites MJCF text in its tidy form (:mod:`mjcf_model.serializers.tidy`):
 one element a line, indented by depth, long start tags wrapped one attribute a
 line; comments, blank lines between elements, attribute order and the spelling of
 every number kept (``normalize_numbers`` writes the shortest form instead). The
@@ -37,20 +37,23 @@ from __future__ import annotations
 
 import functools
 import os
+import tomllib
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any, Literal
 
 import attrs
 
+from mjcf_model.bridge.compare import compile_text_beside
 from mjcf_model.errors import MjcfCompileError, MjcfValueError, unreadable_file
+from mjcf_model.serializers import loads
+from mjcf_model.serializers.tidy import DEFAULT_WIDTH, tidy_text
 from mjcf_model.tools.check import (
     standing_path,
     text_folder,
     written_changes,
     written_differences,
 )
-from serializers.tidy import DEFAULT_WIDTH
 
 __all__ = [
     "FormatOptions",
@@ -105,8 +108,6 @@ def options_from_pyproject(start: str | os.PathLike[str]) -> tuple[FormatOptions
         120
 
     """
-    import tomllib
-
     here = Path(start).resolve()
     for folder in [here, *here.parents]:
         candidate = folder / "pyproject.toml"
@@ -220,9 +221,6 @@ def _formatted(
     options: FormatOptions,
 ) -> Formatted:
     """The tidy form of ``data`` read as ``filename``, and its proof."""
-    from serializers import loads
-    from serializers.tidy import tidy_text
-
     text = data if isinstance(data, str) else data.decode("utf-8", errors="replace")
     model = loads(data, base_dir=text_folder(filename), filename=filename)
     tidy = tidy_text(
@@ -253,8 +251,6 @@ def _compiled_text(text: str, beside: str) -> Any:
     written, compiled from memory.
     """
     import mujoco
-
-    from mjcf_model.bridge.compare import compile_text_beside
 
     try:
         return compile_text_beside(text, beside)

@@ -7,7 +7,7 @@ wrong: which value each attribute of one element has once its class (its own
 ``class``, else the nearest ``childclass`` above it, else ``main``) and that
 class's parents are applied, and which class supplied it.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> model = loads('''<mujoco><default><geom rgba="1 0 0 1"/>
 ...   <default class="steel"><geom density="7800"/></default></default>
 ...   <worldbody><body childclass="steel"><geom name="g" size="0.1"/></body></worldbody>
@@ -153,7 +153,7 @@ def model_summary(model: Mujoco) -> ModelSummary:
     """Counts, names, compiler settings and default classes of ``model``.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> summary = model_summary(loads('<mujoco model="m"><worldbody><body name="a">'
         ...                               '<geom size="1"/></body></worldbody></mujoco>'))
         >>> dict(summary.counts), dict(summary.names)

@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from mjcf_model.bridge.compiling import compiled
 from mjcf_model.errors import MjcfLookupError, MjcfRenderError
 from mjcf_model.nodes.root import Mujoco
 
@@ -63,8 +64,6 @@ def render(
         import mujoco  # a MUJOCO_GL that cannot work fails here
     except Exception as error:  # RuntimeError, ImportError, AttributeError from PyOpenGL...
         raise MjcfRenderError(f"{_INSTALL} ({type(error).__name__}: {error})") from None
-
-    from mjcf_model.bridge.compiling import compiled
 
     compiled_model = compiled(model)
     if (

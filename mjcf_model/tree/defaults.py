@@ -5,7 +5,7 @@ MuJoCo resolves an attribute an element does not write through its class (its
 class's parents. Transforms that depend on a value written elsewhere (a joint's
 ``type`` decides whether its ``range`` is a length) ask :class:`DefaultClasses`.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> model = loads('''<mujoco><default><default class="rail"><joint type="slide"/></default>
 ... </default><worldbody><body childclass="rail"><joint name="j"/></body></worldbody></mujoco>''')
 >>> classes = DefaultClasses.of(model)
@@ -83,7 +83,7 @@ class DefaultClasses:
         """Read the classes of a model (an element other than ``<mujoco>`` has none).
 
         Examples:
-            >>> from serializers import loads
+            >>> from mjcf_model import loads
             >>> m = loads('<mujoco><default><default class="a"/></default></mujoco>')
             >>> dict(DefaultClasses.of(m).parents)
             {'main': None, 'a': 'main'}
@@ -244,7 +244,7 @@ class DefaultClasses:
         :meth:`inherited`).
 
         Examples:
-            >>> from serializers import loads
+            >>> from mjcf_model import loads
             >>> model = loads('<mujoco><default><general ctrlrange="-1 1"/><motor gear="2"/>'
             ...               '</default><actuator><position name="p" joint="j"/></actuator>'
             ...               '<worldbody><body><joint name="j"/></body></worldbody></mujoco>')

@@ -56,7 +56,7 @@ def replaced_at(node: _A, path: Path, new: Sequence[Node]) -> _A:
     elements on the path are rebuilt; everything else is shared.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> from mjcf_model import Site
         >>> model = loads('<mujoco><worldbody><geom size="1"/></worldbody></mujoco>')
         >>> replaced_at(model, (0, 0), [Site(), Site()]).worldbody.elements

@@ -3,7 +3,7 @@
 All queries are read-only: they return nodes of the tree itself (so ``is`` works
 on the results), in document order.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> model = loads(
 ...     '<mujoco><worldbody><body name="arm"><geom name="a" group="1"/>'
 ...     '<geom name="b"/></body></worldbody></mujoco>'

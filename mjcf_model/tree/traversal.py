@@ -276,7 +276,7 @@ def refuse_file_skin(skin: AnyElement, action: str, because: str) -> None:
 
     A skin read from a file has its vertices, bind poses and the names of its
     bodies there, not in the tree; a model loaded from a file can have it written
-    inline (``serializers.skins.inline_skin_files``).
+    inline (``mjcf_model.serializers.skins.inline_skin_files``).
 
     Examples:
         >>> from mjcf_model.nodes.base import GenericElement
@@ -286,14 +286,15 @@ def refuse_file_skin(skin: AnyElement, action: str, because: str) -> None:
         ...
         mjcf_model.errors.MjcfValueError: cannot scale a model where a skin is read from \
 's.skn': the file holds its vertices; write the skin inline first with \
-serializers.skins.inline_skin_files(model, model_folder)
+mjcf_model.serializers.skins.inline_skin_files(model, model_folder)
 
     """
     name, file = get_attribute(skin, "name"), get_attribute(skin, "file")
     called = f"skin {name!r}" if name else "a skin"
     raise MjcfValueError(
         f"cannot {action} a model where {called} is read from {file!r}: the file {because}; "
-        "write the skin inline first with serializers.skins.inline_skin_files(model, model_folder)"
+        "write the skin inline first with "
+        "mjcf_model.serializers.skins.inline_skin_files(model, model_folder)"
     )
 
 
@@ -304,7 +305,7 @@ def walk(node: Node) -> Iterator[tuple[Path, AnyElement]]:
     are skipped but keep their index.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads('<mujoco><worldbody><geom size="1"/></worldbody></mujoco>')
         >>> [(path, e.tag) for path, e in walk(model)]
         [((), 'mujoco'), ((0,), 'worldbody'), ((0, 0), 'geom')]

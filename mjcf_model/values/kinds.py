@@ -82,7 +82,7 @@ class Unparsed:
     with the file, line and element path it came from.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads('<mujoco><worldbody><geom size="0x10"/></worldbody></mujoco>')
         >>> geom = model.worldbody.geoms[0]
         >>> geom.size

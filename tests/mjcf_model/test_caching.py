@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 from mjcf_model.caching import BoundedCache
+from mjcf_model.serializers import loads, open_element, to_dict
 from mjcf_model.tree import traversal
 from mjcf_model.tree.traversal import map_elements
-from serializers import loads, open_element, to_dict
 
 
 def test_a_full_cache_empties_before_it_takes_more() -> None:

@@ -17,8 +17,8 @@ from mjcf_model import (
     MjcfValueError,
     Mujoco,
 )
+from mjcf_model.serializers import dumps, from_dict, load, loads
 from mjcf_model.values import Unparsed
-from serializers import dumps, from_dict, load, loads
 
 # -- Bad input raises an MjcfError subclass that says where (file, line, path) and what. -------
 

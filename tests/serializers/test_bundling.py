@@ -1,4 +1,4 @@
-"""Tests of ``serializers.bundling``: every file a model uses, gathered under readable names."""
+"""Tests of ``mjcf_model.serializers.bundling``: every file a model uses, under readable names."""
 
 from __future__ import annotations
 
@@ -9,8 +9,8 @@ import pytest
 
 from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.errors import MjcfAssetError
-from serializers import dumps, load, loads
-from serializers.bundling import bundled, bundled_on_disk
+from mjcf_model.serializers import dumps, load, loads
+from mjcf_model.serializers.bundling import bundled, bundled_on_disk
 from tests.support.model_files import obj_mesh, write_tree
 
 #: Three meshes: two files of one name in different folders, and a copy of the first.

@@ -1,4 +1,4 @@
-"""Tests of ``serializers.canonical``."""
+"""Tests of ``mjcf_model.serializers.canonical``."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from mjcf_model import (
     GenericElement,
     Mujoco,
 )
-from serializers import dumps, from_dict, from_etree, load, loads, to_dict, to_etree
+from mjcf_model.serializers import dumps, from_dict, from_etree, load, loads, to_dict, to_etree
 from tests.conftest import corpus_id, loading_corpus
 
 # -- Hostile and broken input: no hang, no stray exception, and MuJoCo decides what loads. -----

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from serializers import collector_paused, load, loads
+from mjcf_model.serializers import collector_paused, load, loads
 
 
 def test_reading_leaves_the_collector_running(

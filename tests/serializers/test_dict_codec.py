@@ -1,4 +1,4 @@
-"""Tests of ``serializers.dict_codec``."""
+"""Tests of ``mjcf_model.serializers.dict_codec``."""
 
 from __future__ import annotations
 
@@ -17,10 +17,10 @@ from mjcf_model import (
     TypedElement,
 )
 from mjcf_model.errors import MjcfValueError
+from mjcf_model.serializers import dicts, dumps, from_dict, loads, to_dict
 from mjcf_model.strategies import elements
 from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import Unparsed
-from serializers import dicts, dumps, from_dict, loads, to_dict
 from tests.conftest import PER_CLASS
 from tests.support.node_classes import TYPED_CLASSES, _reference_equal, _same_compiled
 

@@ -10,8 +10,8 @@ from mjcf_model import Geom, Site
 from mjcf_model.nodes.base import TypedElement
 from mjcf_model.nodes.declaring import node
 from mjcf_model.nodes.fields import vec3
-from serializers import from_dict, make_converter, to_dict
-from serializers.dicts import NodeConverter, default_converter
+from mjcf_model.serializers import from_dict, make_converter, to_dict
+from mjcf_model.serializers.dicts import NodeConverter, default_converter
 
 
 def test_an_owned_converter_changes_only_its_own_conversions() -> None:

@@ -1,4 +1,4 @@
-"""Tests of ``serializers.dumping``."""
+"""Tests of ``mjcf_model.serializers.dumping``."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from mjcf_model import (
     MjcfAssetError,
     Mujoco,
 )
-from serializers import dump, load
+from mjcf_model.serializers import dump, load
 
 # -- Hostile and broken input: no hang, no stray exception, and MuJoCo decides what loads. -----
 #

@@ -1,4 +1,4 @@
-"""Tests of ``serializers.etree``: ElementTree elements and nodes, both ways."""
+"""Tests of ``mjcf_model.serializers.etree``: ElementTree elements and nodes, both ways."""
 
 from __future__ import annotations
 
@@ -14,8 +14,8 @@ from mjcf_model import (
     MjcfValueError,
 )
 from mjcf_model.bridge.compare import model_differences
-from serializers import dumps, from_etree, to_etree
-from serializers.etree import converted_children
+from mjcf_model.serializers import dumps, from_etree, to_etree
+from mjcf_model.serializers.etree import converted_children
 
 #: A model with a comment, a light, and a body holding a joint and a geom.
 MODEL = """<mujoco model="m">
@@ -64,7 +64,7 @@ def test_from_etree_error_names_the_element_path() -> None:
     """Errors from ElementTree input name the path, with the index among same-tag siblings."""
     import xml.etree.ElementTree as ET
 
-    from serializers import from_etree
+    from mjcf_model.serializers import from_etree
 
     tree = ET.fromstring(
         "<mujoco><worldbody><geom size='1'/><body name='b'><geom size='1'/>"

@@ -23,11 +23,17 @@ from mjcf_model import (
     scaled,
     with_attributes,
 )
+from mjcf_model.serializers import to_etree
+from mjcf_model.serializers.etree import from_etree
+from mjcf_model.serializers.etree_view import (
+    EtreeView,
+    element_index,
+    paired,
+    shallow_node,
+    write_back,
+)
 from mjcf_model.strategies import models
 from mjcf_model.tree.paths import appended_at, replaced_at
-from serializers import to_etree
-from serializers.etree import from_etree
-from serializers.etree_view import EtreeView, element_index, paired, shallow_node, write_back
 
 
 def _text(element: ET.Element) -> str:

@@ -1,4 +1,4 @@
-"""Tests of ``serializers.exporting``."""
+"""Tests of ``mjcf_model.serializers.exporting``."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from mjcf_model import (
     MjcfValueError,
     compiled,
 )
-from serializers import dump, export, load, loads
+from mjcf_model.serializers import dump, export, load, loads
 from tests.conftest import corpus_id
 from tests.support.model_files import _same, obj_mesh, with_files, write_tree
 

@@ -1,4 +1,4 @@
-"""Tests of ``serializers.includes``."""
+"""Tests of ``mjcf_model.serializers.includes``."""
 
 from __future__ import annotations
 
@@ -19,7 +19,7 @@ from mjcf_model import (
     Worldbody,
 )
 from mjcf_model.bridge.compare import model_differences
-from serializers import dumps, load, loads
+from mjcf_model.serializers import dumps, load, loads
 from tests.conftest import FIXTURES
 from tests.support.fixture_checks import comments, compile_round_trip, names, section, walk
 from tests.support.oracles import _compiled

@@ -1,4 +1,4 @@
-"""Tests of ``serializers.kept_format``."""
+"""Tests of ``mjcf_model.serializers.kept_format``."""
 
 from __future__ import annotations
 
@@ -26,10 +26,10 @@ from mjcf_model.nodes.base import (
     get_attribute,
     with_attributes,
 )
+from mjcf_model.serializers import dump, dumps, from_dict, load, loads, to_dict, to_etree
 from mjcf_model.strategies import models
 from mjcf_model.tree.traversal import map_tree, with_children
 from mjcf_model.values import Value
-from serializers import dump, dumps, from_dict, load, loads, to_dict, to_etree
 from tests.conftest import compiling_corpus, corpus_id, loading_corpus
 
 # -- Files keep their format: ``dumps(load(path))`` gives the file back, edits stay local. -----
@@ -511,9 +511,9 @@ def test_splicing_changed_attributes_writes_the_general_edit(path: Path) -> None
     third attribute removed: each start tag the splice writes equals the one the general
     edit (``_edited_start`` over every attribute) writes, and the splice handles most tags.
     """
-    from mjcf_model.nodes.layout import detail
-    from serializers.kept_format import _edited_start, _spliced_start
-    from serializers.parsed_elements import recorded_values
+    from mjcf_model.serializers.kept_format import _edited_start, _spliced_start
+    from mjcf_model.serializers.layout import detail
+    from mjcf_model.serializers.parsed_elements import recorded_values
 
     model = load(path, inline_includes=True)
 

@@ -1,4 +1,4 @@
-"""Tests of ``serializers.loading``: text and files read into nodes."""
+"""Tests of ``mjcf_model.serializers.loading``: text and files read into nodes."""
 
 from __future__ import annotations
 
@@ -17,7 +17,7 @@ from mjcf_model import (
     Mujoco,
 )
 from mjcf_model.bridge.compare import model_differences
-from serializers import dumps, from_dict, load, loads, to_dict
+from mjcf_model.serializers import dumps, from_dict, load, loads, to_dict
 
 #: A model that includes a file of its folder.
 MAIN = """<mujoco model="main">

@@ -1,9 +1,9 @@
-"""Tests of ``serializers.open_element``: an element the text reader has begun."""
+"""Tests of ``mjcf_model.serializers.open_element``: an element the text reader has begun."""
 
 from __future__ import annotations
 
 from mjcf_model import Body, Default, Geom, Mujoco, Site, Worldbody
-from serializers.open_element import OpenElement, step_of
+from mjcf_model.serializers.open_element import OpenElement, step_of
 from tests.conftest import printed_schema
 
 

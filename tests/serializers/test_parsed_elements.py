@@ -1,4 +1,4 @@
-"""Tests of ``serializers.parsed_elements``."""
+"""Tests of ``mjcf_model.serializers.parsed_elements``."""
 
 from __future__ import annotations
 
@@ -19,19 +19,19 @@ from mjcf_model import (
     prefixed,
 )
 from mjcf_model.nodes.base import Element, TypedElement, attribute_items, build_node
-from mjcf_model.nodes.layout import Layout, SourceText, detail
 from mjcf_model.nodes.node_info import xml_name
-from mjcf_model.strategies import element_values, models
-from mjcf_model.values import format_value
-from serializers import dumps, loads
-from serializers.etree_view import paired
-from serializers.parsed_elements import (
+from mjcf_model.serializers import dumps, loads
+from mjcf_model.serializers.etree_view import paired
+from mjcf_model.serializers.layout import Layout, SourceText, detail
+from mjcf_model.serializers.parsed_elements import (
     DEFERRED_TEXT,
     build_element,
     read_typed,
     recorded_values,
     written_text,
 )
+from mjcf_model.strategies import element_values, models
+from mjcf_model.values import format_value
 from tests.support.node_classes import TYPED_CLASSES
 
 # -- Hostile and broken input: no hang, no stray exception, and MuJoCo decides what loads. -----

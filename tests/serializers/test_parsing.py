@@ -1,4 +1,4 @@
-"""Tests of ``serializers.parsing``."""
+"""Tests of ``mjcf_model.serializers.parsing``."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from mjcf_model import (
     MjcfError,
     MjcfSyntaxError,
 )
-from serializers import dumps, from_etree, load, loads
+from mjcf_model.serializers import dumps, from_etree, load, loads
 from tests.conftest import corpus_id, loading_corpus
 
 # -- Hostile and broken input: no hang, no stray exception, and MuJoCo decides what loads. -----

@@ -1,4 +1,4 @@
-"""Tests of ``serializers.repairs``."""
+"""Tests of ``mjcf_model.serializers.repairs``."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from mjcf_model import (
     Comment,
     MjcfSyntaxError,
 )
-from serializers import dumps, loads
+from mjcf_model.serializers import dumps, loads
 from tests.support.oracles import _compiled, _round_trips_like_mujoco
 
 # -- Hostile and broken input: no hang, no stray exception, and MuJoCo decides what loads. -----

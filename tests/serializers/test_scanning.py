@@ -1,4 +1,4 @@
-"""Tests of ``serializers.scanning``: the byte scans the text reader makes beside expat."""
+"""Tests of ``mjcf_model.serializers.scanning``: the reader's byte scans beside expat."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from serializers.scanning import BREAK, may_hold_text, start_tag_end
+from mjcf_model.serializers.scanning import BREAK, may_hold_text, start_tag_end
 from tests.conftest import FIXTURES
 
 

@@ -1,4 +1,4 @@
-"""Tests of ``serializers.skins``."""
+"""Tests of ``mjcf_model.serializers.skins``."""
 
 from __future__ import annotations
 
@@ -13,8 +13,8 @@ from hypothesis import strategies as st
 from mjcf_model import prefixed
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.nodes.asset import Bone, Skin
-from serializers import dumps, load, loads
-from serializers.skins import float32_as_written, inline_skin_files, read_skin
+from mjcf_model.serializers import dumps, load, loads
+from mjcf_model.serializers.skins import float32_as_written, inline_skin_files, read_skin
 from tests.support.skin_files import _skin_model, skin_file
 
 # -- ``compiled`` lets MuJoCo read the files that exist on disk, and compiles what MuJoCo would.

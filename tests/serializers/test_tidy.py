@@ -1,12 +1,12 @@
-"""Tests of ``serializers.tidy``: a loaded file's layout made regular, nothing else changed."""
+"""Tests of ``mjcf_model.serializers.tidy``: a loaded file's layout made regular, nothing else."""
 
 from __future__ import annotations
 
 import mujoco
 
 from mjcf_model.bridge.compare import model_differences
-from serializers import loads
-from serializers.tidy import tidy_text
+from mjcf_model.serializers import loads
+from mjcf_model.serializers.tidy import tidy_text
 
 #: An untidy file: uneven indentation, a comment, a number spelled its own way.
 UNTIDY = """<!-- before -->

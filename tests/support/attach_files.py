@@ -7,7 +7,7 @@ from pathlib import Path
 import mujoco
 
 from mjcf_model import compiled, inlined_attachments
-from serializers import load
+from mjcf_model.serializers import load
 
 
 def written(folder: Path, files: dict[str, str]) -> Path:

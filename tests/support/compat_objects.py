@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 from robosuite.models.world import MujocoWorldBase
 
-from serializers import to_etree
+from mjcf_model.serializers import to_etree
 
 #: The properties every object answers, compared one by one.
 PROPERTIES = (

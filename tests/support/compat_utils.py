@@ -26,8 +26,8 @@ from hypothesis.extra import numpy as hnp
 from robosuite.utils import mjcf_utils as rs
 
 from mjcf_model.compat import mjcf_utils as ours
+from mjcf_model.serializers import to_etree
 from mjcf_model.strategies import models
-from serializers import to_etree
 
 __all__ = [
     "CASES",

@@ -30,7 +30,7 @@ import mujoco
 
 from mjcf_model import Mujoco, attach, compiled
 from mjcf_model.bridge.compare import model_differences, path_fields
-from serializers import dump, export, load
+from mjcf_model.serializers import dump, export, load
 from tests.support.composition_oracle import PlacedPart, composition_problems
 
 __all__ = ["STAGES", "Outcome", "compose_problems"]

@@ -16,7 +16,7 @@ from mjcf_model import (
     TypedElement,
 )
 from mjcf_model.bridge.compare import compile_text_beside
-from serializers import dumps
+from mjcf_model.serializers import dumps
 
 T = TypeVar("T", bound=TypedElement)
 

@@ -33,8 +33,8 @@ from hypothesis import strategies as st
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.errors import MjcfError
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.serializers import dumps, from_dict, from_etree, loads, to_dict, to_etree
 from mjcf_model.strategies import models
-from serializers import dumps, from_dict, from_etree, loads, to_dict, to_etree
 from tests.conftest import corpus_files, corpus_id
 
 Draw = Callable[[st.SearchStrategy[Any]], Any]

@@ -9,7 +9,7 @@ import mujoco
 
 from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.files.provenance import file_references
-from serializers import load
+from mjcf_model.serializers import load
 from tests.conftest import compiling_corpus
 
 

@@ -12,8 +12,8 @@ from mjcf_model import (
 )
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.serializers import dumps, loads
 from mjcf_model.tree.traversal import walk
-from serializers import dumps, loads
 
 #: Every typed node class, by name.
 TYPED_CLASSES = sorted(set(CLASS_BY_KEY.values()), key=lambda cls: cls.__name__)

@@ -19,7 +19,7 @@ from mjcf_model.bridge.compare import (
     model_differences,
     model_fields,
 )
-from serializers import dumps, loads
+from mjcf_model.serializers import dumps, loads
 from tests.conftest import MUJOCO_VERSION
 
 #: Every field that a renaming may change.

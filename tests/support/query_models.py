@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from mjcf_model.nodes.base import AnyElement, get_attribute
-from serializers import loads
+from mjcf_model.serializers import loads
 from tests.conftest import loading_corpus
 
 CORPUS = loading_corpus()

@@ -21,8 +21,8 @@ from mjcf_model.bridge.compare import (
     model_fields,
     path_fields,
 )
+from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.transforms.scaling.transform import MassPolicy, scaled
-from serializers import dumps, load, loads
 from tests.conftest import FIXTURES, MUJOCO_VERSION
 from tests.support.compiled_fields import FLOAT_FIELDS, float_fields
 

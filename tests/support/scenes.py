@@ -42,7 +42,7 @@ import numpy as np
 
 from mjcf_model import Mujoco, attach, compiled
 from mjcf_model.nodes.keyframe import Key, Keyframe
-from serializers import dump, export, load
+from mjcf_model.serializers import dump, export, load
 from tests.conftest import FIXTURES
 from tests.support.composing import same_model
 

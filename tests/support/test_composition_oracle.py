@@ -10,7 +10,7 @@ import pytest
 
 from mjcf_model import Mujoco, attach, compiled
 from mjcf_model.bridge.compare import model_fields
-from serializers import load, loads
+from mjcf_model.serializers import load, loads
 from tests.conftest import FIXTURES
 from tests.support.composition_oracle import (
     DATA,
@@ -101,7 +101,7 @@ def test_a_missing_or_extra_object_is_found(tmp_path: Path) -> None:
 
 
 def _scene_text() -> str:
-    from serializers import dumps
+    from mjcf_model.serializers import dumps
 
     scene = attach(attach(Mujoco(), load(ARM), prefix="a_"), load(WALKER), prefix="b_")
     return dumps(scene)

@@ -28,8 +28,8 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import child_key, guess_context
+from mjcf_model.serializers.etree import to_etree
 from mjcf_model.values import Value, format_value, plain_value, to_str
-from serializers.etree import to_etree
 
 __all__ = [
     "new_actuator",

@@ -23,10 +23,10 @@ from mjcf_model.compat.mjcf_utils.text import array_to_string, parse_numbers, xm
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.files.png import png_bytes
 from mjcf_model.nodes.base import AnyElement, Element, Node, attribute_text
+from mjcf_model.serializers.etree import from_etree
+from mjcf_model.serializers.etree_view import element_index, write_back
 from mjcf_model.tree.paths import edited_at
 from mjcf_model.tree.traversal import walk_nodes
-from serializers.etree import from_etree
-from serializers.etree_view import element_index, write_back
 
 __all__ = [
     "CustomMaterial",

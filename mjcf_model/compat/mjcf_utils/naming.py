@@ -8,10 +8,10 @@ from typing import Any
 
 from mjcf_model.compat.mjcf_utils.constants import MUJOCO_NAMED_ATTRIBUTES
 from mjcf_model.nodes.base import Element, GenericElement, Node, TypedElement, attribute_items
+from mjcf_model.serializers.etree import from_etree
+from mjcf_model.serializers.etree_view import element_index, write_back
 from mjcf_model.tree.paths import edited_at
 from mjcf_model.tree.traversal import walk_nodes
-from serializers.etree import from_etree
-from serializers.etree_view import element_index, write_back
 
 __all__ = ["add_prefix"]
 

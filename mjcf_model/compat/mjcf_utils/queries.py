@@ -17,8 +17,8 @@ import attrs
 from mjcf_model.compat.geom_roles import role_of_group
 from mjcf_model.compat.mjcf_utils.constants import SENSOR_TYPES
 from mjcf_model.nodes.base import AnyElement, Element, Node
+from mjcf_model.serializers.parsed_elements import written_text
 from mjcf_model.tree.traversal import walk_nodes
-from serializers.parsed_elements import written_text
 
 __all__ = [
     "find_elements",
@@ -271,7 +271,7 @@ def categorized(node: AnyElement) -> Categories:
     (newer sensors such as ``camprojection``, ``clock`` or ``contact`` are missing from it).
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads(
         ...     '<mujoco><worldbody><body name="a"><joint name="j"/>'
         ...     '<geom name="v" group="1"/><body name="b"/></body></worldbody>'

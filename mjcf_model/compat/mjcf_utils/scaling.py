@@ -18,7 +18,7 @@ import numpy.typing as npt
 
 from mjcf_model.compat.mjcf_utils.text import array_to_string, normalize_scale_array, parse_numbers
 from mjcf_model.nodes.base import Element, Node, attribute_text, with_attributes
-from serializers.etree_view import shallow_node, sync_element
+from mjcf_model.serializers.etree_view import shallow_node, sync_element
 
 __all__ = [
     "scale_body_element",

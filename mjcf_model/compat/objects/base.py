@@ -26,7 +26,7 @@ from mjcf_model.compat.objects.naming import (
 )
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement
-from serializers.etree_view import write_back
+from mjcf_model.serializers.etree_view import write_back
 
 __all__ = ["GEOMTYPE2GROUP", "GEOM_GROUPS", "MujocoModel", "MujocoObject"]
 

@@ -4,8 +4,8 @@
   *face* class joining the object's class to its robosuite twin once robosuite's module is in
   ``sys.modules`` (robosuite is never imported).
 * :class:`ModelBacked`: an immutable document, named places (paths) in it, and its live
-  ElementTree (:class:`serializers.etree_view.EtreeView`: elements handed out stay live, and
-  others' edits stay unless the model changes them).
+  ElementTree (:class:`mjcf_model.serializers.etree_view.EtreeView`: elements handed out
+  stay live, and others' edits stay unless the model changes them).
 
 >>> import xml.etree.ElementTree as ET
 >>> from mjcf_model import GenericElement
@@ -32,11 +32,11 @@ from typing import Any, ClassVar, TypeGuard
 from mjcf_model.caching import BoundedCache
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, Element, attribute_text
+from mjcf_model.serializers.etree import from_etree
+from mjcf_model.serializers.etree_view import EtreeView
 from mjcf_model.tree.paths import appended_at, replaced_at, subtree_at
 from mjcf_model.tree.queries import find
 from mjcf_model.tree.traversal import Path, walk, with_children
-from serializers.etree import from_etree
-from serializers.etree_view import EtreeView
 
 __all__ = [
     "ModelBacked",

@@ -44,11 +44,11 @@ from mjcf_model.nodes.base import (
     attribute_text,
     with_attributes,
 )
+from mjcf_model.serializers.dumping import attribute_texts
 from mjcf_model.transforms.scaling.transform import three_factors
 from mjcf_model.tree.ancestry import fold_ancestors
 from mjcf_model.tree.defaults import MAIN, DefaultClasses
 from mjcf_model.tree.traversal import Path, map_elements, map_tree, with_children
-from serializers.dumping import attribute_texts
 
 __all__ = [
     "OBJECT_COLLISION_RGBA_TEXT",

@@ -60,10 +60,10 @@ from mjcf_model.compat.objects.habits import (
 from mjcf_model.compat.objects.naming import recorded_names, robosuite_prefixed
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, attribute_text, with_attributes
+from mjcf_model.serializers.etree import to_etree
 from mjcf_model.tree.paths import appended_at, replaced_at, subtree_at
 from mjcf_model.tree.traversal import walk, with_children
 from mjcf_model.values import to_vec4
-from serializers.etree import to_etree
 
 __all__ = ["MujocoXML", "MujocoXMLModel", "MujocoXMLObject"]
 

@@ -22,6 +22,7 @@ from collections.abc import Iterable
 from typing import Any, TextIO
 
 from mjcf_model.errors import MjcfError
+from mjcf_model.serializers import loads
 from mjcf_model.tools.check import CheckResult, check_file, check_text
 from mjcf_model.tools.cli.common import STDIO, progress, read_stdin
 from mjcf_model.tools.cli.examples import example_path
@@ -34,8 +35,6 @@ def _check_stdin() -> CheckResult:
     try:
         return check_text(data.decode("utf-8"))
     except UnicodeDecodeError as error:
-        from serializers import loads
-
         try:
             loads(data, filename="<stdin>")
         except MjcfError as refused:  # the reader's words: the byte, line, column, what to do

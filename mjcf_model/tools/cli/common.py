@@ -1,7 +1,7 @@
 """What every verb of the command line shares: reading and writing models, errors, progress.
 
 A file argument may be ``-``: the model is read from standard input, or written to
-standard output. Files are written atomically (:func:`serializers.dump`): a
+standard output. Files are written atomically (:func:`mjcf_model.serializers.dump`): a
 failed command leaves them as they were.
 
 >>> list(progress([1, 2], quiet=False))  # two files: no bar
@@ -16,8 +16,10 @@ from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from typing import TextIO, TypeVar
 
+from mjcf_model import serializers
 from mjcf_model.errors import MjcfError
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.serializers.dumping import relocated_for, write_atomically
 
 __all__ = [
     "STDIO",
@@ -99,8 +101,6 @@ def read_model(source: str, *, inline_includes: bool = True) -> Mujoco:
         MjcfError: The file cannot be read or is not MJCF (the message names file and line).
 
     """
-    import serializers
-
     if source == STDIO:
         return serializers.loads(read_stdin(), inline_includes=inline_includes, filename="<stdin>")
     return serializers.load(source, inline_includes=inline_includes)
@@ -117,9 +117,6 @@ def write_model(model: Mujoco, target: str, *, canonical: bool = False) -> None:
     Relative file paths are written to resolve from ``target``'s folder (from the
     working folder for standard output).
     """
-    import serializers
-    from serializers.dumping import relocated_for
-
     if target == STDIO:
         text = serializers.dumps(relocated_for(model, Path.cwd()), canonical=canonical)
         sys.stdout.write(text)
@@ -132,7 +129,6 @@ def write_text(text: str, target: str) -> None:
     if target == STDIO:
         sys.stdout.write(text)
         return
-    from serializers.dumping import write_atomically
 
     write_atomically(text, target)
 

@@ -22,6 +22,8 @@ import json
 import sys
 from typing import Any
 
+from mjcf_model.bridge.compare import model_differences, path_fields
+from mjcf_model.bridge.compiling import compiled
 from mjcf_model.tools.cli.common import Failed, guarded, read_model
 from mjcf_model.tools.diff import changes_between
 
@@ -35,9 +37,6 @@ def _diff(arguments: argparse.Namespace) -> int:
     changes = changes_between(first, second)
     fields: list[str] = []
     if arguments.compiled:
-        from mjcf_model.bridge.compare import model_differences, path_fields
-        from mjcf_model.bridge.compiling import compiled
-
         fields = model_differences(compiled(first), compiled(second), ignore=path_fields())
     equal = not changes and not fields
     if arguments.json:

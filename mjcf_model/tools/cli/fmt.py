@@ -1,7 +1,7 @@
 """``mjcf-model fmt``: lay MJCF files out tidily, as ``ruff format`` does for code.
 
 Indentation, one element a line and long start tags wrapped; comments, blank lines
-between elements and the spelling of numbers kept (:mod:`serializers.tidy`). The
+between elements and the spelling of numbers kept (:mod:`mjcf_model.serializers.tidy`). The
 width and indentation come from ``[tool.mjcf-model]`` in the nearest
 ``pyproject.toml`` (``width``, ``indent``, ``normalize-numbers``), or the options.
 A file is rewritten only with proof that MuJoCo compiles the rewrite to the same

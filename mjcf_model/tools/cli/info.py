@@ -24,6 +24,8 @@ import sys
 from collections.abc import Mapping
 from typing import Any
 
+from mjcf_model.bridge.compiling import compiled
+from mjcf_model.errors import MjcfAssetError, MjcfCompileError
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.tools.cli.common import Failed, add_model_argument, guarded, read_model
 from mjcf_model.tools.info import ModelSummary, effective_attributes, model_summary
@@ -51,9 +53,6 @@ def _info(arguments: argparse.Namespace) -> int:
 
 def _compiles(model: Mujoco) -> str:
     """``yes``, or ``no:`` and where and why MuJoCo rejects ``model``."""
-    from mjcf_model.bridge.compiling import compiled
-    from mjcf_model.errors import MjcfAssetError, MjcfCompileError
-
     try:
         compiled(model)
     except (MjcfCompileError, MjcfAssetError) as error:

@@ -11,19 +11,19 @@ import argparse
 import sys
 from typing import Any
 
+from mjcf_model.files.png import png_bytes
+from mjcf_model.serializers.dumping import write_atomically
 from mjcf_model.tools.cli.common import STDIO, Failed, add_model_argument, guarded, read_model
+from mjcf_model.tools.render import choose_backend, render
 
 __all__ = ["add_parsers"]
 
 
 def _render(arguments: argparse.Namespace) -> int:
-    from mjcf_model.tools.render import choose_backend
 
     if arguments.width <= 0 or arguments.height <= 0:
         raise Failed(f"the size must be positive, not {arguments.width} x {arguments.height}")
     choose_backend()  # before MuJoCo is imported
-    from mjcf_model.files.png import png_bytes
-    from mjcf_model.tools.render import render
 
     model = read_model(arguments.file)
     pixels = render(model, camera=arguments.camera, width=arguments.width, height=arguments.height)
@@ -31,8 +31,6 @@ def _render(arguments: argparse.Namespace) -> int:
     if arguments.output == STDIO:
         sys.stdout.buffer.write(data)
     else:
-        from serializers.dumping import write_atomically
-
         write_atomically(data, arguments.output)
     return 0
 

@@ -13,7 +13,7 @@ Example:
     >>> cup = str(folder / "cup.xml")
     >>> main(["compose", scene, cup, f"{cup}:b_", "pos=0,-0.5,0"])  # b_cup half a metre to -y
     0
-    >>> from serializers import load
+    >>> from mjcf_model import load
     >>> world = load(scene).worldbody
     >>> [body.name for body in world.bodies], [body.name for body in world.frames[-1].bodies]
     (['cup'], ['b_cup'])
@@ -27,8 +27,11 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from mjcf_model.bridge.compiling import compiled
+from mjcf_model.errors import MjcfCompileError
 from mjcf_model.nodes.base import AnyElement
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.serializers import export
 from mjcf_model.tools.cli.common import (
     STDIO,
     Failed,
@@ -38,6 +41,9 @@ from mjcf_model.tools.cli.common import (
     write_model,
 )
 from mjcf_model.tools.cli.parts import PLACEMENT_FORM, parts_of, split_part
+from mjcf_model.transforms.composition.attaching import attach_all
+from mjcf_model.transforms.naming.renaming import prefixed
+from mjcf_model.transforms.scaling.transform import scaled
 
 __all__ = ["add_parsers", "split_part"]
 
@@ -72,9 +78,6 @@ def _model(node: AnyElement) -> Mujoco:
 
 def _checked(model: AnyElement) -> Mujoco:
     """``model``, once MuJoCo has compiled it (else :class:`Failed` with MuJoCo's reason)."""
-    from mjcf_model.bridge.compiling import compiled
-    from mjcf_model.errors import MjcfCompileError
-
     try:
         compiled(_model(model))
     except MjcfCompileError as error:
@@ -83,8 +86,6 @@ def _checked(model: AnyElement) -> Mujoco:
 
 
 def _compose(arguments: argparse.Namespace) -> int:
-    from mjcf_model.transforms.composition.attaching import attach_all
-    from mjcf_model.transforms.naming.renaming import prefixed
 
     if (
         arguments.export
@@ -122,14 +123,12 @@ def _compose(arguments: argparse.Namespace) -> int:
 
 
 def _prefix(arguments: argparse.Namespace) -> int:
-    from mjcf_model.transforms.naming.renaming import prefixed
 
     write_model(_checked(prefixed(read_model(arguments.file), arguments.prefix)), arguments.output)
     return 0
 
 
 def _scale(arguments: argparse.Namespace) -> int:
-    from mjcf_model.transforms.scaling.transform import scaled
 
     factor = arguments.factor[0] if len(arguments.factor) == 1 else arguments.factor
     model = scaled(read_model(arguments.file), factor, mass=arguments.mass)
@@ -138,7 +137,6 @@ def _scale(arguments: argparse.Namespace) -> int:
 
 
 def _export(model: Mujoco, directory: str) -> None:
-    from serializers import export
 
     written = export(model, directory)
     sys.stderr.write(f"exported to {written}\n")

@@ -26,7 +26,7 @@ contents; neither: everything in ``m``'s world). Measured on MuJoCo 3.9 and 4.0:
 left out (MuJoCo fills each with the whole model's initial state, see
 :mod:`mjcf_model.transforms.composition.inlining`).
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> arm = loads('''<mujoco><worldbody><body name="base"><joint name="j0"/>
 ...   <body name="hand"><joint name="j1"/><geom size="1"/></body></body></worldbody>
 ...   <actuator><motor joint="j0"/><motor joint="j1"/></actuator></mujoco>''')
@@ -257,7 +257,7 @@ def attached_part(
             in a way whose copying is not known.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> cup = loads('<mujoco><option timestep="0.1"/><worldbody><body name="cup"/>'
         ...             '</worldbody></mujoco>')
         >>> [s.tag for s in attached_part(cup, body=None, frame=None, same_model=False).elements]

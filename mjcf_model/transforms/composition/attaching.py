@@ -7,7 +7,7 @@ keyframes. No wrapper body is added. Names the two models both declare are an
 error (give the child a ``prefix``), except assets that are the same element in
 both, which are kept once.
 
->>> from serializers import dumps, loads
+>>> from mjcf_model import dumps, loads
 >>> world = loads('<mujoco><worldbody><geom name="floor" type="plane" size="1 1 1"/>'
 ...               '</worldbody></mujoco>')
 >>> cube = loads('<mujoco><worldbody><body name="cube"><freejoint/><geom size=".1"/></body>'
@@ -31,6 +31,7 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.nodes.default import Default
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.serializers.skins import inline_skin_files
 from mjcf_model.transforms.composition.conventions import in_conventions
 from mjcf_model.transforms.composition.defaults import classed, merged_settings, sets_values
 from mjcf_model.transforms.composition.keyframes import (
@@ -159,7 +160,7 @@ def attach(
 
         A gripper at the hand's site, turned a quarter about the site's z axis:
 
-        >>> from serializers import dumps
+        >>> from mjcf_model import dumps
         >>> hand = Body(name="hand", children=[Site(name="tool", pos=[0, 0, 0.1])])
         >>> robot = Mujoco(children=[Worldbody(children=[hand])])
         >>> gripper = Mujoco(children=[Worldbody(children=[Body(name="palm")])])
@@ -208,7 +209,7 @@ def attach_all(
     once, so attaching N children costs time linear in N.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> cup = loads('<mujoco><worldbody><body name="cup"/></worldbody></mujoco>')
         >>> scene = attach_all(loads("<mujoco/>"), [(cup, f"c{i}_") for i in range(3)])
         >>> [b.name for b in scene.worldbody.bodies]
@@ -226,7 +227,7 @@ def attach_in_frame(parent: Mujoco, child: Mujoco, *, frame: str, prefix: str = 
     order (MuJoCo's numbering) among its siblings, as MuJoCo's ``<attach>`` does.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> parent = loads('<mujoco><worldbody><body name="a"/><frame name="here"/>'
         ...                '<body name="z"/></worldbody></mujoco>')
         >>> cup = loads('<mujoco><worldbody><body name="cup"/></worldbody></mujoco>')
@@ -359,7 +360,6 @@ class _Composer:
         if cached is None or cached[0] is not child:
             for element, key, _ in keyed_walk(child):
                 refuse_opaque(element, key, "attach")
-            from serializers.skins import inline_skin_files
 
             ready = self._in_parent_terms(inline_skin_files(child))
             names = declared_names(ready)

@@ -1,6 +1,6 @@
 """The ``<compiler>`` settings a model is read under, and how attaching treats each.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> compiler_settings(loads('<mujoco><compiler angle="radian"/></mujoco>'))["angle"]
 'radian'
 """
@@ -81,7 +81,7 @@ def compiler_settings(model: Mujoco) -> Settings:
         MjcfValueError: ``eulerseq`` is not 3 characters long (MuJoCo rejects it).
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> m = loads('<mujoco><compiler angle="radian"/><compiler angle="degree"/></mujoco>')
         >>> compiler_settings(m)["angle"], compiler_settings(m)["eulerseq"]
         ('degree', 'xyz')

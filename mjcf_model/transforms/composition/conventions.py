@@ -49,7 +49,7 @@ path settings      :data:`PATH_SETTINGS`: not handled here; file paths are left
 model-wide         :data:`MODEL_WIDE_SETTINGS`: the parent's value is kept.
 ================== ===========================================================
 
->>> from serializers import dumps, loads
+>>> from mjcf_model import dumps, loads
 >>> child = loads('<mujoco><compiler angle="radian"/><worldbody><body name="b">'
 ...               '<joint name="j" range="0 1.5"/><geom size="1"/></body></worldbody></mujoco>')
 >>> print(dumps(in_conventions(child, loads("<mujoco/>")), canonical=True), end="")
@@ -382,7 +382,7 @@ def in_conventions(child: Mujoco, parent: Mujoco) -> Mujoco:
             elements (load it with ``inline_includes=True``).
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> child = loads('<mujoco><compiler angle="radian" eulerseq="zyx"/><worldbody>'
         ...               '<body euler="1.5707963267948966 0 0"/></worldbody></mujoco>')
         >>> body = in_conventions(child, loads("<mujoco/>")).worldbody.bodies[0]

@@ -130,7 +130,7 @@ def inertia_kept(child: Mujoco, converted: Mujoco, mine: Settings, theirs: Setti
     for is made again from the same inertia), so that only inertia settings count.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> child = loads('<mujoco><worldbody><body><freejoint/><geom size="0.1" mass="2"/>'
         ...               '</body></worldbody></mujoco>')
         >>> settings = {"inertiafromgeom": "auto", "boundmass": "0", "boundinertia": "0",

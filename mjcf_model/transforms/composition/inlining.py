@@ -36,7 +36,7 @@ and 4.0, the expansion reproduces:
 Includes are inlined first; asset ``<model>`` elements are removed at the end.
 
 >>> import pathlib, tempfile
->>> from serializers import dumps, load
+>>> from mjcf_model import dumps, load
 >>> folder = pathlib.Path(tempfile.mkdtemp())
 >>> _ = (folder / "cup.xml").write_text('<mujoco model="cup"><worldbody><body name="cup">'
 ...                                     '<geom size="0.1"/></body></worldbody></mujoco>')
@@ -61,7 +61,10 @@ from typing import TYPE_CHECKING
 import attrs
 import numpy as np
 
+from mjcf_model.bridge.compare import compiled_names
+from mjcf_model.bridge.compiling import compiled
 from mjcf_model.errors import (
+    MjcfCompileError,
     MjcfIncludeCycleError,
     MjcfLookupError,
     MjcfValueError,
@@ -71,6 +74,8 @@ from mjcf_model.nodes.body import Frame
 from mjcf_model.nodes.compiler import Compiler
 from mjcf_model.nodes.keyframe import Key, Keyframe
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.serializers import load
+from mjcf_model.serializers.dumping import inlined_includes
 from mjcf_model.transforms.composition.attached_parts import attached_part
 from mjcf_model.transforms.composition.attaching import attach_in_frame
 from mjcf_model.transforms.composition.compiler_settings import compiler_settings
@@ -81,7 +86,6 @@ from mjcf_model.transforms.naming.renaming import declared_names
 from mjcf_model.tree.paths import replaced_at
 from mjcf_model.tree.traversal import Path as TreePath
 from mjcf_model.tree.traversal import keyed_walk, walk, with_children
-from serializers.dumping import inlined_includes
 
 if TYPE_CHECKING:
     import mujoco
@@ -179,8 +183,6 @@ class _Expansion:
             cycle = " -> ".join(str(p) for p in (*chain, path))
             raise MjcfIncludeCycleError(f"asset <model> files attach each other: {cycle}")
         if path not in self.models:
-            from serializers import load
-
             self.models[path] = self.expanded(load(path, inline_includes=True), (*chain, path))
         return self.models[path]
 
@@ -281,9 +283,6 @@ def _without_model_assets(model: Mujoco) -> Mujoco:
 
 def _with_attached_keys(expanded: Mujoco, original: Mujoco) -> Mujoco:
     """``expanded`` with the keys MuJoCo adds for the attached models' keys."""
-    from mjcf_model.bridge.compare import compiled_names
-    from mjcf_model.bridge.compiling import compiled
-
     reference = compiled(original)
     own = keys_of(expanded)
     names = compiled_names(reference)["key"]
@@ -324,9 +323,6 @@ def _check_keys(result: Mujoco, reference: mujoco.MjModel) -> None:
     against the model before the copies (and copies the keys), so full keys
     cannot be written there.
     """
-    from mjcf_model.bridge.compiling import compiled
-    from mjcf_model.errors import MjcfCompileError
-
     try:
         got = compiled(result)
     except MjcfCompileError as error:
@@ -364,7 +360,7 @@ def inlined_attachments(model: Mujoco) -> Mujoco:
         MjcfCompileError: A sub-model has keyframes and ``model`` does not compile.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads('<mujoco><worldbody><body name="a"><geom size="1"/></body>'
         ...               '<body name="b"><attach body="a" prefix="c_"/></body>'
         ...               '</worldbody></mujoco>')

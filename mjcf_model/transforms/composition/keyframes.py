@@ -22,7 +22,7 @@ With ``keyframes="separate"`` (the default) each part's keys keep their
 prefixing) a key of the parent has becomes part of that key, so one ``home``
 can set a whole fleet; unnamed keys are never merged.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> world = loads('<mujoco><worldbody><body><joint type="slide" ref="0.2"/>'
 ...               '<geom size="1"/></body></worldbody></mujoco>')
 >>> robot = loads('<mujoco><worldbody><body><joint type="slide"/><geom size="1"/></body>'
@@ -101,7 +101,7 @@ def has_keys(model: Mujoco) -> bool:
     """Whether MuJoCo gives ``model`` keyframes: ``<key>`` elements or ``<size nkey>``.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> has_keys(loads('<mujoco><size nkey="1"/></mujoco>')), has_keys(loads("<mujoco/>"))
         (True, False)
 

@@ -10,7 +10,7 @@ the parent's elements they reach (as :func:`mjcf_model.transforms.composition.de
 does for a child), so the top-level class is left empty and the parent compiles
 as before.
 
->>> from serializers import dumps, loads
+>>> from mjcf_model import dumps, loads
 >>> model = loads('<mujoco><default><geom rgba="1 0 0 1"/></default>'
 ...               '<worldbody><body><geom size="1"/></body></worldbody></mujoco>')
 >>> print(dumps(with_main_as_class(model, "parent_main"), canonical=True), end="")
@@ -101,7 +101,7 @@ def with_main_as_class(model: Mujoco, name: str) -> Mujoco:
     A model whose top-level defaults set nothing is returned as it is.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads('<mujoco><default><default class="a"/></default></mujoco>')
         >>> with_main_as_class(model, "m") is model
         True

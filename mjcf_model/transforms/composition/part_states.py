@@ -9,7 +9,7 @@ is attached at: a free joint's position and orientation and a mocap body's pose
 are world coordinates, so they move; a free joint's linear velocity (world
 frame) turns with the placement; everything else is relative and stays.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> cube = loads('<mujoco><worldbody><body pos="0 0 1"><freejoint/><geom size=".1"/></body>'
 ...              '</worldbody><keyframe><key name="up" qpos="0 0 2 1 0 0 0"/></keyframe></mujoco>')
 >>> states = PartStates.of(cube)
@@ -179,7 +179,7 @@ class PartStates:
         """The states with the part attached at ``pose``.
 
         Examples:
-            >>> from serializers import loads
+            >>> from mjcf_model import loads
             >>> ball = loads('<mujoco><worldbody><body mocap="true" pos="1 0 0"/></worldbody>'
             ...              '</mujoco>')
             >>> turn = Pose(pos=(0.0, 0.0, 0.0), quat=(0.0, 0.0, 0.0, 1.0))
@@ -235,7 +235,7 @@ def pose_of_frames(model: Mujoco, frames: Sequence[Frame]) -> Pose:
     compiled alone and its pose read back.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> world = loads("<mujoco/>")
         >>> pose_of_frames(world, [Frame(pos=[1, 0, 0]), Frame(pos=[0, 2, 0])]).pos
         (1.0, 2.0, 0.0)

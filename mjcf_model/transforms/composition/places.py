@@ -7,7 +7,7 @@ and the placement asked for. This is where MjSpec's ``attach`` puts it. With
 ``Where.inside``, a child attached at a frame goes inside that frame instead,
 keeping its place in document order, as MuJoCo's ``<attach>`` element does.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> arm = loads('<mujoco><worldbody><body name="hand"><site name="tip" pos="0 0 0.1"/>'
 ...             '</body></worldbody></mujoco>')
 >>> point = attach_point(arm, Where(at="tip", kind=None, placement=None))
@@ -113,7 +113,7 @@ def attach_point(parent: Mujoco, where: Where) -> AttachPoint | None:
     """Where the children's worlds go in ``parent`` (``None``: appended to its world).
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> arm = loads('<mujoco><worldbody><body name="hand"><frame name="f" pos="1 0 0"/>'
         ...             '</body></worldbody></mujoco>')
         >>> point = attach_point(arm, Where(at="f", kind=None, placement=None))

@@ -5,7 +5,7 @@ the same tag (:data:`LISTS`), keeps the parent's settings (:data:`SETTINGS`,
 warning with :class:`~mjcf_model.errors.MjcfDroppedSettingWarning` for each of
 the child's that is dropped), and writes the scene's keys as one ``<keyframe>``.
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> parent = loads('<mujoco><option timestep="0.002"/></mujoco>')
 >>> child = loads('<mujoco><option timestep="0.01" gravity="0 0 -9.81"/></mujoco>')
 >>> for setting in dropped_settings(by_tag(parent)["option"], by_tag(child)["option"]):

@@ -24,7 +24,7 @@ attach's prefix. :func:`declarations` lists the names an element declares,
 including those read from files (an asset ``<model>`` is named by its file's
 root ``model`` attribute, see :func:`model_file_name`).
 
->>> from serializers import loads
+>>> from mjcf_model import loads
 >>> model = loads('''<mujoco><worldbody><replicate count="12" sep="_">
 ...   <body name="post"><geom size="1"/></body></replicate>
 ...   <flexcomp name="rope" type="grid" count="4 1 1" spacing="1 1 1" dim="1"/>
@@ -51,6 +51,7 @@ from mjcf_model.files.provenance import Folders, file_stem
 from mjcf_model.nodes.base import AnyElement, get_attribute
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import SCHEMA
+from mjcf_model.serializers import load
 from mjcf_model.tree.traversal import keyed_walk
 
 __all__ = [
@@ -190,7 +191,6 @@ def _unreadable(path: Path, error: Exception) -> MjcfAssetError:
 
 @lru_cache(maxsize=256)
 def _root_model_name(path: str, _mtime: int, _size: int) -> str:
-    from serializers import load
 
     try:
         root = load(path)
@@ -256,7 +256,7 @@ class GeneratedNames:
     comes from, :meth:`renamed` gives its new name after a renaming.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads('<mujoco><worldbody><flexcomp name="rope" type="grid" '
         ...               'count="4 1 1" spacing="1 1 1" dim="1"/></worldbody></mujoco>')
         >>> GeneratedNames.of(model).renamed("body", "rope_2", lambda ns, n: "p_" + n, None)
@@ -310,7 +310,7 @@ class GeneratedNames:
         Attachments are not sources here (see :meth:`renamed`).
 
         Examples:
-            >>> from serializers import loads
+            >>> from mjcf_model import loads
             >>> model = loads('<mujoco><worldbody><replicate count="3" sep="-">'
             ...               '<site name="s"/></replicate></worldbody></mujoco>')
             >>> GeneratedNames.of(model).source("site", "s-2")

@@ -18,7 +18,7 @@ without ``model`` copies a body or frame of the same model, so its ``body`` and
 bones' bodies inside the file: renaming bodies then raises, saying to write the
 skin inline first.
 
->>> from serializers import dumps, loads
+>>> from mjcf_model import dumps, loads
 >>> model = loads('''<mujoco><worldbody><body name="arm"><joint name="elbow"/></body></worldbody>
 ... <actuator><motor joint="elbow" name="m"/></actuator></mujoco>''')
 >>> print(dumps(prefixed(model, "left_"), canonical=True), end="")
@@ -43,6 +43,7 @@ from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import NAMESPACES, SCHEMA, ElementSpec, reference_namespace
+from mjcf_model.serializers.skins import inline_skin_files
 from mjcf_model.transforms.naming.generated_names import (
     DECLARING_KEYS,
     MAIN_CLASS,
@@ -84,7 +85,7 @@ def declared_names(node: AnyElement) -> dict[str, frozenset[str]]:
     """The names ``node`` and its descendants declare, by namespace.
 
     Examples:
-        >>> from serializers import loads
+        >>> from mjcf_model import loads
         >>> model = loads('<mujoco><asset><mesh file="parts/hand.stl"/></asset>'
         ...               '<worldbody><body name="b"><geom name="g"/></body></worldbody></mujoco>')
         >>> sorted(declared_names(model).items())
@@ -335,7 +336,7 @@ def prefixed(
         MjcfValueError: Bodies would be renamed while a skin reads their names
             from a ``.skn`` file and the model does not know its folder (a loaded
             model has its skin files written inline first; otherwise call
-            ``serializers.skins.inline_skin_files(model, folder)``).
+            ``mjcf_model.serializers.skins.inline_skin_files(model, folder)``).
         MjcfAssetError: An asset ``<model>`` without ``name`` has a file that
             cannot be read (its name is its file root's ``model`` attribute).
 
@@ -353,8 +354,6 @@ def prefixed(
     if not prefix:
         return node
     if "body" in chosen:
-        from serializers.skins import inline_skin_files
-
         node = inline_skin_files(node)
     excluded = _excluder(exclude)
     if undeclared:

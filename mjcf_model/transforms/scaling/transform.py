@@ -35,6 +35,7 @@ import numpy.typing as npt
 
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, get_attribute, with_attributes
+from mjcf_model.serializers.skins import inline_skin_files
 from mjcf_model.transforms.scaling.context import ScaleContext
 from mjcf_model.transforms.scaling.friction import (
     FLEX_KEYS,
@@ -125,7 +126,7 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
             mesh or geom made by a plugin other than MuJoCo's torus, bowl and gear
             SDFs, or a skin read from a ``.skn`` file in a model that does not know
             its folder (a loaded model has its skin files written inline first;
-            otherwise call ``serializers.skins.inline_skin_files(model, folder)``).
+            otherwise call ``mjcf_model.serializers.skins.inline_skin_files(model, folder)``).
 
     Examples:
         >>> from mjcf_model import Inertial
@@ -138,7 +139,6 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
         raise MjcfValueError(f"mass policy is 'keep' or 'volume', found {mass!r}")
     if factors == (1.0, 1.0, 1.0):
         return node
-    from serializers.skins import inline_skin_files
 
     node = inline_skin_files(node)  # a skin file's vertices and bind poses are lengths
     classes = DefaultClasses.of(node)

@@ -17,8 +17,8 @@ import pytest
 
 from mjcf_model import Body, Geom, Joint, Mujoco, Worldbody, attach, compiled, prefixed
 from mjcf_model.errors import MjcfCompileError
+from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.tree.traversal import with_children
-from serializers import dumps, load, loads
 
 #: A robot with a slot for one element MuJoCo rejects.
 ROBOT = """<mujoco model="robot">

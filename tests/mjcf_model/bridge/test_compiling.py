@@ -14,7 +14,7 @@ from mjcf_model.bridge import compiling
 from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.files.png import png_bytes
 from mjcf_model.files.provenance import file_references
-from serializers import bundling, dumps, load, loads
+from mjcf_model.serializers import bundling, dumps, load, loads
 from tests.support.model_files import ROBOT, _same, obj_mesh
 from tests.support.skin_files import _skin_model
 

@@ -23,9 +23,9 @@ from mjcf_model.bridge.compare import model_differences
 from mjcf_model.bridge.patching import FIELDS
 from mjcf_model.nodes.base import AnyElement, attribute_items, get_attribute
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.serializers import load, loads
 from mjcf_model.strategies import models
 from mjcf_model.values import numbers_of
-from serializers import load, loads
 from tests.conftest import MUJOCO_VERSION, PER_CLASS, compiling_corpus, corpus_id
 
 #: MuJoCo before 4.0 patches fewer fields (``patching._BEFORE_4``).
@@ -220,7 +220,7 @@ def test_readme_process_pool_sweep_runs_as_a_script(tmp_path: Path) -> None:
     import os
 
     import mjcf_model
-    import serializers
+    from mjcf_model import serializers
 
     # The script imports the same library this test does (installed, or the checkout).
     roots = {str(Path(m.__file__).parents[1]) for m in (mjcf_model, serializers)}

@@ -17,7 +17,7 @@ from mjcf_model.compat.geom_roles import (
     with_visual_material,
 )
 from mjcf_model.nodes.base import get_attribute
-from serializers import from_etree, loads, to_etree
+from mjcf_model.serializers import from_etree, loads, to_etree
 
 #: robosuite's category of each role (its ``sort_elements`` filter).
 CATEGORY = {"collision": "contact_geoms", "visual": "visual_geoms", None: None}

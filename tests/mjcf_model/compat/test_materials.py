@@ -36,8 +36,8 @@ from mjcf_model.compat.materials import (
 )
 from mjcf_model.compat.mjcf_utils.materials import default_material, flat_material
 from mjcf_model.nodes.base import AnyElement, Element, get_attribute
+from mjcf_model.serializers import dumps, load, loads, to_etree
 from mjcf_model.strategies import models
-from serializers import dumps, load, loads, to_etree
 from tests.conftest import corpus_id, loading_corpus
 from tests.support.compat_utils import DEFAULT_MATERIAL_TEXTURE
 

@@ -36,7 +36,7 @@ from mjcf_model.compat.typed_builders import (
     new_site,
 )
 from mjcf_model.nodes.base import AnyElement, get_attribute
-from serializers import dumps, to_etree
+from mjcf_model.serializers import dumps, to_etree
 
 Builder = Callable[..., Any]
 

@@ -11,7 +11,7 @@ from mjcf_model import (
     MjcfValueError,
     compiled,
 )
-from serializers import dump, dumps, load, loads
+from mjcf_model.serializers import dump, dumps, load, loads
 from tests.support.model_files import ROBOT, _same, obj_mesh, with_files, write_tree
 
 # -- Where a model's files are: compiled in memory, dumped elsewhere, exported, MuJoCo as

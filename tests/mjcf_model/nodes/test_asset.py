@@ -7,7 +7,7 @@ import numpy as np
 
 from mjcf_model import Asset
 from mjcf_model.bridge.compare import compiled_names
-from serializers import loads
+from mjcf_model.serializers import loads
 from tests.support.node_classes import loaded_from, text_round_trip_differences
 
 #: Assets of every kind a model can hold without files, interleaved.

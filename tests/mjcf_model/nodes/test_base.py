@@ -18,7 +18,7 @@ from mjcf_model import (
     get_attribute,
     with_attributes,
 )
-from serializers import dumps, load, loads
+from mjcf_model.serializers import dumps, load, loads
 
 # -- Hostile and broken input: no hang, no stray exception, and MuJoCo decides what loads. -----
 #

@@ -25,8 +25,8 @@ from mjcf_model import (
     compiled,
 )
 from mjcf_model.bridge.compare import model_differences
+from mjcf_model.serializers import dumps, from_dict, loads, to_dict
 from mjcf_model.strategies import element_values, models
-from serializers import dumps, from_dict, loads, to_dict
 from tests.conftest import PER_CLASS
 from tests.support.node_classes import TYPED_CLASSES, _reference_equal, _same_compiled
 

@@ -6,7 +6,7 @@ import mujoco
 import numpy as np
 
 from mjcf_model import Compiler, Option, OptionFlag, Statistic
-from serializers import loads
+from mjcf_model.serializers import loads
 from tests.support.node_classes import declared_in, loaded_from, text_round_trip_differences
 
 #: Every settings element, each with values MuJoCo's defaults do not have.

@@ -6,7 +6,7 @@ import mujoco
 import numpy as np
 
 from mjcf_model import Numeric, Text, Tuple
-from serializers import loads
+from mjcf_model.serializers import loads
 from tests.support.node_classes import declared_in, loaded_from, text_round_trip_differences
 
 #: One of each kind of custom data.

@@ -6,8 +6,8 @@ import mujoco
 
 from mjcf_model import Flex, Flexcomp, FlexcompEdge, FlexEdge
 from mjcf_model.bridge.compare import compiled_names
+from mjcf_model.serializers import load
 from mjcf_model.tree.traversal import walk
-from serializers import load
 from tests.conftest import FIXTURES
 from tests.support.node_classes import declared_in, loaded_from, text_round_trip_differences
 

@@ -6,7 +6,7 @@ import mujoco
 import numpy as np
 
 from mjcf_model import Connect, EqualityJoint, EqualityTendon, Weld
-from serializers import load
+from mjcf_model.serializers import load
 from tests.conftest import FIXTURES
 from tests.support.node_classes import declared_in, loaded_from, text_round_trip_differences
 

@@ -14,9 +14,9 @@ import pytest
 from mjcf_model import MjcfValueError
 from mjcf_model.nodes.base import build_node, field_table, get_attribute
 from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.serializers import loads
 from mjcf_model.tree.traversal import keyed_walk
 from mjcf_model.values import Unparsed
-from serializers import loads
 from tests.conftest import printed_schema
 
 #: A model that holds one element of each key, with ``{a}`` where the attribute goes.

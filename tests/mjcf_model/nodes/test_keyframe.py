@@ -6,7 +6,7 @@ import mujoco
 import numpy as np
 
 from mjcf_model import Keyframe
-from serializers import loads
+from mjcf_model.serializers import loads
 from tests.support.node_classes import loaded_from, text_round_trip_differences
 
 #: Three keys of a slide and a hinge, one unnamed, one with a control.

@@ -6,7 +6,7 @@ import mujoco
 
 from mjcf_model import Extension, ExtensionPlugin, Plugin, PluginConfig, PluginInstance
 from mjcf_model.bridge.compare import compiled_names
-from serializers import loads
+from mjcf_model.serializers import loads
 from tests.support.node_classes import loaded_from, text_round_trip_differences
 
 #: A configured PID instance, declared in ``<extension>``, that an actuator uses.

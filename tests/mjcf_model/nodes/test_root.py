@@ -15,7 +15,7 @@ from mjcf_model import (
     Tendon,
     Worldbody,
 )
-from serializers import load
+from mjcf_model.serializers import load
 from tests.conftest import FIXTURES
 from tests.support.fixture_checks import section
 

@@ -7,7 +7,7 @@ import numpy as np
 
 from mjcf_model import Visual
 from mjcf_model.nodes.base import attribute_text
-from serializers import loads
+from mjcf_model.serializers import loads
 from tests.support.node_classes import declared_in, loaded_from, text_round_trip_differences
 
 #: Every ``<visual>`` child, each with a value MuJoCo's defaults do not have.

@@ -19,8 +19,8 @@ from mjcf_model.schema.namespaces import (
     child_key,
     reference_namespace,
 )
+from mjcf_model.serializers import dumps, loads
 from mjcf_model.tree.traversal import keyed_walk, map_elements
-from serializers import dumps, loads
 from tests.conftest import printed_schema
 from tests.support.oracles import prefix_problems
 from tests.support.schema_cases import UNUSABLE, known, reference_cases, reference_rows

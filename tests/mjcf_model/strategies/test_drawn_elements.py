@@ -11,8 +11,8 @@ from hypothesis import strategies as st
 
 from mjcf_model import Body, Geom, Joint, Material, Mesh, Mujoco, Site, Worldbody
 from mjcf_model.nodes.asset import Asset
+from mjcf_model.serializers import dumps, loads
 from mjcf_model.strategies.drawn_elements import elements, geoms, joints, materials, meshes, sites
-from serializers import dumps, loads
 
 #: A few examples each: the whole-model strategy is searched in ``test_drawn_models``.
 FEW = settings(max_examples=10, deadline=None)

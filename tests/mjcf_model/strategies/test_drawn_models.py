@@ -10,8 +10,8 @@ from hypothesis import HealthCheck, Phase, find, settings
 from hypothesis.errors import NoSuchExample
 
 from mjcf_model import Mujoco
+from mjcf_model.serializers import dumps
 from mjcf_model.strategies import models
-from serializers import dumps
 
 #: What a drawn model may hold, each found by an XPath over its text.
 FAMILIES = {

@@ -6,8 +6,8 @@ import mujoco
 from hypothesis import given, settings
 
 from mjcf_model import Comment
+from mjcf_model.serializers import dumps, loads
 from mjcf_model.strategies import comments, names
-from serializers import dumps, loads
 
 FEW = settings(max_examples=20, deadline=None)
 

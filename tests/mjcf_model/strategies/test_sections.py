@@ -6,9 +6,9 @@ import mujoco
 from hypothesis import given, settings
 
 from mjcf_model import Mujoco
+from mjcf_model.serializers import dumps, loads
 from mjcf_model.strategies import models
 from mjcf_model.strategies.sections import _joint_types
-from serializers import dumps, loads
 
 #: Joints in nested bodies, frames and a free body, written out of MuJoCo's order.
 TREE = """<mujoco><worldbody>

@@ -13,13 +13,13 @@ def test_written_model_that_does_not_compile_is_an_error(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """check_file reports an error, not a crash, when the written text does not compile."""
-    import serializers
+    from mjcf_model.tools import check
     from mjcf_model.tools.check import check_file
 
     path = tmp_path / "m.xml"
     path.write_text("<mujoco><worldbody><geom size='0.1'/></worldbody></mujoco>")
     assert check_file(path).ok
-    monkeypatch.setattr(serializers, "dumps", lambda node: "<mujoco><nonsense/></mujoco>")
+    monkeypatch.setattr(check, "dumps", lambda node: "<mujoco><nonsense/></mujoco>")
     result = check_file(path)
     assert result.status == "error"
     assert "the written model does not compile" in result.message

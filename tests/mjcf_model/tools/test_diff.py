@@ -11,11 +11,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mjcf_model import Mujoco, declared_names, find_all, prefixed, with_attributes
+from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.strategies import models
 from mjcf_model.tools.diff import Change, changes_between
 from mjcf_model.tree.paths import replaced_at
 from mjcf_model.tree.traversal import walk
-from serializers import dumps, load, loads
 from tests.conftest import compiling_corpus, corpus_id
 
 

@@ -12,6 +12,7 @@ import pytest
 from hypothesis import given, settings
 
 from mjcf_model.bridge.compare import model_differences, path_fields
+from mjcf_model.serializers import dumps
 from mjcf_model.strategies import models
 from mjcf_model.tools.formatting import (
     FormatOptions,
@@ -19,7 +20,6 @@ from mjcf_model.tools.formatting import (
     format_text,
     options_from_pyproject,
 )
-from serializers import dumps
 from tests.conftest import compiling_corpus, corpus_id, loading_corpus
 
 # -- ``fmt``'s library: every real file's canonical form is proven and stable. -----------------

@@ -10,10 +10,10 @@ import pytest
 from hypothesis import given, settings
 
 from mjcf_model import MjcfLookupError, Mujoco
+from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.strategies import models
 from mjcf_model.tools.info import effective_attributes, model_summary
 from mjcf_model.tree.traversal import keyed_walk, walk
-from serializers import dumps, load, loads
 from tests.conftest import compiling_corpus, corpus_id
 
 #: MuJoCo's built-in values of the attributes the property test reads.

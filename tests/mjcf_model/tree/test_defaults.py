@@ -10,9 +10,9 @@ import mujoco
 import numpy as np
 
 from mjcf_model import Geom, Joint, Motor
+from mjcf_model.serializers import loads
 from mjcf_model.tree.defaults import MAIN, DefaultClasses
 from mjcf_model.tree.traversal import keyed_walk
-from serializers import loads
 
 #: Nested classes reached by ``class``, by an inherited ``childclass`` and by main.
 MODEL = """<mujoco>

@@ -9,11 +9,11 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from mjcf_model import Mujoco, find, find_all, prefixed
+from mjcf_model.serializers import loads
 from mjcf_model.strategies import models
 from mjcf_model.tree import indexes
 from mjcf_model.tree.indexes import TagIndex, elements_in_order, index_of
 from mjcf_model.tree.traversal import walk
-from serializers import loads
 
 
 @given(models(), st.data())

@@ -6,9 +6,9 @@ import pytest
 
 from mjcf_model import Body, Comment, Geom, Site
 from mjcf_model.errors import MjcfValueError
+from mjcf_model.serializers import dumps, loads
 from mjcf_model.tree.paths import appended_at, edited_at, replaced_at, subtree_at
 from mjcf_model.tree.traversal import walk
-from serializers import dumps, loads
 
 #: Two arms with a comment between them, the second with a hand.
 MODEL = loads(

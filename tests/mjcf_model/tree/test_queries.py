@@ -11,8 +11,8 @@ from robosuite.utils import mjcf_utils
 
 from mjcf_model import Body, Geom, Mujoco, Site, Worldbody
 from mjcf_model.nodes.base import get_attribute
+from mjcf_model.serializers import load, loads
 from mjcf_model.tree.queries import find, find_all, parent_of
-from serializers import load, loads
 from tests.conftest import corpus_id
 from tests.support.query_models import CORPUS, MODEL, _names
 

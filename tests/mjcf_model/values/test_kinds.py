@@ -16,7 +16,7 @@ from mjcf_model import (
     prefixed,
     scaled,
 )
-from serializers import from_dict, from_etree, loads, to_dict, to_etree
+from mjcf_model.serializers import from_dict, from_etree, loads, to_dict, to_etree
 from tests.support.oracles import _round_trips_like_mujoco
 
 # -- Hostile and broken input: no hang, no stray exception, and MuJoCo decides what loads. -----

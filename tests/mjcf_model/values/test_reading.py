@@ -10,12 +10,11 @@ import numpy as np
 import pytest
 
 import mjcf_model
-import serializers
 from mjcf_model import (
     Geom,
     MjcfValueError,
 )
-from serializers import loads
+from mjcf_model.serializers import loads
 
 # -- Hostile and broken input: no hang, no stray exception, and MuJoCo decides what loads. -----
 #
@@ -24,7 +23,7 @@ from serializers import loads
 
 
 #: The packages as imported: the installed wheel under tests/run_installed.py.
-PACKAGES = [Path(mjcf_model.__file__).parent, Path(serializers.__file__).parent]
+PACKAGES = [Path(mjcf_model.__file__).parent, Path(mjcf_model.serializers.__file__).parent]
 
 
 # -- numbers ---------------------------------------------------------------------------

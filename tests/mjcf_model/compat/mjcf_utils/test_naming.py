@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 from mjcf_model import Mujoco
 from mjcf_model.compat.mjcf_utils.constants import MUJOCO_NAMED_ATTRIBUTES
 from mjcf_model.compat.mjcf_utils.naming import prefixed_attributes
+from mjcf_model.serializers import to_etree
 from mjcf_model.strategies import models
-from serializers import to_etree
 from tests.support.compat_utils import (
     E2,
     TAGS,

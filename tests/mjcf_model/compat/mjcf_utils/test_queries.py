@@ -12,10 +12,10 @@ from hypothesis import given
 from hypothesis import strategies as st
 from robosuite.utils import mjcf_utils
 
-import serializers
+from mjcf_model import serializers
 from mjcf_model.compat.mjcf_utils.queries import Categories, categorized
+from mjcf_model.serializers import load
 from mjcf_model.tree.queries import find
-from serializers import load
 from tests.conftest import corpus_id
 from tests.support.compat_utils import (
     TAGS,

@@ -12,8 +12,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from mjcf_model.nodes import Body, Geom, Joint, Mesh, Site
+from mjcf_model.serializers import to_etree
 from mjcf_model.strategies import elements
-from serializers import to_etree
 from tests.support.compat_utils import (
     differential,
     messy_trees,

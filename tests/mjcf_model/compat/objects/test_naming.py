@@ -16,7 +16,7 @@ from robosuite.utils import mjcf_utils as rs_utils
 from mjcf_model.compat import objects as ours
 from mjcf_model.compat.objects import naming
 from mjcf_model.compat.objects.naming import naming_skeleton, robosuite_prefixed
-from serializers import from_etree, to_etree
+from mjcf_model.serializers import from_etree, to_etree
 from tests.support.compat_objects import _OBJECT, assert_same_object
 from tests.support.plan_counting import PLANNED_AT_THE_SECOND_COPY
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import mujoco
 
 from mjcf_model import Motor, Muscle, Position
-from serializers import load
+from mjcf_model.serializers import load
 from tests.conftest import FIXTURES
 from tests.support.node_classes import declared_in, loaded_from, text_round_trip_differences
 

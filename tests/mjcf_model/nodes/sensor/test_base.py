@@ -6,7 +6,7 @@ import mujoco
 
 from mjcf_model import Sensor
 from mjcf_model.nodes.sensor.base import NoisySensor, SensorElement
-from serializers import load
+from mjcf_model.serializers import load
 from tests.conftest import FIXTURES
 from tests.support.node_classes import declared_in, loaded_from, text_round_trip_differences
 

@@ -10,8 +10,8 @@ import pytest
 from mjcf_model import FramePos, Motor, inlined_attachments
 from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
+from mjcf_model.serializers import load
 from mjcf_model.transforms.composition.attached_parts import element_references
-from serializers import load
 from tests.conftest import MUJOCO_VERSION
 from tests.support.attach_files import attached_body
 

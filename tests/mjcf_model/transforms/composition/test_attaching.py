@@ -13,10 +13,10 @@ import pytest
 from mjcf_model import Mujoco, compiled, find, get_attribute
 from mjcf_model.bridge.compare import compiled_names
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
+from mjcf_model.serializers import dumps, load, loads
+from mjcf_model.serializers.skins import inline_skin_files
 from mjcf_model.transforms.composition.attaching import attach, attach_all, attach_in_frame
 from mjcf_model.tree.queries import find_all
-from serializers import dumps, load, loads
-from serializers.skins import inline_skin_files
 from tests.conftest import FIXTURES, compiling_corpus, corpus_id
 from tests.support.composition_oracle import PlacedPart, composition_problems
 

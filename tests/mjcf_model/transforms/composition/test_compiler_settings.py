@@ -12,12 +12,12 @@ from mjcf_model.nodes.compiler import Compiler
 from mjcf_model.nodes.node_info import BASE_FIELDS
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import SCHEMA
+from mjcf_model.serializers import loads
 from mjcf_model.transforms.composition.conventions import (
     CONVERTED_SETTINGS,
     MODEL_WIDE_SETTINGS,
     PATH_SETTINGS,
 )
-from serializers import loads
 from tests.conftest import printed_schema
 
 # -- A child rewritten into a parent's compiler conventions compiles as the child alone. -------

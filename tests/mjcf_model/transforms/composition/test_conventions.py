@@ -19,6 +19,7 @@ from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.nodes.base import Node, attribute_items, get_attribute, with_attributes
 from mjcf_model.nodes.compiler import Compiler
 from mjcf_model.nodes.root import Mujoco
+from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.transforms.composition.attaching import attach
 from mjcf_model.transforms.composition.conventions import (
     CONVERTED_SETTINGS,
@@ -28,7 +29,6 @@ from mjcf_model.transforms.composition.conventions import (
     in_conventions,
 )
 from mjcf_model.tree.traversal import with_children
-from serializers import dumps, load, loads
 from tests.conftest import FIXTURES, MUJOCO_VERSION, compiling_corpus, corpus_id
 
 # -- A child rewritten into a parent's compiler conventions compiles as the child alone. -------

@@ -8,7 +8,7 @@ import pytest
 
 from mjcf_model import attach, compiled, find, get_attribute
 from mjcf_model.errors import MjcfValueError
-from serializers import loads
+from mjcf_model.serializers import loads
 
 # -- The child's top-level defaults reach, after attaching, exactly the elements they reached
 #    alone.

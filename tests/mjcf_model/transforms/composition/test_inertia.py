@@ -8,7 +8,7 @@ import pytest
 
 from mjcf_model import Mujoco, attach, compiled
 from mjcf_model.errors import MjcfValueError
-from serializers import loads
+from mjcf_model.serializers import loads
 
 # -- A child attached under other inertia settings keeps every body's mass and inertia. --------
 #

@@ -20,9 +20,9 @@ from mjcf_model.nodes.base import Comment, get_attribute
 from mjcf_model.nodes.body import Worldbody
 from mjcf_model.nodes.compiler import Compiler
 from mjcf_model.nodes.keyframe import Keyframe
+from mjcf_model.serializers import dump, load, loads
 from mjcf_model.tree.queries import find, find_all, parent_of
 from mjcf_model.tree.traversal import walk
-from serializers import dump, load, loads
 from tests.conftest import FIXTURES, MUJOCO_VERSION, compiling_corpus, corpus_id
 from tests.support.attach_files import written
 from tests.support.oracles import prefix_problems, scaled_problems

@@ -19,8 +19,8 @@ from mjcf_model import (
     compiled,
 )
 from mjcf_model.nodes.base import get_attribute
+from mjcf_model.serializers import loads
 from mjcf_model.tree.traversal import with_children
-from serializers import loads
 from tests.conftest import MUJOCO_VERSION
 from tests.support.composition_oracle import PlacedPart, composition_problems
 

@@ -18,8 +18,8 @@ from mjcf_model import (
 )
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.nodes.default import Default
+from mjcf_model.serializers import loads
 from mjcf_model.tree.queries import find_all
-from serializers import loads
 from tests.support.composition_oracle import PlacedPart, composition_problems
 
 # -- Hostile and broken input: no hang, no stray exception, and MuJoCo decides what loads. -----

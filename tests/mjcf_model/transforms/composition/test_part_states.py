@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from mjcf_model import MjcfCompileError, MjcfValueError, attach, compiled
+from mjcf_model.serializers import load, loads
 from mjcf_model.transforms.composition.part_states import PartStates
-from serializers import load, loads
 from tests.conftest import FIXTURES, MUJOCO_VERSION
 from tests.support.composition_oracle import PlacedPart, composition_problems
 

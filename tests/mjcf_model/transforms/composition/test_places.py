@@ -14,9 +14,9 @@ import pytest
 from mjcf_model import Mujoco, find, find_all, get_attribute, with_attributes
 from mjcf_model.bridge.compare import compiled_names
 from mjcf_model.errors import MjcfLookupError, MjcfValueError
+from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.transforms.composition.attaching import AttachKind, attach, attach_all
 from mjcf_model.tree.traversal import map_elements
-from serializers import dumps, load, loads
 from tests.conftest import FIXTURES, corpus_files
 
 # -- attach() at a site or a frame, with a placement: MuJoCo's MjSpec attach is the referee. ---

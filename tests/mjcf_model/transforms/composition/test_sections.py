@@ -17,7 +17,7 @@ from mjcf_model import (
     attach_all,
     compiled,
 )
-from serializers import loads
+from mjcf_model.serializers import loads
 
 # -- A child's settings that the parent's replace are named in one warning, at the attach call.
 #

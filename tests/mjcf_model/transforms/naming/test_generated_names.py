@@ -14,6 +14,7 @@ from mjcf_model import Body, GenericElement
 from mjcf_model.bridge.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.errors import MjcfAssetError, MjcfError
 from mjcf_model.nodes.base import TypedElement
+from mjcf_model.serializers import dumps, from_dict, from_etree, load, loads, to_dict, to_etree
 from mjcf_model.tools.check import check_file
 from mjcf_model.transforms.naming.generated_names import (
     GeneratedNames,
@@ -22,7 +23,6 @@ from mjcf_model.transforms.naming.generated_names import (
 )
 from mjcf_model.transforms.naming.renaming import declared_names, prefix_map, prefixed, renamed
 from mjcf_model.tree.traversal import walk
-from serializers import dumps, from_dict, from_etree, load, loads, to_dict, to_etree
 from tests.conftest import FIXTURES, MUJOCO_VERSION
 from tests.support.oracles import (
     RENAMING_FIELDS,

@@ -15,12 +15,12 @@ from mjcf_model import Body, Geom, Mujoco, compiled
 from mjcf_model.bridge.compare import compile_text_beside, compiled_names, model_differences
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.nodes.base import get_attribute
+from mjcf_model.serializers import dumps, load, loads, to_dict
+from mjcf_model.serializers.skins import inline_skin_files
 from mjcf_model.strategies import models, names
 from mjcf_model.transforms.composition.attaching import attach
 from mjcf_model.transforms.naming.renaming import declared_names, prefix_map, prefixed, renamed
 from mjcf_model.transforms.scaling.transform import scaled
-from serializers import dumps, load, loads, to_dict
-from serializers.skins import inline_skin_files
 from tests.conftest import compiling_corpus, corpus_id
 from tests.support.oracles import (
     RENAMING_FIELDS,
@@ -420,7 +420,7 @@ def refusal(file: str) -> str:
     return (
         f"cannot rename the bodies of a model where skin 'hide' is read from {file!r}: the file "
         "names the bodies its bones bind to, and MuJoCo would not find them; write the skin "
-        "inline first with serializers.skins.inline_skin_files(model, model_folder)"
+        "inline first with mjcf_model.serializers.skins.inline_skin_files(model, model_folder)"
     )
 
 

@@ -14,12 +14,12 @@ from mjcf_model import Mujoco, compiled
 from mjcf_model.bridge.compare import compiled_names
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement
+from mjcf_model.serializers import dumps, load, loads
+from mjcf_model.serializers.skins import inline_skin_files
 from mjcf_model.strategies import models, names
 from mjcf_model.transforms.composition.attaching import attach_all
 from mjcf_model.transforms.naming.renaming import declared_names, prefixed, prefixed_declared
 from mjcf_model.transforms.naming.repeated import MARK, PrefixPlan, RepeatedPrefixing
-from serializers import dumps, load, loads
-from serializers.skins import inline_skin_files
 from tests.conftest import compiling_corpus, corpus_id
 from tests.support.oracles import prefix_problems
 from tests.support.plan_counting import PLANNED_AT_THE_SECOND_COPY
@@ -153,7 +153,7 @@ def test_a_plan_prefixes_a_tree_of_generic_nodes() -> None:
     """Robosuite's layer holds generic nodes: the plan writes their attribute text alike."""
     import xml.etree.ElementTree as ET
 
-    from serializers import from_etree
+    from mjcf_model.serializers import from_etree
 
     model = from_etree(ET.fromstring(PAIR), typed=False)
     plan = PrefixPlan.traced(model, prefixed)

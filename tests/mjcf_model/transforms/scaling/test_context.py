@@ -8,9 +8,9 @@ import mujoco
 import numpy as np
 import pytest
 
+from mjcf_model.serializers import loads
 from mjcf_model.transforms.scaling.context import ScaleContext, factor_cycle, times, times_cycle
 from mjcf_model.tree.defaults import DefaultClasses
-from serializers import loads
 
 #: A cube weighed by its density, its half size given per axis.
 CUBE = """<mujoco><worldbody><body><freejoint/>

@@ -6,12 +6,12 @@ import mujoco
 import numpy as np
 import pytest
 
+from mjcf_model.serializers import dumps, loads
 from mjcf_model.transforms.scaling.context import ScaleContext
 from mjcf_model.transforms.scaling.rules import RULES
 from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.defaults import DefaultClasses
 from mjcf_model.tree.traversal import with_children
-from serializers import dumps, loads
 from tests.support.scaling_oracle import ALIGNED_SLIDES, compiled_pair, scaled_model_problems
 
 # -- The complete scaling oracle: every float field classified, and the bugs it catches. -------

@@ -8,8 +8,8 @@ import pytest
 
 from mjcf_model import Body, Default, Geom, Mujoco, Worldbody
 from mjcf_model.nodes.base import AnyElement, get_attribute
+from mjcf_model.serializers import dumps, loads
 from mjcf_model.transforms.scaling.transform import scaled
-from serializers import dumps, loads
 from tests.support.oracles import friction_problems
 from tests.support.scaling_oracle import scaled_model_problems
 

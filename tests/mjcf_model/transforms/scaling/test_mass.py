@@ -10,13 +10,13 @@ import pytest
 
 from mjcf_model import Geom
 from mjcf_model.nodes.base import AnyElement, get_attribute
+from mjcf_model.serializers import dumps, from_etree, loads
 from mjcf_model.transforms.scaling.context import ScaleContext
 from mjcf_model.transforms.scaling.mass import is_shell
 from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.defaults import DefaultClasses
 from mjcf_model.tree.queries import find
 from mjcf_model.tree.traversal import keyed_walk
-from serializers import dumps, from_etree, loads
 from tests.support.scaling_oracle import (
     SCALING_FIXTURES,
     _scaled_copy,

@@ -9,13 +9,13 @@ import numpy as np
 
 from mjcf_model import Geom
 from mjcf_model.nodes.base import AnyElement, get_attribute, with_attributes
+from mjcf_model.serializers import dumps, loads
 from mjcf_model.transforms.scaling.context import ScaleContext, times
 from mjcf_model.transforms.scaling.pieces import Changes, ValueRule, combine, points
 from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.queries import find
 from mjcf_model.tree.traversal import map_elements
 from mjcf_model.values import Value, numbers_of
-from serializers import dumps, loads
 from tests.support.scaling_oracle import scaled_model_problems
 
 # -- A ``ValueRule`` scales an attribute only where it is written, and ``None`` keeps it. ------

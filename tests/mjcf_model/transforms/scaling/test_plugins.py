@@ -10,11 +10,11 @@ import pytest
 
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.plugin import Plugin
+from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.transforms.scaling.context import ScaleContext
 from mjcf_model.transforms.scaling.plugins import SDF_LENGTHS, sdf_config, with_sdf_settings
 from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import with_children
-from serializers import dumps, load, loads
 from tests.support.oracles import friction_problems, scaled_problems
 from tests.support.scaling_oracle import (
     IGNORED,

@@ -20,12 +20,12 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.nodes.registry import CLASS_BY_KEY
 from mjcf_model.schema.namespaces import SCHEMA
+from mjcf_model.serializers import dumps, loads
 from mjcf_model.transforms.scaling.context import ScaleContext
 from mjcf_model.transforms.scaling.pieces import NO_LENGTHS
 from mjcf_model.transforms.scaling.rules import RULES, UNSCALED_BY_DECISION
 from mjcf_model.transforms.scaling.transform import MassPolicy, scaled
 from mjcf_model.tree.traversal import keyed_walk, map_elements
-from serializers import dumps, loads
 from tests.support.scale_cases import UNCHECKED, scale_cases
 from tests.support.scale_elements import ScaleCase
 from tests.support.scaling_oracle import (

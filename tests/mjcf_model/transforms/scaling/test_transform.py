@@ -15,12 +15,12 @@ from mjcf_model import Body, Geom, Joint, Mujoco, Site, compiled
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.errors import MjcfError, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, GenericElement, TypedElement, attribute_items
+from mjcf_model.serializers import dumps, from_etree, load, loads, to_dict
 from mjcf_model.strategies import elements, models
 from mjcf_model.tools.check import check_file
 from mjcf_model.transforms.scaling.transform import scaled
 from mjcf_model.tree.traversal import keyed_walk, map_elements, map_tree
 from mjcf_model.values import format_value
-from serializers import dumps, from_etree, load, loads, to_dict
 from tests.conftest import PER_CLASS, compiling_corpus, corpus_id
 from tests.support.node_classes import TYPED_CLASSES
 from tests.support.oracles import trees_close
@@ -346,7 +346,7 @@ def test_skin_read_from_a_file_without_the_folder_is_refused() -> None:
     assert str(refused.value) == (
         "cannot scale a model where skin 'sheet' is read from 'sheet.skn': the file holds its "
         "vertices and bind poses; write the skin inline first with "
-        "serializers.skins.inline_skin_files(model, model_folder)"
+        "mjcf_model.serializers.skins.inline_skin_files(model, model_folder)"
     )
 
 

@@ -30,8 +30,10 @@ __all__ = [
     "DocumentText",
     "Layout",
     "LayoutDetail",
+    "Reducer",
     "SourceText",
     "detail",
+    "layout_of",
     "place_key",
     "read_slots",
 ]
@@ -57,12 +59,19 @@ class SourceText:
         "pieces",
         "raw",
         "read_attributes",
+        "reducer",
         "root_begin",
         "text",
         "values",
     )
 
-    def __init__(self, raw: bytes, filename: str | None = None, first_line: int = 0) -> None:
+    def __init__(
+        self,
+        raw: bytes,
+        filename: str | None = None,
+        first_line: int = 0,
+        reducer: Reducer | None = None,
+    ) -> None:
         #: The file the text was read from, as the reader was given it (``"<string>"`` for
         #: text), or ``None``: where errors about its elements point.
         self.filename = filename
@@ -86,6 +95,9 @@ class SourceText:
         #: For an unpickled piece, each element's attribute list by its offset, read again
         #: from the text when first asked for (see :meth:`attributes_at`).
         self.read_attributes: dict[int, list[str]] | None = None
+        #: How the reader that read the text pickles an element read from it (see
+        #: :meth:`Layout.reduced`), or ``None``: pickled field by field.
+        self.reducer = reducer
 
     def __getstate__(self) -> dict[str, Any]:
         """Pickle the text, not the caches (details may hold getters): they are worked out again."""
@@ -96,7 +108,7 @@ class SourceText:
 
     def __setstate__(self, state: dict[str, Any]) -> None:
         self.filename, self.first_line = None, 0  # pickled before they were recorded
-        self.pieces, self.read_attributes = [], None
+        self.pieces, self.read_attributes, self.reducer = [], None, None
         for name, value in state.items():
             setattr(self, name, value)
 
@@ -121,13 +133,13 @@ class SourceText:
                 return cut, start
         self.pieces = [entry for entry in self.pieces if entry[0]() is not None]
         if begin == self.root_begin:
-            cut, begin, after = SourceText(b"", self.filename, self.first_line), 0, -1
+            cut, begin, after = SourceText(b"", self.filename, self.first_line, self.reducer), 0, -1
             cut.raw, cut.text = self.raw, self.text
             cut.document, cut.root_begin = self.document, self.root_begin
         else:
             raw = self.raw[begin:after] if self.raw else self.text[begin:after].encode("ascii")
             lines = self.line(begin) - 1
-            cut = SourceText(raw, self.filename, lines)
+            cut = SourceText(raw, self.filename, lines, self.reducer)
         self.pieces.append((weakref.ref(cut), begin, after if after >= 0 else 1 << 62))
         return cut, begin
 
@@ -185,10 +197,10 @@ class SourceText:
         return self.text.rindex("</", begin, after)
 
 
-#: How to pickle an element read from text (its class, layout, children and the fields
-#: changed since; set by the reader, :func:`serializers.parsed_elements.reduced_from_text`), or
-#: ``None`` for any other: an element has a layout only once the reader is imported.
-REDUCE_FROM_TEXT: Callable[[Any], tuple[Any, ...] | None] | None = None
+#: How to pickle an element read from a text: what :meth:`object.__reduce_ex__` returns,
+#: or ``None`` to pickle it field by field (the text reader's is
+#: :func:`mjcf_model.serializers.parsed_elements.reduced_from_text`).
+Reducer = Callable[[Any], "tuple[Any, ...] | None"]
 
 
 class DocumentText:
@@ -287,6 +299,24 @@ class Layout(NamedTuple):
         """
         return self.origin.slice(self.begin, self.after)
 
+    def where(self) -> tuple[str | None, int]:
+        r"""The file the element was read from (as the reader was given it) and its line.
+
+        Examples:
+            >>> Layout(SourceText(b"<a>\n<b/></a>", "a.xml"), "b", 4, 8, 8, [], (), None).where()
+            ('a.xml', 2)
+
+        """
+        return self.origin.filename, self.origin.line(self.begin)
+
+    def reduced(self, element: Any) -> tuple[Any, ...] | None:
+        """How to pickle ``element``, read with this layout: as the reader of its text says.
+
+        ``None`` (pickle it field by field) for a text no reader gave a way.
+        """
+        reducer = self.origin.reducer
+        return None if reducer is None else reducer(element)
+
     def document(self) -> DocumentText | None:
         """For the root element of its file, the text of the file around it."""
         origin = self.origin
@@ -358,6 +388,21 @@ def _place(child: Any) -> Any:
     if type(source) is Layout and source.children:
         return source._replace(children=())
     return source
+
+
+def layout_of(node: Any) -> Layout | None:
+    """The layout ``node`` was read with; ``None`` for a node built in code, or a comment.
+
+    Examples:
+        >>> from mjcf_model import Geom, loads
+        >>> layout_of(Geom()) is None
+        True
+        >>> layout_of(loads("<mujoco/>")).tag
+        'mujoco'
+
+    """
+    layout = getattr(node, "layout", None)
+    return layout if type(layout) is Layout else None
 
 
 def place_key(source: Any) -> object:

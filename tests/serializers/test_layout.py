@@ -18,9 +18,9 @@ import pytest
 
 from mjcf_model import Body, Element, Geom, map_elements, prefixed, scaled, walk
 from mjcf_model.nodes.base import AnyElement, with_attributes
-from mjcf_model.nodes.layout import Layout
+from mjcf_model.serializers import dumps, load, loads
+from mjcf_model.serializers.layout import Layout
 from mjcf_model.tree.traversal import map_tree, with_children
-from serializers import dumps, load, loads
 from tests.conftest import compiling_corpus, corpus_id, loading_corpus
 
 
