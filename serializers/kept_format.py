@@ -15,7 +15,7 @@ indented as its siblings.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Sequence
 from typing import Any
 
 from mjcf_model.nodes.base import AnyElement, Comment, Node, attribute_items
@@ -279,38 +279,27 @@ def _start_tag(element: AnyElement, layout: Layout, cut: LayoutDetail) -> str:
     return _edited_start(cut, items)
 
 
-def _attribute_spans(start: str, position: int) -> Iterator[tuple[int, str, int, int]]:
-    """Each attribute of a start tag from ``position`` on, as offsets into ``start``.
-
-    Yields where the white space before the attribute begins, its name, and
-    where its value begins and ends (the closing quote's offset).
-    """
-    while True:
-        equals = start.find("=", position)
-        if equals < 0:
-            return
-        before = start[position:equals]  # white space, the name, maybe white space
-        name = before.strip(_WHITE_SPACE)
-        if not name or before[0] not in _WHITE_SPACE:
-            return
-        quote = equals + 1
-        while start[quote] in _WHITE_SPACE:
-            quote += 1
-        close = start.find(start[quote], quote + 1)
-        yield position, name, quote + 1, close
-        position = close + 1
-
-
 def _value_spans(cut: LayoutDetail) -> list[tuple[int, int, int]]:
     """Where each attribute of the recorded start tag stands, worked out once.
 
-    For each: where the white space before it begins, and where its value begins and
-    ends (the closing quote's offset).
+    For each attribute (in ``cut.names`` order): where the white space before it begins,
+    and where its value begins and ends (the closing quote's offset). The reader found
+    the attributes, so each ``=`` after a value's closing quote is the next attribute's
+    (a name holds no ``=``, and a value no quote of its own kind).
     """
     spans = cut.spans
     if spans is None:
-        found = _attribute_spans(cut.start, 1 + len(cut.tag))
-        spans = cut.spans = [(begin, first, close) for begin, _, first, close in found]
+        start = cut.start
+        position = 1 + len(cut.tag)
+        spans = []
+        for _ in cut.names:
+            quote = start.find("=", position) + 1
+            while start[quote] in _WHITE_SPACE:
+                quote += 1
+            close = start.find(start[quote], quote + 1)
+            spans.append((position, quote + 1, close))
+            position = close + 1
+        cut.spans = spans
     return spans
 
 
@@ -330,15 +319,14 @@ def _spliced_start(element: AnyElement, cut: LayoutDetail) -> str | None:
         return None
     stored = cut.stored
     rank = type(element).__node_info__.rank
-    added = [key for key in held if key not in stored and key in rank]
-    if "extra" in held and "extra" not in stored:
+    new = held.keys() - stored  # usually none: the same fields, some of other values
+    if "extra" in new:
         return None
+    added = [key for key in new if key in rank]
     values = cut.values
     assert values is not None
     start = cut.start
     spans = _value_spans(cut)
-    if len(spans) != len(names):
-        return None  # a start tag the scanner reads otherwise: the general edit decides
     pieces: list[str] = []
     position = 0
     for index, field in enumerate(cut.fields):
@@ -382,7 +370,7 @@ def _edited_start(cut: LayoutDetail, items: list[tuple[str, Value]]) -> str:
     recorded = dict(zip(cut.names, cut.values, strict=True))
     position = 1 + len(cut.tag)
     pieces = [start[:position]]
-    for begin, name, value_start, value_end in _attribute_spans(start, position):
+    for name, (begin, value_start, value_end) in zip(cut.names, _value_spans(cut), strict=True):
         position = value_end + 1
         if name not in current:
             continue  # removed, with the white space before it

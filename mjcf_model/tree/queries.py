@@ -18,7 +18,6 @@ on the results), in document order.
 
 from __future__ import annotations
 
-import operator
 from collections.abc import Callable, Collection, Iterator
 from typing import cast
 
@@ -31,6 +30,7 @@ from mjcf_model.nodes.base import (
     TypedElement,
     get_attribute,
 )
+from mjcf_model.nodes.node_info import tuple_getter
 from mjcf_model.tree.indexes import index_of
 from mjcf_model.tree.traversal import walk
 from mjcf_model.values import Value, format_value, plain_value
@@ -80,8 +80,8 @@ def _reader(
 ) -> Callable[[AnyElement], tuple[Value | None, ...]]:
     table = cls.__node_info__.table
     fields = tuple(table.get(name) for name in names)
-    if len(names) > 1 and None not in fields:
-        return operator.attrgetter(*fields)  # type: ignore[arg-type]
+    if None not in fields:
+        return tuple_getter(cast(tuple[str, ...], fields))
     pairs = tuple(zip(names, fields, strict=True))
 
     def read(element: AnyElement) -> tuple[Value | None, ...]:

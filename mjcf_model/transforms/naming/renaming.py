@@ -36,8 +36,9 @@ skin inline first.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Collection, Mapping, Sequence
+from collections.abc import Callable, Collection, Iterable, Mapping, Sequence
 from pathlib import Path
+from typing import cast
 
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, get_attribute, with_attributes
@@ -96,7 +97,7 @@ def declared_names(node: AnyElement) -> dict[str, frozenset[str]]:
     base_dir = node.base_dir if isinstance(node, Mujoco) else None
     for element, key, _ in keyed_walk(node):
         if key in DECLARING_KEYS:
-            for _, namespace, name in declarations(element, key, base_dir=base_dir):
+            for _, namespace, name in _declared(element, key, _PLANS[key], base_dir):
                 found.setdefault(namespace, set()).add(name)
     return {namespace: frozenset(names) for namespace, names in found.items()}
 
@@ -179,6 +180,25 @@ _SAME_MODEL_PLAN = _Plan(SAME_MODEL_ATTACH)
 _NOTHING_TO_RENAME = frozenset(SCHEMA) - _PLANS.keys() - SKIN_KEYS - {"include", "body/attach"}
 
 
+def _declared(
+    element: AnyElement, key: str | None, plan: _Plan, base_dir: Path | None
+) -> Iterable[tuple[str, str, str]]:
+    """``declarations(element, key)``, read at once where every declaring attribute is written.
+
+    The names are then the attributes' values (but for ``<default class="main">``, which
+    declares none); an element named after its file, or not named, takes the general rule.
+    """
+    names = attribute_values(element, plan.declared)
+    if all(type(name) is str and name for name in names):
+        written = cast(tuple[str, ...], names)
+        return [
+            (attribute, namespace, name)
+            for attribute, namespace, name in zip(plan.declared, plan.namespaces, written)  # noqa: B905
+            if (name, namespace) != MAIN_CLASS
+        ]
+    return declarations(element, key, base_dir=base_dir)
+
+
 def _renamed_attributes(
     element: AnyElement, key: str | None, rename: Renamer, follow: Renamer, base_dir: Path | None
 ) -> dict[str, Value | None]:
@@ -193,19 +213,10 @@ def _renamed_attributes(
         plan = _SAME_MODEL_PLAN
     changes: dict[str, Value | None] = {}
     if plan.declares:
-        names = attribute_values(element, plan.declared)
-        if all(type(name) is str and name for name in names):
-            # every declaring attribute written: the names are these, as ``declarations``
-            # reads them (but for ``<default class="main">``, which declares none)
-            for attribute, namespace, name in zip(plan.declared, plan.namespaces, names):  # noqa: B905
-                new = rename(namespace, name)  # type: ignore[arg-type]
-                if new != name and (name, namespace) != MAIN_CLASS:
-                    changes[attribute] = new
-        else:  # an element named after its file, or not named: the general rule
-            for attribute, namespace, name in declarations(element, key, base_dir=base_dir):
-                new = rename(namespace, name)
-                if new != name:
-                    changes[attribute] = new
+        for attribute, namespace, name in _declared(element, key, plan, base_dir):
+            new = rename(namespace, name)
+            if new != name:
+                changes[attribute] = new
     if not plan.names:
         return changes
     for attribute, value, (target, selector, listed) in zip(
