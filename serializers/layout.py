@@ -100,10 +100,14 @@ class SourceText:
         self.reducer = reducer
 
     def __getstate__(self) -> dict[str, Any]:
-        """Pickle the text, not the caches (details may hold getters): they are worked out again."""
+        """Pickle the text, not the caches (details may hold getters): they are worked out again.
+
+        Nor the reducer: an element pickled by it is unpickled by the reader, which gives
+        the text its reducer again (a pickled geom stays a few hundred bytes).
+        """
         state = {name: getattr(self, name) for name in self.__slots__ if name != "__weakref__"}
         state["details"], state["values"], state["pieces"] = {}, {}, []
-        state["read_attributes"] = None
+        state["read_attributes"] = state["reducer"] = None
         return state
 
     def __setstate__(self, state: dict[str, Any]) -> None:

@@ -410,7 +410,10 @@ def reread(
             another version of the library).
 
     """
-    node = read_typed(cls, layout.attributes, children, layout, layout.origin.values, {})
+    origin = layout.origin
+    if origin.reducer is None:  # not pickled with the text: this reader reads it
+        origin.reducer = reduced_from_text
+    node = read_typed(cls, layout.attributes, children, layout, origin.values, {})
     if node is None:
         raise MjcfValueError(f"a pickled <{layout.tag}> no longer reads as {cls.__name__}")
     held = node.__dict__

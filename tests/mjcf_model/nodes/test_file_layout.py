@@ -50,3 +50,12 @@ def test_a_new_parent_keeps_no_replaced_child_alive() -> None:
     assert layout is not None
     kept = layout.without_old_children(new.children)
     assert isinstance(kept, Layout) and old.children[0] not in kept.children
+
+
+def test_an_unpickled_element_pickles_small_again() -> None:
+    """The reader's way of pickling is not pickled with the text, and comes back with it."""
+    geom = loads(TEXT).worldbody.geoms[0]
+    once = pickle.dumps(geom)
+    copy = pickle.loads(once)
+    assert len(pickle.dumps(copy)) == len(once)
+    assert copy.layout is not None and copy.layout.reduced(copy) is not None
