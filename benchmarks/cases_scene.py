@@ -39,7 +39,7 @@ def scene_cases(bodies: int) -> list[Case]:
     inputs = f"{bodies:,} bodies (a joint, a capsule, a site each)"
 
     def first_query() -> object:
-        indexed.clear()  # as for a tree nobody queried yet
+        indexed.pop(id(model), None)  # as for a tree nobody queried yet (the twin keeps its)
         return find(model, "geom", name=last)
 
     for _ in range(2):  # the second query builds the twin's index
