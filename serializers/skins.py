@@ -155,20 +155,21 @@ def _read_skin(path: str | os.PathLike[str]) -> Skin:
         face=_ints(face) or None,
         children=bones,
     )
-    return _with_own_text(skin)
+    return _with_own_text(skin, str(path))
 
 
-def _with_own_text(skin: Skin) -> Skin:
+def _with_own_text(skin: Skin, path: str) -> Skin:
     """``skin`` read back from its own text, so that it carries that text as a loaded element.
 
     A skin file holds tens of thousands of numbers; written inline they are most of a
     model's text. Formatted once here (a file is read once, see :data:`_READ`), they are
     written from then on as the slices of this text that they are, like any loaded value
     nobody changed: prefixing a model renames its bones' bodies, and writing it copies
-    every number's text instead of formatting it again.
+    every number's text instead of formatting it again. The text is named after the skin
+    file (``path``), which is where its elements come from.
     """
     text = dumps(Mujoco(children=[Asset(children=[skin])]), canonical=True)
-    (asset,) = loads(text).elements
+    (asset,) = loads(text, filename=path).elements
     (read,) = asset.elements
     assert isinstance(read, Skin) and read == skin
     return read

@@ -50,6 +50,7 @@ def test_a_read_skin_is_a_loaded_element_of_its_own_text(tmp_path: Path) -> None
     path = skin_file(tmp_path / "sheet.skn", ("a", "b", "c"))
     skin = read_skin(path)
     assert skin.layout is not None and skin.children[0].layout is not None
+    assert skin.layout.where()[0] == str(path)  # its elements come from the skin file
     assert skin == Skin(
         vertex=np.float32([0, 0, 0, 0.1, 0, 0, 0, 0.1, 0]).astype(float),
         face=[0, 1, 2],
