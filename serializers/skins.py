@@ -29,7 +29,7 @@ import decimal
 import os
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import Any, TypeVar, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -37,7 +37,7 @@ from numpy.typing import NDArray
 from mjcf_model.caching import BoundedCache
 from mjcf_model.errors import MjcfAssetError, MjcfSyntaxError
 from mjcf_model.files.provenance import file_references, file_stem
-from mjcf_model.nodes.asset import Asset, Bone, Skin
+from mjcf_model.nodes.asset import Bone, Skin
 from mjcf_model.nodes.base import (
     AnyElement,
     Comment,
@@ -48,10 +48,9 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.serializers.dumping import dumps
-from mjcf_model.serializers.loading import loads
 from mjcf_model.tree.traversal import SKIN_KEYS, map_elements
 from mjcf_model.values import format_float
+from mjcf_model.values.writing import LONG_LIST, remember_text
 
 __all__ = [
     "inline_skin_files",
@@ -155,24 +154,22 @@ def _read_skin(path: str | os.PathLike[str]) -> Skin:
         face=_ints(face) or None,
         children=bones,
     )
-    return _with_own_text(skin, str(path))
+    return _with_remembered_texts(skin)
 
 
-def _with_own_text(skin: Skin, path: str) -> Skin:
-    """``skin`` read back from its own text, so that it carries that text as a loaded element.
+def _with_remembered_texts(skin: Skin) -> Skin:
+    """``skin``, its long number lists formatted once and remembered (:func:`remember_text`).
 
     A skin file holds tens of thousands of numbers; written inline they are most of a
-    model's text. Formatted once here (a file is read once, see :data:`_READ`), they are
-    written from then on as the slices of this text that they are, like any loaded value
-    nobody changed: prefixing a model renames its bones' bodies, and writing it copies
-    every number's text instead of formatting it again. The text is named after the skin
-    file (``path``), which is where its elements come from.
+    model's text. The file is read once (see :data:`_READ`), and every model that writes
+    the skin inline (prefixing renames its bones' bodies) copies the numbers' text
+    instead of formatting them again.
     """
-    text = dumps(Mujoco(children=[Asset(children=[skin])]), canonical=True)
-    (asset,) = loads(text, filename=path).elements
-    (read,) = asset.elements
-    assert isinstance(read, Skin) and read == skin
-    return read
+    for node in (skin, *skin.children):
+        for _, value in attribute_items(cast(AnyElement, node)):
+            if isinstance(value, tuple) and len(value) >= LONG_LIST:
+                remember_text(value)
+    return skin
 
 
 def float32_as_written(values: Sequence[float]) -> NDArray[np.float32]:
@@ -298,13 +295,17 @@ def inline_skin_files(node: _N, directory: str | os.PathLike[str] | None = None)
             raise MjcfAssetError(
                 f"cannot read skin file {str(reference.path)!r}: {error.strerror or error}"
             ) from None
-        own = dict(attribute_items(element))
-        own["name"] = get_attribute(element, "name") or file_stem(reference.text)
-        del own["file"]
-        # the skin read (which carries its numbers' text), with the element's own attributes
-        inline = with_attributes(data, own)
-        if not element.children:
-            return inline
-        return build_node(type(inline), {"children": (*element.children, *data.children)}, inline)
+        name = get_attribute(element, "name") or file_stem(reference.text)
+        inline = with_attributes(
+            element,
+            {
+                "file": None,
+                "name": name,
+                "vertex": data.vertex,
+                "texcoord": data.texcoord,
+                "face": data.face,
+            },
+        )
+        return build_node(type(inline), {"children": (*inline.children, *data.children)}, inline)
 
     return map_elements(visit, model)  # type: ignore[return-value]

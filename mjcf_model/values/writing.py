@@ -7,13 +7,37 @@ from typing import Any
 
 import numpy as np
 
+from mjcf_model.caching import IdentityCache
 from mjcf_model.values.kinds import _CHUNK, _ONLY_FLOATS, _ONLY_INTS, Floats, Ints, Unparsed, Value
 
 __all__ = [
     "format_float",
     "format_value",
     "plain_value",
+    "remember_text",
 ]
+
+#: A number list this long is looked up among the remembered texts before it is formatted.
+LONG_LIST = 256
+#: The texts of long number lists formatted once and kept with them (see
+#: :func:`remember_text`); bounded, each text held with its very list.
+_REMEMBERED: IdentityCache[str] = IdentityCache(1024)
+
+
+def remember_text(value: Floats | Ints) -> str:
+    """Format a long number list once and keep its text with it: writing it again copies.
+
+    For lists a program holds and writes many times, unchanged: a skin file's tens of
+    thousands of numbers, written inline into every model that renames its bones. Only
+    this very list (not an equal one) is written from the remembered text.
+
+    Examples:
+        >>> numbers = tuple(float(i) for i in range(300))
+        >>> remember_text(numbers) is format_value(numbers)
+        True
+
+    """
+    return _REMEMBERED.recall_for(value, lambda: _formatted_list(value))
 
 
 def _unpadded_exponents(text: str) -> str:
@@ -72,6 +96,14 @@ def format_value(value: Value) -> str:
         return str(value)
     if isinstance(value, Unparsed):
         return value.text
+    if len(value) >= LONG_LIST:
+        known = _REMEMBERED.get((id(value),))
+        if known is not None and known[0] is value:
+            return known[1]
+    return _formatted_list(value)
+
+
+def _formatted_list(value: Floats | Ints) -> str:
     if len(value) > _CHUNK // 8:  # a piece at a time: no list of millions of strings
         step = _CHUNK // 8
         return " ".join(_format_items(value[i : i + step]) for i in range(0, len(value), step))

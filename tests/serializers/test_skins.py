@@ -14,8 +14,14 @@ from mjcf_model import prefixed
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.nodes.asset import Bone, Skin
 from mjcf_model.serializers import dumps, load, loads
-from mjcf_model.serializers.skins import float32_as_written, inline_skin_files, read_skin
-from tests.support.skin_files import _skin_model, skin_file
+from mjcf_model.serializers.skins import (
+    float32_as_written,
+    inline_skin_files,
+    read_skin,
+    skin_file_bytes,
+)
+from mjcf_model.values import format_value
+from tests.support.skin_files import _skin_model
 
 # -- ``compiled`` lets MuJoCo read the files that exist on disk, and compiles what MuJoCo would.
 #
@@ -42,62 +48,64 @@ def test_float32_as_written_is_what_mujoco_reads_from_the_text(values: list[floa
     assert read.tobytes() == float32_as_written(vertices).tobytes()
 
 
-# -- A skin read from a file carries its numbers' text: a write copies it, never formats it.
+# -- A skin read from a file: its numbers are formatted once, and written from that text.
 
 
-def test_a_read_skin_is_a_loaded_element_of_its_own_text(tmp_path: Path) -> None:
-    """``read_skin`` gives the skin as read from text: equal values, and that text kept."""
-    path = skin_file(tmp_path / "sheet.skn", ("a", "b", "c"))
-    skin = read_skin(path)
-    assert skin.layout is not None and skin.children[0].layout is not None
-    assert skin.layout.where()[0] == str(path)  # its elements come from the skin file
-    assert skin == Skin(
-        vertex=np.float32([0, 0, 0, 0.1, 0, 0, 0, 0.1, 0]).astype(float),
-        face=[0, 1, 2],
-        children=[
-            Bone(
-                body=body,
-                bindpos=[
-                    float(np.float32(0.01 * index)),
-                    float(np.float32(0.02)),
-                    float(np.float32(0.03)),
-                ],
-                bindquat=[1, 0, 0, 0],
-                vertid=[index],
-                vertweight=[1],
-            )
-            for index, body in enumerate(("a", "b", "c"))
-        ],
-    )
+def _big_skin_file(path: Path, count: int) -> Path:
+    """A skin file of ``count`` vertices on a line, each bound to one of three bodies."""
+    rng = np.random.default_rng(0)
+    vertex = np.float32(rng.uniform(-1, 1, 3 * count)).astype(float)
+    bones = [
+        Bone(
+            body=body,
+            bindpos=[0, 0, 0],
+            bindquat=[1, 0, 0, 0],
+            vertid=list(range(index, count, 3)),
+            vertweight=[1.0] * len(range(index, count, 3)),
+        )
+        for index, body in enumerate(("a", "b", "c"))
+    ]
+    face = [i for v in range(count - 2) for i in (v, v + 1, v + 2)]
+    data = skin_file_bytes(Skin(vertex=vertex, face=face, children=bones))
+    assert data is not None
+    path.write_bytes(data)
+    return path
 
 
-def test_an_inlined_skin_keeps_its_own_attributes_and_writes_the_numbers_read(
-    tmp_path: Path,
-) -> None:
-    """Inlined, the skin keeps its element's attributes; the numbers' text is the skin's own.
+def test_a_read_skin_remembers_the_text_of_its_long_number_lists(tmp_path: Path) -> None:
+    """The vertices and faces of a skin file are formatted once, when it is read."""
+    skin = read_skin(_big_skin_file(tmp_path / "sheet.skn", 400))
+    assert skin.vertex is not None and skin.face is not None
+    assert format_value(skin.vertex) is format_value(skin.vertex)  # the remembered text
+    assert format_value(skin.face) is format_value(skin.face)
+    assert format_value(skin.vertex) == format_value(tuple(skin.vertex))  # as any list writes
 
-    Renaming the bodies then edits only the bones' ``body`` values, and MuJoCo compiles the
-    written model as the renamed model written canonically.
+
+def test_an_inlined_skin_keeps_its_place_in_the_model_file(tmp_path: Path) -> None:
+    """Inlined, the skin is the model's own element: its file, line and attributes.
+
+    Its numbers are the very lists the skin file was read into (so their remembered text
+    is written); renaming the bodies edits the bones, and MuJoCo compiles the written model
+    as the renamed model written canonically.
     """
-    skin_file(tmp_path / "sheet.skn", ("a", "b", "c"))
+    _big_skin_file(tmp_path / "sheet.skn", 400)
     text = (
-        '<mujoco><asset><skin file="sheet.skn" rgba="1 0 0 1" inflate="0.01"/></asset>'
+        "<mujoco>\n<asset>\n"
+        '<skin file="sheet.skn" rgba="1 0 0 1" inflate="0.01"/>\n</asset>\n'
         '<worldbody><body name="a"><geom size="0.1"/><body name="b"><geom size="0.1"/>'
         '<body name="c"><geom size="0.1"/></body></body></body></worldbody></mujoco>'
     )
     (tmp_path / "sheet.xml").write_text(text)
     model = load(tmp_path / "sheet.xml")
-    inline = inline_skin_files(model)
-    (skin,) = inline.elements[0].elements
-    assert isinstance(skin, Skin) and skin.file is None
+    (skin,) = inline_skin_files(model).elements[0].elements
+    assert isinstance(skin, Skin) and skin.file is None and skin.layout is not None
+    assert skin.layout.where() == (str(tmp_path / "sheet.xml"), 3)
     assert (skin.name, skin.rgba, skin.inflate) == ("sheet", (1.0, 0.0, 0.0, 1.0), 0.01)
     read = read_skin(tmp_path / "sheet.skn")
     assert skin.vertex is read.vertex and skin.children == read.children
     renamed = prefixed(model, "p_")
     written = dumps(renamed)
-    assert read.children[0].layout is not None
-    vertex_text = read.layout.whole().split('vertex="')[1].split('"')[0] if read.layout else ""
-    assert f'vertex="{vertex_text}"' in written
+    assert f'vertex="{format_value(read.vertex)}"' in written
     assert loads(written, base_dir=tmp_path) == renamed
     canonical = dumps(renamed, canonical=True)
     assert (
