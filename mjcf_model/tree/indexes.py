@@ -19,38 +19,35 @@ to their parents), so an index never keeps a tree alive.
 from __future__ import annotations
 
 import weakref
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 
 from mjcf_model.caching import BoundedCache
 from mjcf_model.nodes.base import AnyElement, Element, GenericElement, Node, TypedElement
 
-__all__ = ["TagIndex", "elements_in_order", "index_of"]
+__all__ = ["TagIndex", "elements_below", "index_of"]
 
 
-def elements_in_order(node: Node) -> list[AnyElement]:
-    """``node`` (when an element) and every element below it, in document order.
+def elements_below(node: Node) -> Iterator[AnyElement]:
+    """Every element below ``node``, in document order: the walk of the lookups.
 
-    The walk of the lookups: no paths, no comments, an explicit stack (any depth).
+    No paths, no comments, an explicit stack (any depth); a lookup that finds what it
+    looks for stops it early.
 
     Examples:
         >>> from mjcf_model import Body, Comment, Geom
-        >>> body = Body(name="b", children=[Comment(text="c"), Geom(name="g")])
-        >>> [e.tag for e in elements_in_order(body)]
-        ['body', 'geom']
+        >>> body = Body(name="b", children=[Comment(text="c"), Geom(name="g"), Body()])
+        >>> [e.tag for e in elements_below(body)]
+        ['geom', 'body']
 
     """
     if not isinstance(node, Element):
-        return []
-    found: list[AnyElement] = []
-    stack: list[AnyElement] = [node]
-    pop, append, extend = stack.pop, found.append, stack.extend
+        return
+    stack = [child for child in reversed(node.children) if isinstance(child, Element)]
     while stack:
-        element = pop()
-        append(element)
-        children = element.children
-        if children:
-            extend([child for child in reversed(children) if isinstance(child, Element)])
-    return found
+        element = stack.pop()
+        yield element
+        if element.children:
+            stack.extend([c for c in reversed(element.children) if isinstance(c, Element)])
 
 
 class TagIndex:
@@ -72,7 +69,7 @@ class TagIndex:
 
     def __init__(self, root: Node) -> None:
         #: Every element below the root, in document order.
-        self.order: list[AnyElement] = elements_in_order(root)[1:]
+        self.order: list[AnyElement] = list(elements_below(root))
         #: The elements of each tag, in document order.
         self.by_tag: dict[str, list[AnyElement]] = {}
         for element in self.order:

@@ -31,7 +31,7 @@ from mjcf_model.nodes.base import (
     get_attribute,
 )
 from mjcf_model.nodes.node_info import tuple_getter
-from mjcf_model.tree.indexes import index_of
+from mjcf_model.tree.indexes import elements_below, index_of
 from mjcf_model.tree.traversal import walk
 from mjcf_model.values import Value, format_value, plain_value
 
@@ -123,18 +123,6 @@ def _tag_matches(element: AnyElement, tag: str | Collection[str]) -> bool:
     return element.tag in tag
 
 
-def _below(node: Node) -> Iterator[AnyElement]:
-    """Every element below ``node``, in document order (a walk that can stop early)."""
-    if not isinstance(node, Element):
-        return
-    stack = [child for child in reversed(node.children) if isinstance(child, Element)]
-    while stack:
-        element = stack.pop()
-        yield element
-        if element.children:
-            stack.extend([c for c in reversed(element.children) if isinstance(c, Element)])
-
-
 def _candidates(node: Node, tag: str | Collection[str], name: object) -> Iterator[AnyElement]:
     """The elements below ``node`` that may match: from its index when it has one.
 
@@ -142,7 +130,7 @@ def _candidates(node: Node, tag: str | Collection[str], name: object) -> Iterato
     """
     index = index_of(node)
     if index is None:
-        yield from (e for e in _below(node) if _tag_matches(e, tag))
+        yield from (e for e in elements_below(node) if _tag_matches(e, tag))
     elif not isinstance(tag, str):
         yield from (e for e in index.order if e.tag in tag)
     elif isinstance(name, str):

@@ -12,7 +12,7 @@ from mjcf_model import Mujoco, find, find_all, prefixed
 from mjcf_model.serializers import loads
 from mjcf_model.strategies import models
 from mjcf_model.tree import indexes
-from mjcf_model.tree.indexes import TagIndex, elements_in_order, index_of
+from mjcf_model.tree.indexes import TagIndex, elements_below, index_of
 from mjcf_model.tree.traversal import walk
 
 
@@ -57,7 +57,8 @@ def test_an_index_is_built_on_the_second_query_and_goes_with_its_tree() -> None:
     index = index_of(model)
     assert isinstance(index, TagIndex) and index_of(model) is index
     assert index.named("geom", "g49") is find(model, "geom", name="g49")
-    assert model not in index.order and len(index.order) == len(elements_in_order(model)) - 1
+    assert model not in index.order and index.order == list(elements_below(model))
+    assert len(index.order) == len(list(walk(model))) - 1
     alive = weakref.ref(model)
     key = id(model)
     del model
