@@ -1,8 +1,9 @@
 """Cases on a generated scene of 20,000 bodies: what a new user's big file costs.
 
 Each body holds a joint, a capsule and a site (``synthetic_xml``, all in the world):
-loading it, finding one geom by name (the first query of a tree, and asked again),
-and prefixing and writing it, each beside ElementTree doing the same.
+loading it, finding one geom by name (the first query of a loaded tree, of a tree a
+transform returned, and asked again), and prefixing and writing it, each beside
+ElementTree doing the same.
 """
 
 from __future__ import annotations
@@ -24,23 +25,28 @@ def scene_cases(bodies: int) -> list[Case]:
     """Load, find by name (first and repeated query), prefix + write a ``bodies``-body scene."""
     from mjcf_model import find, prefixed
     from mjcf_model.serializers import dumps, loads
-
-    try:
-        from mjcf_model.tree.indexes import _INDEXES as indexed
-    except ImportError:  # a library before the index (measuring a change against it)
-        indexed = {}
+    from mjcf_model.tree import indexes
 
     utils = robosuite_utils()
     text = synthetic_xml(bodies, "wide")
     model, twin = loads(text), loads(text)
+    transformed = prefixed(model, "t_")
     tree = ET.fromstring(text)
     last = f"g{bodies - 1}"
     path = f".//geom[@name='{last}']"
     inputs = f"{bodies:,} bodies (a joint, a capsule, a site each)"
+    read = getattr(indexes, "index_of", lambda _: None)(model)  # the reader's index, if any
 
-    def first_query() -> object:
-        indexed.pop(id(model), None)  # as for a tree nobody queried yet (the twin keeps its)
+    def first_query_loaded() -> object:
+        if read is not None:  # as just read: the index the reader noted, never queried
+            indexes.indexed(model, indexes.TagIndex.from_reading(read.order, read.places))
+        else:  # a library whose reader notes no index (measuring a change against it)
+            indexes._INDEXES.pop(id(model), None)
         return find(model, "geom", name=last)
+
+    def first_query_transformed() -> object:
+        indexes._INDEXES.pop(id(transformed), None)  # as for a tree nobody queried yet
+        return find(transformed, "geom", name=f"t_{last}")
 
     for _ in range(2):  # the second query builds the twin's index
         find(twin, "geom", name=last)
@@ -60,9 +66,26 @@ def scene_cases(bodies: int) -> list[Case]:
             inputs,
         ),
         Case(
-            "scene: find a geom by name, first query of a tree",
+            "scene: find a geom by name, first query of a loaded tree",
             [
-                Contender(OURS, first_query, note="find(model, 'geom', name=...), the last geom"),
+                Contender(
+                    OURS,
+                    first_query_loaded,
+                    note="find(model, 'geom', name=...), the last geom, on the index the reader "
+                    "noted",
+                ),
+                Contender("ElementTree find", lambda: tree.find(path), note=path),
+            ],
+            inputs,
+        ),
+        Case(
+            "scene: find a geom by name, first query of a transformed tree",
+            [
+                Contender(
+                    OURS,
+                    first_query_transformed,
+                    note="the same on prefixed(model, 't_'): a walk of the whole tree",
+                ),
                 Contender("ElementTree find", lambda: tree.find(path), note=path),
             ],
             inputs,

@@ -92,13 +92,16 @@ def _scene(rows: list[Row]) -> list[str]:
     """Issue 39's targets on the 20,000-body scene: load, find by name, prefix + write."""
     return [
         _at_most(rows, "scene: load", "ElementTree", "scene load", 2.0),
-        _at_most(
-            rows,
-            "scene: find a geom by name, first query of a tree",
-            "ElementTree",
-            "scene find by name, first query",
-            2.0,
-        ),
+        *[
+            _at_most(
+                rows,
+                f"scene: find a geom by name, first query of a {kind} tree",
+                "ElementTree",
+                f"scene find by name, first query of a {kind} tree",
+                2.0,
+            )
+            for kind in ("loaded", "transformed")
+        ],
         _at_most(
             rows,
             "scene: find a geom by name, asked again",

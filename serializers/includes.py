@@ -25,6 +25,7 @@ from mjcf_model.errors import MjcfIncludeError
 from mjcf_model.files.provenance import FILE_TAGS
 from mjcf_model.nodes.base import AnyElement, Element, Node
 from mjcf_model.nodes.root import Include, Mujoco
+from mjcf_model.tree.indexes import TagIndex
 from mjcf_model.tree.traversal import map_tree, with_children
 
 __all__ = [
@@ -81,6 +82,8 @@ class Document:
     filename: str
     #: The included elements found so far, by the ``<include>`` node they replace.
     found: dict[int, tuple[Node, ...]] = attrs.field(factory=dict)
+    #: The lookup index the reader noted for the root's tree, as read.
+    index: TagIndex | None = None
 
 
 def record_origins(

@@ -36,6 +36,7 @@ from mjcf_model.serializers.includes import (
     splice,
 )
 from mjcf_model.serializers.parsing import Reader
+from mjcf_model.tree.indexes import indexed
 from mjcf_model.tree.traversal import with_children
 
 __all__ = ["from_etree", "load", "loads"]
@@ -63,7 +64,7 @@ def _parse(
     after = [n for n in top[index + 1 :] if isinstance(n, Comment)]
     if before or after:
         root = with_children(root, [*before, *root.children, *after])
-    return Document(root, reader.includes, filename)
+    return Document(root, reader.includes, filename, index=reader.index())
 
 
 def _read(data: str | bytes, filename: str, session: Session) -> Mujoco:
@@ -104,10 +105,12 @@ def _read(data: str | bytes, filename: str, session: Session) -> Mujoco:
         root = splice(document)
         if not stack:
             assert isinstance(root, Mujoco)
-            if session.main_dir is None:
-                return root
-            root = build_node(Mujoco, {"base_dir": session.main_dir}, root)
-            return with_included_paths(root, origins)
+            if session.main_dir is not None:
+                root = build_node(Mujoco, {"base_dir": session.main_dir}, root)
+                root = with_included_paths(root, origins)
+            if not document.found and document.index is not None:
+                indexed(root, document.index)  # the elements below it are the ones read
+            return root
         reading.pop(Path(document.filename), None)
         parent = stack[-1]
         parent.found[id(parent.includes[len(parent.found)].node)] = root.children

@@ -32,6 +32,7 @@ class OpenElement:
         "context",
         "key",
         "line",
+        "place",
         "stop",
         "tag",
         "text",
@@ -48,6 +49,7 @@ class OpenElement:
         line: int,
         begin: int,
         stop: int,
+        place: int = -1,
     ) -> None:
         self.tag = tag
         #: The attribute names and values in source order, alternating (as expat gives them).
@@ -60,6 +62,8 @@ class OpenElement:
         #: The byte offset of the start tag's ``<``, and of what follows its ``>``.
         self.begin = begin
         self.stop = stop
+        #: The element's place in the reader's document order (``-1``: the root's).
+        self.place = place
         #: The character data read, or ``None`` before any.
         self.text: list[str] | None = None
         #: The children read so far (most elements have none: a shared empty list).

@@ -15,6 +15,7 @@ expat refuses is repaired (:mod:`mjcf_model.serializers.repairs`) and read again
 
 from __future__ import annotations
 
+from array import array
 from typing import Any, NoReturn
 from xml.parsers import expat
 
@@ -48,6 +49,7 @@ from mjcf_model.serializers.repairs import (
     exact_attributes,
 )
 from mjcf_model.serializers.scanning import BREAK, may_hold_text, start_tag_end
+from mjcf_model.tree.indexes import TagIndex
 from mjcf_model.values import Unparsed
 
 __all__ = ["Reader"]
@@ -95,6 +97,11 @@ class Reader:
         self.root_begin = self.root_end = 0
         #: The element being closed, for :meth:`locate`.
         self.closing: OpenElement | None = None
+        #: Every element below the root in document order (each has its place from its
+        #: start tag on, and is put there at its end tag), and the places of each tag's:
+        #: the lookup index of the tree read (:meth:`index`).
+        self.order: list[Any] = []
+        self.places: dict[str, array[int]] = {}
         #: Each long attribute left to convert after parsing: its node, and where it
         #: stands, with what :func:`~mjcf_model.serializers.parsed_elements.read_typed` deferred.
         self.deferred: list[tuple[TypedElement, int, str, Deferred]] = []
@@ -181,10 +188,22 @@ class Reader:
         if step is None:
             step = step_of(context, tag)
         key, inner, typed = step
-        if parent is None and self.include_context is not None:
-            inner = self.include_context  # MuJoCo takes the root's children, whatever its tag
+        place = -1  # the root: not in its own index
+        if parent is None:
+            if self.include_context is not None:
+                inner = self.include_context  # MuJoCo takes the root's children, whatever its tag
+        else:
+            order = self.order
+            place = len(order)
+            order.append(None)
+            places = self.places.get(tag)
+            if places is None:
+                places = self.places[tag] = array("l")
+            places.append(place)
         stack.append(
-            OpenElement(tag, flat, key, typed, inner, self.parser.CurrentLineNumber, begin, stop)
+            OpenElement(
+                tag, flat, key, typed, inner, self.parser.CurrentLineNumber, begin, stop, place
+            )
         )
 
     def exact_attributes(
@@ -274,6 +293,7 @@ class Reader:
             )
         if stack:  # after the include's path is taken: the path counts its siblings so far
             stack[-1].add_child(node)
+            self.order[item.place] = node
         else:
             self.top.append(node)
             self.root_end = after
@@ -379,11 +399,19 @@ class Reader:
                     pass
                 else:
                     self.includes = retry.includes
+                    self.order, self.places = retry.order, retry.places
                     return top
             raise self.syntax_error(error, raw) from None
         finally:
             self.release()
         return self.top
+
+    def index(self) -> TagIndex:
+        """The lookup index of the root read: every element below it, noted as it was read.
+
+        Valid for the root's children as read (an inlined include replaces elements).
+        """
+        return TagIndex.from_reading(self.order, self.places)
 
     def release(self) -> None:
         """Let go of the parser and the text: the parser holds this reader's handlers.

@@ -19,41 +19,52 @@ to their parents), so an index never keeps a tree alive.
 from __future__ import annotations
 
 import weakref
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from typing import Any, cast
 
 from mjcf_model.caching import BoundedCache
-from mjcf_model.nodes.base import AnyElement, Element, GenericElement, Node, TypedElement
+from mjcf_model.nodes.base import AnyElement, Comment, Element, GenericElement, Node, TypedElement
 
-__all__ = ["TagIndex", "elements_below", "index_of"]
+__all__ = ["TagIndex", "elements_below", "first_named", "index_of", "indexed", "name_of"]
 
 
-def elements_below(node: Node) -> Iterator[AnyElement]:
-    """Every element below ``node``, in document order: the walk of the lookups.
+def elements_below(node: Node, tag: str | None = None) -> Iterator[AnyElement]:
+    """Every element below ``node`` (of ``tag``, when given), in document order.
 
-    No paths, no comments, an explicit stack (any depth); a lookup that finds what it
-    looks for stops it early.
+    The walk of the lookups: no paths, no comments, a stack of the children being
+    gone through (any depth, and one step of the stack per element with children
+    rather than per element); a lookup that finds what it looks for stops it early.
 
     Examples:
         >>> from mjcf_model import Body, Comment, Geom
         >>> body = Body(name="b", children=[Comment(text="c"), Geom(name="g"), Body()])
-        >>> [e.tag for e in elements_below(body)]
-        ['geom', 'body']
+        >>> [e.tag for e in elements_below(body)], [e.name for e in elements_below(body, "geom")]
+        (['geom', 'body'], ['g'])
 
     """
-    if not isinstance(node, Element):
+    if not isinstance(node, Element) or not node.children:
         return
-    stack = [child for child in reversed(node.children) if isinstance(child, Element)]
+    stack: list[Iterator[Any]] = [iter(node.children)]  # Any: no cast called per element
+    push, pop = stack.append, stack.pop
     while stack:
-        element = stack.pop()
-        yield element
-        if element.children:
-            stack.extend([c for c in reversed(element.children) if isinstance(c, Element)])
+        for child in stack[-1]:
+            if child.__class__ is Comment:  # the only nodes that are not elements
+                continue
+            if tag is None or child.tag == tag:
+                yield child
+            if child.children:
+                push(iter(child.children))
+                break
+        else:
+            pop()
 
 
 class TagIndex:
     """The elements below one node by tag (document order), and by name when asked.
 
     The node itself is not in the index (it would keep itself alive through it).
+    Built by a walk (:func:`index_of`) or by the reader, which notes each element's
+    place as it reads it (:meth:`from_reading`).
 
     Examples:
         >>> from mjcf_model import Body, Geom, Site
@@ -65,47 +76,126 @@ class TagIndex:
 
     """
 
-    __slots__ = ("by_tag", "names", "order")
+    __slots__ = ("by_tag", "looked_up", "names", "order", "places")
 
-    def __init__(self, root: Node) -> None:
+    def __init__(self, root: Node | None) -> None:
         #: Every element below the root, in document order.
-        self.order: list[AnyElement] = list(elements_below(root))
-        #: The elements of each tag, in document order.
+        self.order: list[AnyElement] = list(elements_below(root)) if root is not None else []
+        #: The elements of each tag, in document order (a tag the reader noted: on first use).
         self.by_tag: dict[str, list[AnyElement]] = {}
+        #: Per tag the reader noted and :meth:`tagged` has not yet listed, the places in
+        #: :attr:`order` of its elements.
+        self.places: dict[str, Sequence[int]] = {}
         for element in self.order:
             tagged = self.by_tag.get(element.tag)
             if tagged is None:
                 self.by_tag[element.tag] = [element]
             else:
                 tagged.append(element)
-        #: Per tag, the first element of each ``name`` text (made on first use).
+        #: Per tag, the first element of each ``name`` text (made on the second lookup).
         self.names: dict[str, dict[str, AnyElement]] = {}
+        #: The tags looked up by name once (by going through their elements).
+        self.looked_up: set[str] = set()
+
+    @classmethod
+    def from_reading(cls, order: list[AnyElement], places: Mapping[str, Sequence[int]]) -> TagIndex:
+        """The index of elements a reader noted in document order, with the places of each tag.
+
+        Examples:
+            >>> from mjcf_model import Geom, Site
+            >>> index = TagIndex.from_reading([Geom(name="g"), Site()], {"geom": [0], "site": [1]})
+            >>> index.named("geom", "g").name, len(index.order)
+            ('g', 2)
+
+        """
+        index = cls(None)
+        index.order, index.places = order, dict(places)
+        return index
 
     def tagged(self, tag: str) -> list[AnyElement]:
         """The elements with this tag, in document order (do not change the list)."""
-        return self.by_tag.get(tag, [])
+        tagged = self.by_tag.get(tag)
+        if tagged is None:
+            places = self.places.pop(tag, None)
+            if places is None:
+                return []
+            order = self.order
+            tagged = self.by_tag[tag] = [order[place] for place in places]
+        return tagged
 
     def named(self, tag: str, name: str) -> AnyElement | None:
-        """The first element with this tag whose ``name`` attribute is ``name``."""
+        """The first element with this tag whose ``name`` attribute is ``name``.
+
+        The first lookup of a tag by name goes through its elements and stops at the
+        match; from the second on, a dict of the tag's names answers.
+        """
         names = self.names.get(tag)
         if names is None:
+            if tag not in self.looked_up:
+                self.looked_up.add(tag)
+                places = self.places.get(tag)
+                if places is not None:  # not listed yet: no list made for a single lookup
+                    return first_named(map(self.order.__getitem__, places), name)
+                return first_named(self.tagged(tag), name)
             names = self.names[tag] = {}
             for element in reversed(self.tagged(tag)):  # the first one wins
-                written = _name_of(element)
+                written = name_of(element)
                 if written is not None:
                     names[written] = element
         return names.get(name)
 
 
-def _name_of(element: AnyElement) -> str | None:
-    """The ``name`` attribute's text, as :func:`~mjcf_model.tree.queries.find` compares it."""
-    if isinstance(element, GenericElement):
-        return element.attributes.get("name")
-    assert isinstance(element, TypedElement)
-    if "name" in element.__node_info__.table:
-        value = element.__dict__.get("name")
-        return value if type(value) is str else None
-    return element.extra.get("name")
+def name_of(element: AnyElement) -> str | None:
+    """The ``name`` attribute's text, as :func:`~mjcf_model.tree.queries.find` compares it.
+
+    Examples:
+        >>> from mjcf_model import Geom
+        >>> name_of(Geom(name="g")), name_of(Geom())
+        ('g', None)
+
+    """
+    cls = element.__class__
+    field = _NAME_FIELDS.get(cls, _UNKNOWN)
+    if field is _UNKNOWN:
+        field = _NAME_FIELDS[cls] = _name_field(cls)
+    if field is None:
+        if isinstance(element, GenericElement):
+            return element.attributes.get("name")
+        return cast(TypedElement, element).extra.get("name")
+    value = element.__dict__.get(field)
+    return value if value.__class__ is str else None
+
+
+def first_named(elements: Iterable[AnyElement], name: str) -> AnyElement | None:
+    """The first of ``elements`` whose ``name`` is ``name`` (:func:`name_of` for each, inlined).
+
+    Examples:
+        >>> from mjcf_model import Geom, Site
+        >>> first_named([Geom(name="a"), Site(name="b"), Geom(name="b")], "b").tag
+        'site'
+
+    """
+    fields, unknown = _NAME_FIELDS, _UNKNOWN
+    for element in elements:
+        field = fields.get(element.__class__, unknown)
+        if field is unknown or field is None:
+            if name_of(element) == name:
+                return element
+        elif element.__dict__.get(field) == name:
+            return element
+    return None
+
+
+def _name_field(cls: type) -> str | None:
+    """The field a typed class keeps ``name`` in; ``None`` where it is kept as text."""
+    if issubclass(cls, TypedElement):
+        return cls.__node_info__.table.get("name")
+    return None
+
+
+#: What :func:`name_of` looks up per class: the field that holds ``name``, or ``None``.
+_NAME_FIELDS: dict[type, str | None] = {}
+_UNKNOWN = "?"
 
 
 #: Per node (by ``id``): a weak reference to it, and its index (``None`` after the first
@@ -142,3 +232,20 @@ def index_of(node: Node) -> TagIndex | None:
         index = TagIndex(node)
         _INDEXES[key] = (entry[0], index)
     return index
+
+
+def indexed(node: Node, index: TagIndex) -> None:
+    """Give ``node`` its ``index`` now (the reader's, noted as it read the tree).
+
+    Its lookups then use the index from the first one on.
+
+    Examples:
+        >>> from mjcf_model import Body, Geom
+        >>> body = Body(children=[Geom(name="g")])
+        >>> indexed(body, TagIndex(body))
+        >>> index_of(body).named("geom", "g").name
+        'g'
+
+    """
+    key = id(node)
+    _INDEXES.remember(key, (weakref.ref(node, _forgetter(key)), index))

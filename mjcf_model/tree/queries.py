@@ -31,7 +31,7 @@ from mjcf_model.nodes.base import (
     get_attribute,
 )
 from mjcf_model.nodes.node_info import tuple_getter
-from mjcf_model.tree.indexes import elements_below, index_of
+from mjcf_model.tree.indexes import elements_below, first_named, index_of, name_of
 from mjcf_model.tree.traversal import walk
 from mjcf_model.values import Value, format_value, plain_value
 
@@ -126,18 +126,30 @@ def _tag_matches(element: AnyElement, tag: str | Collection[str]) -> bool:
 def _candidates(node: Node, tag: str | Collection[str], name: object) -> Iterator[AnyElement]:
     """The elements below ``node`` that may match: from its index when it has one.
 
-    ``name``: the ``name`` text looked for, or ``None`` when the lookup is not by name.
+    ``name``: the ``name`` text looked for, or ``None`` when the lookup is not by name;
+    the elements of another name are left out (the caller still checks every attribute).
     """
     index = index_of(node)
     if index is None:
-        yield from (e for e in elements_below(node) if _tag_matches(e, tag))
+        found = (
+            elements_below(node, tag)
+            if isinstance(tag, str)
+            else (e for e in elements_below(node) if e.tag in tag)
+        )
+        if isinstance(name, str):
+            first = first_named(found, name)  # the walk stops there
+            if first is None:
+                return
+            yield first
+            found = (e for e in found if name_of(e) == name)  # and goes on from there
+        yield from found
     elif not isinstance(tag, str):
         yield from (e for e in index.order if e.tag in tag)
     elif isinstance(name, str):
-        found = index.named(tag, name)
-        if found is not None:
-            yield found  # the first of that name; later ones follow in document order
-            yield from (e for e in index.tagged(tag) if e is not found)
+        first = index.named(tag, name)
+        if first is not None:
+            yield first  # the first of that name; later ones follow in document order
+            yield from (e for e in index.tagged(tag) if e is not first and name_of(e) == name)
     else:
         yield from index.tagged(tag)
 

@@ -3,17 +3,23 @@
 from __future__ import annotations
 
 import gc
+import operator
 import weakref
+from pathlib import Path
 
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from mjcf_model import Mujoco, find, find_all, prefixed
-from mjcf_model.serializers import loads
+from mjcf_model import Include, Mujoco, Node, find, find_all, prefixed
+from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.strategies import models
 from mjcf_model.tree import indexes
 from mjcf_model.tree.indexes import TagIndex, elements_below, index_of
 from mjcf_model.tree.traversal import walk
+from tests.conftest import compiling_corpus, corpus_id
+
+CORPUS = compiling_corpus()
 
 
 @given(models(), st.data())
@@ -46,17 +52,24 @@ def test_indexed_lookups_find_what_a_walk_finds(model: Mujoco, data: st.DataObje
         ]
 
 
-def test_an_index_is_built_on_the_second_query_and_goes_with_its_tree() -> None:
-    """The first query builds nothing; the second builds the index; it never keeps the tree."""
-    model = loads(
+def _scene(bodies: int) -> str:
+    return (
         "<mujoco><worldbody>"
-        + "".join(f'<body name="b{i}"><geom name="g{i}" size="1"/></body>' for i in range(50))
+        + "".join(f'<body name="b{i}"><geom name="g{i}" size="1"/></body>' for i in range(bodies))
         + "</worldbody></mujoco>"
     )
+
+
+def test_an_index_is_built_on_the_second_query_and_goes_with_its_tree() -> None:
+    """The first query of a built tree builds nothing; the second builds the index.
+
+    The index never keeps the tree alive.
+    """
+    model = prefixed(loads(_scene(50)), "p_")  # a tree no reader noted
     assert index_of(model) is None
     index = index_of(model)
     assert isinstance(index, TagIndex) and index_of(model) is index
-    assert index.named("geom", "g49") is find(model, "geom", name="g49")
+    assert index.named("geom", "p_g49") is find(model, "geom", name="p_g49")
     assert model not in index.order and index.order == list(elements_below(model))
     assert len(index.order) == len(list(walk(model))) - 1
     alive = weakref.ref(model)
@@ -88,3 +101,60 @@ def test_the_first_of_two_equal_names_is_found_first() -> None:
         assert find(model, "geom", name="x").size == (1.0,)
         assert [g.size for g in find_all(model, "geom", name="x")] == [(1.0,), (2.0,)]
         assert find(model, ("site", "geom"), name="x").tag == "geom"
+
+
+def _assert_the_walks_index(model: Node, index: TagIndex | None) -> None:
+    """``index`` lists what a walk of ``model`` lists: every element below it, by tag."""
+    assert index is not None
+    walked = TagIndex(model)
+    assert index.order == walked.order and all(map(operator.is_, index.order, walked.order))
+    for tag, elements in walked.by_tag.items():
+        assert [id(e) for e in index.tagged(tag)] == [id(e) for e in elements]
+    assert index.tagged("no such tag") == []
+
+
+@pytest.mark.parametrize("path", CORPUS, ids=corpus_id)
+def test_a_loaded_tree_is_indexed_by_its_reader(path: Path) -> None:
+    """A model read from a file has its index from the first query: the reader noted it.
+
+    Referee: the index a walk of the returned tree builds, element for element (``is``).
+    With its includes inlined, the tree holds other elements than the ones read: the
+    reader's index is not given, and the first query walks.
+    """
+    model = load(path)
+    _assert_the_walks_index(model, index_of(model))
+    inlined = load(path, inline_includes=True)
+    if any(isinstance(e, Include) for e in elements_below(model)):
+        assert index_of(inlined) is None
+    else:
+        _assert_the_walks_index(inlined, index_of(inlined))
+
+
+@given(models(), st.sampled_from(["", "<!-- before -->", "<?xml version='1.0'?>\n"]))
+def test_a_read_text_is_indexed_by_its_reader(model: Mujoco, before: str) -> None:
+    """A drawn model, written and read back (with a comment or declaration before its root)."""
+    read = loads(before + dumps(model) + "<!-- after -->")
+    _assert_the_walks_index(read, index_of(read))
+
+
+def test_a_repaired_text_is_indexed_by_the_reader_that_read_it() -> None:
+    """Text MuJoCo reads leniently is read again, repaired: the index is the second reader's."""
+    read = loads('<mujoco><worldbody><geom name="a&b" size="1"/><site/></worldbody></mujoco>')
+    assert find(read, "geom").name == "a&b"
+    _assert_the_walks_index(read, index_of(read))
+
+
+def test_a_tree_with_a_long_attribute_is_indexed() -> None:
+    """Attributes converted after parsing (over a megabyte) change no element of the index."""
+    numbers = " ".join(["1"] * 600_000)
+    read = loads(f'<mujoco><custom><numeric name="n" data="{numbers}"/></custom></mujoco>')
+    _assert_the_walks_index(read, index_of(read))
+    assert len(find(read, "numeric", name="n").data) == 600_000
+
+
+def test_the_first_query_of_a_built_tree_walks_without_an_index() -> None:
+    """A walk answers the first query by name (the first of that name, document order)."""
+    model = prefixed(loads(_scene(20)), "p_")
+    twice = Mujoco(children=[*model.children, *model.children])
+    assert find(twice, "geom", name="p_g3") is model.worldbody.bodies[3].geoms[0]
+    assert index_of(twice) is not None  # the second query built it
