@@ -90,6 +90,7 @@ GROUPS = (
     "compile",
     "variants",
     "sweep",
+    "resets",
     "sizes",
 )
 
@@ -156,7 +157,7 @@ class Selection:
         return Case(case.name, kept, case.inputs, case.memory)
 
 
-def _group_cases(group: str, tiny: bool, selection: Selection) -> list[Case]:
+def _group_cases(group: str, tiny: bool, selection: Selection, repeat: int) -> list[Case]:
     """The cases of one group, built only when the group is selected (building costs)."""
     corpus = compiling_corpus(_TINY_CORPUS if tiny else None)
     if group == "corpus":
@@ -179,6 +180,10 @@ def _group_cases(group: str, tiny: bool, selection: Selection) -> list[Case]:
         from benchmarks.cases_imports import import_cases
 
         return import_cases()
+    if group == "resets":
+        from benchmarks.cases_resets import reset_cases
+
+        return reset_cases(tiny, repeat)
     from benchmarks.cases_variants import compile_cases, sweep_cases, variant_cases
 
     if group == "compile":
@@ -188,14 +193,14 @@ def _group_cases(group: str, tiny: bool, selection: Selection) -> list[Case]:
     return sweep_cases(tiny)
 
 
-def _cases(tiny: bool, selection: Selection | None = None) -> list[Case]:
+def _cases(tiny: bool, selection: Selection | None = None, repeat: int = 1) -> list[Case]:
     """The selected cases (all of them by default), with the selected contenders."""
     selection = selection or Selection()
     cases = []
     for group in selection.groups:
         if group == "sizes":
             continue
-        for case in _group_cases(group, tiny, selection):
+        for case in _group_cases(group, tiny, selection, repeat):
             if selection.case_wanted(group, case.name):
                 cases.append(selection.chosen(case))
     return cases
@@ -226,7 +231,7 @@ def main(argv: list[str] | None = None) -> int:
     repeat = 1 if args.tiny else args.repeat
     started = time.perf_counter()
     rows: list[Row] = []
-    for case in _cases(args.tiny, selection):
+    for case in _cases(args.tiny, selection, repeat):
         case_rows = run_case(case, repeat)
         rows.extend(case_rows)
         print(_table(case_rows).split("\n", 2)[2], flush=True)

@@ -25,6 +25,8 @@ class Contender:
     missing: str = ""
     #: What exactly the contender does, for the table's note column.
     note: str = ""
+    #: The times of runs made elsewhere (another interpreter), when ``run`` is ``None``.
+    times: list[float] | None = None
 
 
 @dataclass
@@ -77,17 +79,19 @@ def run_case(case: Case, repeat: int) -> list[Row]:
     """Run every contender of ``case``; ratios are contender time over mjcf-model's."""
     rows = []
     for contender in case.contenders:
-        if contender.run is None:
+        if contender.run is None and contender.times is None:
             rows.append(Row(case.name, contender.name, case.inputs, None, note=contender.missing))
             continue
-        try:
-            times = _median_time(contender.run, repeat)
-        except Exception as error:  # a peer failing is a result, not a crash of the runner
-            rows.append(
-                Row(case.name, contender.name, case.inputs, None, note=f"failed: {error!r}"[:120])
-            )
-            continue
-        peak = _peak(contender.run) if case.memory else None
+        if contender.run is None:
+            times, peak = contender.times or [], None
+        else:
+            try:
+                times = _median_time(contender.run, repeat)
+            except Exception as error:  # a peer failing is a result, not a crash of the runner
+                failed = f"failed: {error!r}"[:120]
+                rows.append(Row(case.name, contender.name, case.inputs, None, note=failed))
+                continue
+            peak = _peak(contender.run) if case.memory else None
         rows.append(
             Row(
                 case.name,

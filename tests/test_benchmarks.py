@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -11,6 +12,8 @@ import mujoco
 import numpy as np
 import pytest
 
+from benchmarks import cases_resets
+from benchmarks.cases_resets import RESET_CASE, ROBOSUITE_RESETS
 from benchmarks.cases_variants import (
     VARIANT_MODELS,
     length_coordinates,
@@ -20,6 +23,7 @@ from benchmarks.cases_variants import (
     spec_scaled_variant,
     spec_with_skins_inline,
 )
+from benchmarks.environments import ROBOSUITE_RUNS, our_objects, our_twin, robosuite_classes
 from benchmarks.etree_path import etree_inlined, robosuite_scaled
 from benchmarks.harness import OURS, Case, Contender, Row, run_case
 from benchmarks.inputs import package_dir, synthetic_xml
@@ -160,11 +164,73 @@ def test_an_unknown_group_is_refused_with_the_groups_that_exist() -> None:
 
 
 def test_every_target_finds_its_rows(tiny_results: str) -> None:
-    """Each target line of the tiny run is measured: its case and contender names exist."""
+    """Each target line of the tiny run is measured: its case and contender names exist.
+
+    robosuite's hard resets are measured only where robosuite's environments run (MuJoCo
+    3.9, this suite's ``oldest`` environment); elsewhere their line says so.
+    """
     table = tiny_results.split("## Targets")[1].split("## Sizes")[0]
     lines = [line for line in table.splitlines() if line.startswith("| ") and "---" not in line]
+    resets = [line for line in lines if line.startswith("| robosuite hard reset")]
+    assert len(resets) == 1
+    if not ROBOSUITE_RUNS:
+        assert resets[0].endswith("| not measured | |")
+        lines.remove(resets[0])
+        table = "\n".join(lines)
     assert len(lines) > 15 and "not measured" not in table, table
     assert all(line.endswith(("| met |", "| MISSED |")) for line in lines[1:]), table
+
+
+def test_the_reset_rows_run_where_robosuite_runs(tiny_results: str) -> None:
+    """Both ways of resetting each tiny environment are timed, or say what they need."""
+    for task in ("Lift", "TwoArmPegInHole"):
+        for contender in (OURS, ROBOSUITE_RESETS):
+            cells = _row(tiny_results, RESET_CASE.format(task=task), contender)
+            assert cells is not None, (task, contender)
+            if ROBOSUITE_RUNS:
+                assert cells[3].endswith(" ms"), cells
+            else:
+                assert cells[3] == "-" and "MJCF_MODEL_MUJOCO39_PYTHON" in cells[6], cells
+
+
+def test_our_objects_binds_our_twins_in_the_block_only() -> None:
+    """Every robosuite object class a task's module uses is ours inside the block, theirs after."""
+    import robosuite.models.arenas.wipe_arena as wipe  # the Wipe task's markers are made there
+
+    before = {name: getattr(wipe, name) for name in robosuite_classes(wipe)}
+    assert set(before) == {"CustomMaterial", "CylinderObject"}
+    with our_objects("Wipe") as replaced:
+        assert replaced == ["CustomMaterial", "CylinderObject"]
+        for name in before:
+            assert getattr(wipe, name) is our_twin(name)
+            assert getattr(wipe, name).__module__.startswith("mjcf_model.compat")
+    assert {name: getattr(wipe, name) for name in before} == before
+
+
+def test_reset_times_measured_by_another_interpreter_are_read_back(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """On a newer MuJoCo the reset cases take the times another interpreter printed."""
+    times = {
+        "Lift": {OURS: [0.2, 0.3, 0.1], ROBOSUITE_RESETS: [0.4, 0.2, 0.6]},
+        "TwoArmPegInHole": {OURS: [1.0], ROBOSUITE_RESETS: [2.0]},
+    }
+    python = tmp_path / "python"
+    python.write_text(f"#!/bin/sh\necho 'robosuite logs'\necho '{json.dumps(times)}'\n")
+    python.chmod(0o755)
+    monkeypatch.setenv("MJCF_MODEL_MUJOCO39_PYTHON", str(python))
+    cases = cases_resets._measured_elsewhere(["Lift", "TwoArmPegInHole"], repeat=3)
+    rows = [row for case in cases for row in run_case(case, repeat=3)]
+    medians = {(row.case, row.contender): (row.median, row.ratio) for row in rows}
+    assert medians == {
+        (RESET_CASE.format(task="Lift"), OURS): (0.2, 1.0),
+        (RESET_CASE.format(task="Lift"), ROBOSUITE_RESETS): (0.4, 2.0),
+        (RESET_CASE.format(task="TwoArmPegInHole"), OURS): (1.0, 1.0),
+        (RESET_CASE.format(task="TwoArmPegInHole"), ROBOSUITE_RESETS): (2.0, 2.0),
+    }
+    assert "robosuite hard reset: mjcf-model time / robosuite time, geometric mean of 2 " in (
+        targets(rows)
+    )
 
 
 def test_every_size_is_measured_against_its_target(tiny_results: str) -> None:

@@ -18,17 +18,14 @@ these tests run in the ``oldest`` environment of ``tests/run_installed.py``
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
-from collections.abc import Callable
-from types import ModuleType
-from typing import Any, NamedTuple
+from typing import Any
 
 import mujoco
 import numpy as np
 import pytest
 
+from benchmarks.environments import TASKS, make, our_objects
 from mjcf_model.bridge.compare import model_differences
-from mjcf_model.compat import mjcf_utils as our_utils
-from mjcf_model.compat import objects as ours
 from tests.conftest import MUJOCO_VERSION
 from tests.support.compat_objects import text_of
 
@@ -38,102 +35,13 @@ pytestmark = pytest.mark.skipif(
     "tests/run_installed.py runs these in its 'oldest' environment",
 )
 
-#: robosuite's package of manipulation environments.
-_MANIPULATION = "robosuite.environments.manipulation"
-
-
-class Task(NamedTuple):
-    """How a robosuite environment is built, and where its objects are."""
-
-    #: The modules whose imported object classes make the environment's objects.
-    modules: tuple[str, ...]
-    #: The objects the environment made, read off the environment.
-    objects: Callable[[Any], list[Any]] = lambda env: list(env.model.mujoco_objects)
-    #: The robots (two-arm tasks get two Pandas).
-    robots: str | list[str] = "Panda"
-
-
-def _two_arm(module: str, objects: Callable[[Any], list[Any]] | None = None) -> Task:
-    modules = (f"{_MANIPULATION}.{module}",)
-    if objects is None:
-        return Task(modules, robots=["Panda", "Panda"])
-    return Task(modules, objects, robots=["Panda", "Panda"])
-
-
-def _one_arm(module: str) -> Task:
-    return Task((f"{_MANIPULATION}.{module}",))
-
-
-#: Every manipulation environment of robosuite 1.5.2.
-TASKS: dict[str, Task] = {
-    "Door": _one_arm("door"),
-    "Lift": _one_arm("lift"),
-    "Stack": _one_arm("stack"),
-    **{
-        task: _one_arm("nut_assembly")
-        for task in ("NutAssembly", "NutAssemblyRound", "NutAssemblySingle", "NutAssemblySquare")
-    },
-    **{
-        task: _one_arm("pick_place")
-        for task in (
-            "PickPlace",
-            "PickPlaceBread",
-            "PickPlaceCan",
-            "PickPlaceCereal",
-            "PickPlaceMilk",
-            "PickPlaceSingle",
-        )
-    },
-    "ToolHang": _one_arm("tool_hang"),
-    "Wipe": Task(
-        (f"{_MANIPULATION}.wipe", "robosuite.models.arenas.wipe_arena"),
-        lambda env: list(env.model.mujoco_arena.markers),
-    ),
-    "TwoArmLift": _two_arm("two_arm_lift"),
-    "TwoArmHandover": _two_arm("two_arm_handover"),
-    "TwoArmPegInHole": _two_arm("two_arm_peg_in_hole", lambda env: [env.hole, env.peg]),
-    "TwoArmTransport": Task(
-        (f"{_MANIPULATION}.two_arm_transport", "robosuite.models.objects.group.transport"),
-        robots=["Panda", "Panda"],
-    ),
-}
 #: How many random actions each run takes.
 STEPS = 100
-#: The environment settings: no rendering, staged rewards (they check grasps).
-SETTINGS = {
-    "has_renderer": False,
-    "has_offscreen_renderer": False,
-    "use_camera_obs": False,
-    "reward_shaping": True,
-}
-
-
-def _robosuite_classes(module: ModuleType) -> list[str]:
-    """The names ``module`` binds to robosuite's object classes and ``CustomMaterial``."""
-    from robosuite.models.objects import MujocoObject
-    from robosuite.utils.mjcf_utils import CustomMaterial
-
-    return sorted(
-        name
-        for name, value in vars(module).items()
-        if isinstance(value, type)
-        and value.__module__.startswith("robosuite.")
-        and (issubclass(value, MujocoObject) or value is CustomMaterial)
-    )
-
-
-def _ours(name: str) -> Any:
-    """The twin of robosuite's class ``name`` here (a missing one fails the test)."""
-    twin = getattr(our_utils if name == "CustomMaterial" else ours, name, None)
-    assert twin is not None, f"mjcf_model.compat has no {name}"
-    return twin
 
 
 def _record(task: str, seed: int) -> dict[str, Any]:
     """Build, reset and step ``task``: the compiled model, its XML and each step's result."""
-    import robosuite
-
-    env = robosuite.make(task, seed=seed, robots=TASKS[task].robots, **SETTINGS)
+    env = make(task, seed)
     try:
         reset = env.reset()
         actions = np.random.default_rng(seed)
@@ -168,20 +76,11 @@ def test_every_robosuite_environment_is_run() -> None:
 
 
 @pytest.mark.parametrize("task", list(TASKS))
-def test_task_runs_identically_with_this_librarys_objects(
-    task: str, monkeypatch: pytest.MonkeyPatch
-) -> None:
+def test_task_runs_identically_with_this_librarys_objects(task: str) -> None:
     """Same compiled model, XML, observations, rewards and done flags over the random steps."""
-    import importlib
-
     theirs = _record(task, seed=3)
-    replaced = []
-    for module_name in TASKS[task].modules:
-        module = importlib.import_module(module_name)
-        for name in _robosuite_classes(module):
-            monkeypatch.setattr(module, name, _ours(name))
-            replaced.append(name)
-    mine = _record(task, seed=3)
+    with our_objects(task) as replaced:
+        mine = _record(task, seed=3)
 
     assert replaced and mine["objects"]
     assert all(type(obj).__module__.startswith("mjcf_model") for obj in mine["objects"])
