@@ -46,6 +46,18 @@ __all__ = [
 _MAIN_BODY, _ROOT_BODY = body_node(value_text, "main"), body_node(value_text, "root")
 
 
+def material_name(material: Any) -> str:
+    """The name geoms give a ``CustomMaterial`` (ours or robosuite's), as robosuite reads it.
+
+    Examples:
+        >>> from mjcf_model.compat.mjcf_utils import CustomMaterial
+        >>> material_name(CustomMaterial("WoodRed", "wood", "wood_mat"))
+        'wood_mat'
+
+    """
+    return str(material.name)
+
+
 def material_parts(material: Any) -> tuple[str, str, bool, AnyElement, AnyElement]:
     """The material name, texture name, ``shared`` flag, and texture and material nodes.
 
@@ -53,7 +65,7 @@ def material_parts(material: Any) -> tuple[str, str, bool, AnyElement, AnyElemen
     robosuite's ``new_element`` reads them.
     """
     texture, node = material_nodes(material, text=value_text)
-    return str(material.name), texture.attributes["name"], bool(material.shared), texture, node
+    return material_name(material), texture.attributes["name"], bool(material.shared), texture, node
 
 
 def half_extents(geom_type: Any, size: Any) -> Any:
@@ -232,7 +244,7 @@ class PrimitiveObject(MujocoGeneratedObject):
         if isinstance(self.material, str) and self.material == "default":
             visual = {"rgba": "0.5 0.5 0.5 1", "material": "mat"}
         elif self.material is not None:
-            visual = {"material": material_parts(self.material)[0]}
+            visual = {"material": material_name(self.material)}  # its nodes: once, when added
         else:
             visual = {"rgba": array_to_string(self.rgba)}
         collision = {"density": str(self.density), "friction": array_to_string(self.friction)}

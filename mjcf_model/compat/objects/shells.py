@@ -16,7 +16,7 @@ import numpy as np
 
 from mjcf_model.compat.mjcf_utils.materials import CustomMaterial
 from mjcf_model.compat.objects.composite import CompositeObject
-from mjcf_model.compat.objects.generated import material_parts
+from mjcf_model.compat.objects.generated import material_name
 from mjcf_model.compat.objects.recipes import add_geom, centred, marker_site
 from mjcf_model.errors import MjcfValueError
 
@@ -70,7 +70,7 @@ class _Shell(CompositeObject):
 
     def _add(self, arguments: dict[str, Any], *geom: Any) -> None:
         """Add a geom (name, type, location, size, quat) with the shell's looks, condim 4."""
-        material = material_parts(self.material)[0] if self.has_material else None
+        material = material_name(self.material) if self.has_material else None
         looking = {"geom_rgbas": self.rgba, "geom_materials": material}
         add_geom(arguments, *geom, **looking, geom_frictions=self.friction, geom_condims=4)
 
