@@ -36,11 +36,12 @@ from numpy.typing import NDArray
 
 from mjcf_model.caching import BoundedCache
 from mjcf_model.errors import MjcfAssetError, MjcfSyntaxError
-from mjcf_model.files.provenance import file_references, file_stem
+from mjcf_model.files.provenance import Folders, element_file_references, file_stem
 from mjcf_model.nodes.asset import Bone, Skin
 from mjcf_model.nodes.base import (
     AnyElement,
     Comment,
+    Element,
     Node,
     attribute_items,
     get_attribute,
@@ -48,7 +49,7 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.tree.traversal import SKIN_KEYS, map_elements
+from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import format_float
 from mjcf_model.values.writing import LONG_LIST, remember_text
 
@@ -270,42 +271,60 @@ def inline_skin_files(node: _N, directory: str | os.PathLike[str] | None = None)
     """
     if not isinstance(node, Mujoco) or (directory is None and node.base_dir is None):
         return node
-    skin_elements = (  # skins stand only in the top-level sections: no need to walk the bodies
-        element
-        for section in node.elements
-        if section.tag in ("asset", "deformable")
-        for element in section.elements
-        if element.tag == "skin"
-    )
-    if not any(get_attribute(skin, "file") for skin in skin_elements):
+    # Skins stand only in the top-level sections: no need to walk the bodies, and only
+    # the skins' paths are resolved.
+    sections = [
+        (index, section)
+        for index, section in enumerate(node.children)
+        if isinstance(section, Element)
+        and section.tag in _SKIN_SECTIONS
+        and any(get_attribute(e, "file") for e in section.elements if e.tag == "skin")
+    ]
+    if not sections:
         return node
-    model: Mujoco = node
-    located = model if directory is None else build_node(Mujoco, {"base_dir": directory}, model)
-    skins = {id(r.element): r for r in file_references(located) if r.key in SKIN_KEYS}
-    if not skins:
-        return node
-
-    def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
-        reference = skins.get(id(element))
-        if reference is None or reference.element is not element:
-            return element
-        try:
-            data = read_skin(reference.path)
-        except OSError as error:
-            raise MjcfAssetError(
-                f"cannot read skin file {str(reference.path)!r}: {error.strerror or error}"
-            ) from None
-        name = get_attribute(element, "name") or file_stem(reference.text)
-        inline = with_attributes(
-            element,
-            {
-                "file": None,
-                "name": name,
-                "vertex": data.vertex,
-                "texcoord": data.texcoord,
-                "face": data.face,
-            },
+    base_dir = Path(directory) if directory is not None else node.base_dir
+    folders = Folders.of(node)
+    children = list(node.children)
+    for index, section in sections:
+        key = f"{section.tag}/skin"
+        children[index] = with_children(
+            section,
+            [
+                _inlined_skin(child, key, folders, base_dir)
+                if isinstance(child, Element) and child.tag == "skin"
+                else child
+                for child in section.children
+            ],
         )
-        return build_node(type(inline), {"children": (*inline.children, *data.children)}, inline)
+    return cast(_N, with_children(node, children))
 
-    return map_elements(visit, model)  # type: ignore[return-value]
+
+#: The sections whose ``<skin>`` elements may read a file.
+_SKIN_SECTIONS = ("asset", "deformable")
+
+
+def _inlined_skin(
+    element: AnyElement, key: str, folders: Folders, base_dir: Path | None
+) -> AnyElement:
+    """``element`` with the skin its file holds written inline (itself, when it names none)."""
+    reference = next(element_file_references(element, key, folders, base_dir), None)
+    if reference is None:
+        return element
+    try:
+        data = read_skin(reference.path)
+    except OSError as error:
+        raise MjcfAssetError(
+            f"cannot read skin file {str(reference.path)!r}: {error.strerror or error}"
+        ) from None
+    name = get_attribute(element, "name") or file_stem(reference.text)
+    inline = with_attributes(
+        element,
+        {
+            "file": None,
+            "name": name,
+            "vertex": data.vertex,
+            "texcoord": data.texcoord,
+            "face": data.face,
+        },
+    )
+    return build_node(type(inline), {"children": (*inline.children, *data.children)}, inline)

@@ -57,6 +57,7 @@ __all__ = [
     "FILE_TAGS",
     "FileReference",
     "Folders",
+    "element_file_references",
     "file_references",
     "file_stem",
     "relocated",
@@ -186,9 +187,20 @@ def _lookup(text: str, folders: Folders, kind: Kind) -> str:
     return posixpath.normpath(posixpath.join(folder, text)) if folder else text
 
 
-def _references(
+def element_file_references(
     element: AnyElement, key: str | None, folders: Folders, base_dir: Path | None
 ) -> Iterator[FileReference]:
+    """The file paths ``element`` itself writes (its schema key ``key``), as MuJoCo reads them.
+
+    Resolved under ``folders`` from ``base_dir``: :func:`file_references` for one element.
+
+    Examples:
+        >>> from mjcf_model import Mesh
+        >>> [r.lookup for r in element_file_references(
+        ...     Mesh(file="arm.stl"), "asset/mesh", Folders(mesh="meshes"), None)]
+        ['meshes/arm.stl']
+
+    """
     found = FILE_ATTRIBUTES.get(key or "")
     if found is None:
         return
@@ -220,7 +232,7 @@ def file_references(model: Mujoco) -> Iterator[FileReference]:
     """
     folders = Folders.of(model)
     for element, key, _ in keyed_walk(model):
-        yield from _references(element, key, folders, model.base_dir)
+        yield from element_file_references(element, key, folders, model.base_dir)
 
 
 def with_paths(
@@ -239,7 +251,7 @@ def with_paths(
 
     def visit(element: AnyElement, key: str | None, _: Sequence[AnyElement]) -> AnyElement:
         changes = {}
-        for reference in _references(element, key, folders, model.base_dir):
+        for reference in element_file_references(element, key, folders, model.base_dir):
             text = new_path(reference)
             if text != reference.text:
                 changes[reference.attribute] = text

@@ -476,7 +476,18 @@ def with_attributes(
         attributes = element.attributes.replaced(text)  # checks only the new text
         return build_node(type(element), {"attributes": attributes}, element)
     assert isinstance(element, TypedElement)
-    table = field_table(type(element))
+    cls = type(element)
+    plain = cls.__node_info__.plain_names
+    if all(type(value) is str and key in plain for key, value in changes.items()):
+        # Names and keywords held as written (a rename's changes): their one check is
+        # the text's, so the new node is the old one's fields with these replaced.
+        data = element.__dict__.copy()
+        for key, value in changes.items():
+            data[plain[key]] = check_text(cast(str, value))
+        renamed = object.__new__(cls)
+        object.__setattr__(renamed, "__dict__", data)
+        return renamed
+    table = field_table(cls)
     fields: dict[str, Any] = {}
     extra: dict[str, str | None] = {}
     for key, value in changes.items():
@@ -489,4 +500,4 @@ def with_attributes(
             extra[key] = format_value(value)
     if extra:
         fields["extra"] = element.extra.replaced(extra)
-    return build_node(type(element), fields, element)
+    return build_node(cls, fields, element)

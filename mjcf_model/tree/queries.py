@@ -36,6 +36,7 @@ from mjcf_model.tree.traversal import walk
 from mjcf_model.values import Value, format_value, plain_value
 
 __all__ = [
+    "attribute_reader",
     "attribute_values",
     "find",
     "find_all",
@@ -57,8 +58,8 @@ def attribute_values(element: AnyElement, names: tuple[str, ...]) -> tuple[Value
     """The values of the MJCF attributes ``names`` (``None`` where not written), read at once.
 
     The same values as :func:`~mjcf_model.nodes.base.get_attribute` for each name, read
-    by one reader per class and names, made on first use: the transforms that
-    read several attributes of every element use it.
+    by one reader per class and names (:func:`attribute_reader`), made on first use: the
+    transforms that read several attributes of every element use it.
 
     Examples:
         >>> from mjcf_model import Geom
@@ -66,18 +67,35 @@ def attribute_values(element: AnyElement, names: tuple[str, ...]) -> tuple[Value
         ('arm', None, '1')
 
     """
-    if isinstance(element, GenericElement):
-        get = element.attributes.get
-        return tuple([get(name) for name in names])
     reader = _READERS.get((type(element), names))
     if reader is None:
-        reader = _READERS.remember((type(element), names), _reader(type(element), names))
+        reader = _READERS.remember((type(element), names), attribute_reader(type(element), names))
     return reader(element)
 
 
-def _reader(
+def attribute_reader(
     cls: type[Element], names: tuple[str, ...]
 ) -> Callable[[AnyElement], tuple[Value | None, ...]]:
+    """What reads the MJCF attributes ``names`` of a ``cls`` element at once, as a tuple.
+
+    For a caller that keeps one per class (the transforms' plans) instead of looking
+    one up per element.
+
+    Examples:
+        >>> from mjcf_model import Geom, GenericElement
+        >>> attribute_reader(Geom, ("name", "x"))(Geom(name="g", extra={"x": "1"}))
+        ('g', '1')
+        >>> attribute_reader(GenericElement, ("name",))(GenericElement(tag="t", attributes={}))
+        (None,)
+
+    """
+    if issubclass(cls, GenericElement):
+
+        def read_text(element: AnyElement) -> tuple[Value | None, ...]:
+            get = cast(GenericElement, element).attributes.get
+            return tuple([get(name) for name in names])
+
+        return read_text
     table = cls.__node_info__.table
     fields = tuple(table.get(name) for name in names)
     if None not in fields:

@@ -52,7 +52,7 @@ from mjcf_model.transforms.naming.generated_names import (
     GeneratedNames,
     declarations,
 )
-from mjcf_model.tree.queries import attribute_values
+from mjcf_model.tree.queries import attribute_reader
 from mjcf_model.tree.traversal import (
     GUESS,
     SKIN_KEYS,
@@ -97,7 +97,8 @@ def declared_names(node: AnyElement) -> dict[str, frozenset[str]]:
     base_dir = node.base_dir if isinstance(node, Mujoco) else None
     for element, key, _ in keyed_walk(node):
         if key in DECLARING_KEYS:
-            for _, namespace, name in _declared(element, key, _PLANS[key], base_dir):
+            plan = _PLANS[key]
+            for _, namespace, name in _declared(element, key, plan, base_dir, plan.values(element)):
                 found.setdefault(namespace, set()).add(name)
     return {namespace: frozenset(names) for namespace, names in found.items()}
 
@@ -148,15 +149,25 @@ def prefix_map(
 class _Plan:
     """What renaming reads on the elements of one schema key, worked out once per key."""
 
-    __slots__ = ("declared", "declares", "names", "namespaces", "references", "spec")
+    __slots__ = (
+        "count",
+        "declared",
+        "declares",
+        "names",
+        "namespaces",
+        "readers",
+        "references",
+        "spec",
+    )
 
     def __init__(self, spec: ElementSpec) -> None:
         #: The table's entry.
         self.spec = spec
         #: Whether the element declares a name.
         self.declares = bool(spec.declares)
-        #: The attributes that declare names, read at once, and the namespace of each.
+        #: The attributes that declare names, read at once, how many, and the namespace of each.
         self.declared = tuple(spec.declares)
+        self.count = len(self.declared)
         self.namespaces = tuple(spec.declares.values())
         #: The reference attributes, read at once.
         self.names = tuple(spec.references)
@@ -170,6 +181,16 @@ class _Plan:
             )
             for attribute, target in spec.references.items()
         )
+        #: Per element class: what reads the declaring, then the reference attributes.
+        self.readers: dict[type, Callable[[AnyElement], tuple[Value | None, ...]]] = {}
+
+    def values(self, element: AnyElement) -> tuple[Value | None, ...]:
+        """The declaring attributes' values, then the references', of ``element``."""
+        reader = self.readers.get(element.__class__)
+        if reader is None:
+            reader = attribute_reader(element.__class__, self.declared + self.names)
+            self.readers[element.__class__] = reader
+        return reader(element)
 
 
 #: The plan of each schema key that declares or refers to a name.
@@ -181,14 +202,28 @@ _NOTHING_TO_RENAME = frozenset(SCHEMA) - _PLANS.keys() - SKIN_KEYS - {"include",
 
 
 def _declared(
-    element: AnyElement, key: str | None, plan: _Plan, base_dir: Path | None
+    element: AnyElement,
+    key: str | None,
+    plan: _Plan,
+    base_dir: Path | None,
+    values: tuple[Value | None, ...],
 ) -> Iterable[tuple[str, str, str]]:
-    """``declarations(element, key)``, read at once where every declaring attribute is written.
+    """``declarations(element, key)``, from ``values`` where every declaring attribute is written.
 
-    The names are then the attributes' values (but for ``<default class="main">``, which
-    declares none); an element named after its file, or not named, takes the general rule.
+    ``values``: the element's :meth:`_Plan.values`. The names are then the attributes'
+    values (but for ``<default class="main">``, which declares none); an element named
+    after its file, or not named, takes the general rule.
     """
-    names = attribute_values(element, plan.declared)
+    count = plan.count
+    if count == 1:  # nearly every element: one ``name``
+        name = values[0]
+        if type(name) is str and name:
+            namespace = plan.namespaces[0]
+            if name == MAIN_CLASS[0] and namespace == MAIN_CLASS[1]:
+                return ()
+            return ((plan.declared[0], namespace, name),)
+        return declarations(element, key, base_dir=base_dir)
+    names = values[:count]
     if all(type(name) is str and name for name in names):
         written = cast(tuple[str, ...], names)
         return [
@@ -211,18 +246,20 @@ def _renamed_attributes(
         return {}
     if key == "body/attach" and get_attribute(element, "model") is None:
         plan = _SAME_MODEL_PLAN
+    values = plan.values(element)
     changes: dict[str, Value | None] = {}
     if plan.declares:
-        for attribute, namespace, name in _declared(element, key, plan, base_dir):
+        for attribute, namespace, name in _declared(element, key, plan, base_dir, values):
             new = rename(namespace, name)
             if new != name:
                 changes[attribute] = new
     if not plan.names:
         return changes
-    for attribute, value, (target, selector, listed) in zip(
-        plan.names, attribute_values(element, plan.names), plan.references, strict=True
+    references = values[plan.count :]
+    for attribute, value, (target, selector, listed) in zip(  # noqa: B905 (same lengths)
+        plan.names, references, plan.references
     ):
-        if not isinstance(value, str) or not value:
+        if type(value) is not str or not value:
             continue
         if selector is not None:
             target = reference_namespace(
