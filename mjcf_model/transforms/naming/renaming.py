@@ -256,6 +256,8 @@ def _renamed_attributes(
     if not plan.names:
         return changes
     references = values[plan.count :]
+    if references.count(None) == len(references):  # most elements refer to nothing
+        return changes
     for attribute, value, (target, selector, listed) in zip(  # noqa: B905 (same lengths)
         plan.names, references, plan.references
     ):
