@@ -25,7 +25,11 @@ def scene_cases(bodies: int) -> list[Case]:
     """Load, find by name (first and repeated query), prefix + write a ``bodies``-body scene."""
     from mjcf_model import find, prefixed
     from mjcf_model.serializers import dumps, loads
-    from mjcf_model.tree import indexes
+
+    try:
+        from mjcf_model.tree import indexes
+    except ImportError:  # a library before the index (measuring a change against it)
+        indexes = None
 
     utils = robosuite_utils()
     text = synthetic_xml(bodies, "wide")
@@ -35,17 +39,21 @@ def scene_cases(bodies: int) -> list[Case]:
     last = f"g{bodies - 1}"
     path = f".//geom[@name='{last}']"
     inputs = f"{bodies:,} bodies (a joint, a capsule, a site each)"
-    read = getattr(indexes, "index_of", lambda _: None)(model)  # the reader's index, if any
+    read = indexes.index_of(model) if indexes is not None else None  # the reader's, if any
+
+    def forget(tree: object) -> None:  # as for a tree nobody queried yet
+        if indexes is not None:
+            indexes._INDEXES.pop(id(tree), None)
 
     def first_query_loaded() -> object:
-        if read is not None:  # as just read: the index the reader noted, never queried
+        if read is not None and hasattr(read, "places"):  # the index the reader noted
             indexes.indexed(model, indexes.TagIndex.from_reading(read.order, read.places))
         else:  # a library whose reader notes no index (measuring a change against it)
-            indexes._INDEXES.pop(id(model), None)
+            forget(model)
         return find(model, "geom", name=last)
 
     def first_query_transformed() -> object:
-        indexes._INDEXES.pop(id(transformed), None)  # as for a tree nobody queried yet
+        forget(transformed)
         return find(transformed, "geom", name=f"t_{last}")
 
     for _ in range(2):  # the second query builds the twin's index
