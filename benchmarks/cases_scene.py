@@ -2,14 +2,15 @@
 
 Each body holds a joint, a capsule and a site (``synthetic_xml``, all in the world):
 loading it, finding one geom by name (the first query of a loaded tree, of a tree a
-transform returned, and asked again), and prefixing and writing it, each beside
-ElementTree doing the same.
+transform returned, of a tree built in code, and asked again), and prefixing and
+writing it, each beside ElementTree doing the same.
 """
 
 from __future__ import annotations
 
 import copy
 import xml.etree.ElementTree as ET
+from typing import Any
 
 from benchmarks.etree_path import MISSING_ROBOSUITE, robosuite_utils
 from benchmarks.harness import OURS, Case, Contender
@@ -35,26 +36,26 @@ def scene_cases(bodies: int) -> list[Case]:
     text = synthetic_xml(bodies, "wide")
     model, twin = loads(text), loads(text)
     transformed = prefixed(model, "t_")
+    built = type(model)(children=model.children)  # a tree made in code: nothing noted
     tree = ET.fromstring(text)
     last = f"g{bodies - 1}"
     path = f".//geom[@name='{last}']"
     inputs = f"{bodies:,} bodies (a joint, a capsule, a site each)"
-    read = indexes.index_of(model) if indexes is not None else None  # the reader's, if any
 
-    def forget(tree: object) -> None:  # as for a tree nobody queried yet
-        if indexes is not None:
+    def noted(tree: object) -> object:
+        """The index noted when ``tree`` was read or made, before any query (or ``None``)."""
+        entry = indexes._INDEXES.get(id(tree)) if indexes is not None else None
+        index = entry[1] if entry is not None else None
+        return index if hasattr(index, "places") else None
+
+    read, made = noted(model), noted(transformed)
+
+    def first_query(tree: Any, index: Any, name: str) -> object:
+        if index is not None:  # as just read or made: the noted index, never queried
+            indexes.indexed(tree, indexes.TagIndex.from_reading(index.order, index.places))
+        elif indexes is not None:  # a library that notes none (measuring a change against it)
             indexes._INDEXES.pop(id(tree), None)
-
-    def first_query_loaded() -> object:
-        if read is not None and hasattr(read, "places"):  # the index the reader noted
-            indexes.indexed(model, indexes.TagIndex.from_reading(read.order, read.places))
-        else:  # a library whose reader notes no index (measuring a change against it)
-            forget(model)
-        return find(model, "geom", name=last)
-
-    def first_query_transformed() -> object:
-        forget(transformed)
-        return find(transformed, "geom", name=f"t_{last}")
+        return find(tree, "geom", name=name)
 
     for _ in range(2):  # the second query builds the twin's index
         find(twin, "geom", name=last)
@@ -78,7 +79,7 @@ def scene_cases(bodies: int) -> list[Case]:
             [
                 Contender(
                     OURS,
-                    first_query_loaded,
+                    lambda: first_query(model, read, last),
                     note="find(model, 'geom', name=...), the last geom, on the index the reader "
                     "noted",
                 ),
@@ -91,8 +92,20 @@ def scene_cases(bodies: int) -> list[Case]:
             [
                 Contender(
                     OURS,
-                    first_query_transformed,
-                    note="the same on prefixed(model, 't_'): a walk of the whole tree",
+                    lambda: first_query(transformed, made, f"t_{last}"),
+                    note="the same on prefixed(model, 't_'), on the index the transform noted",
+                ),
+                Contender("ElementTree find", lambda: tree.find(path), note=path),
+            ],
+            inputs,
+        ),
+        Case(
+            "scene: find a geom by name, first query of a built tree",
+            [
+                Contender(
+                    OURS,
+                    lambda: first_query(built, None, last),
+                    note="the same on Mujoco(children=model.children): a walk of the whole tree",
                 ),
                 Contender("ElementTree find", lambda: tree.find(path), note=path),
             ],

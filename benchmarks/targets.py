@@ -101,7 +101,7 @@ def _scene(rows: list[Row]) -> list[str]:
                 f"scene find by name, first query of a {kind} tree",
                 2.0,
             )
-            for kind in ("loaded", "transformed")
+            for kind in ("loaded", "transformed", "built")
         ],
         _at_most(
             rows,

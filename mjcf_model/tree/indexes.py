@@ -3,9 +3,11 @@
 A tree is immutable, so what is below a node never changes: the elements of each
 tag, in document order, can be listed once and serve every later lookup on that
 node. The reader notes the index of the tree it reads as it reads it (each element's
-place in document order), so a loaded model is indexed from its first lookup
-(:func:`indexed`). For a tree built or transformed in code, :func:`index_of` builds the
-index the second time a node is queried (a single lookup walks the tree and stops at
+place in document order), and so does :func:`~mjcf_model.tree.traversal.map_elements`
+for a result of the same shape as its input (every transform that only changes
+attributes): a loaded or transformed model is indexed from its first lookup
+(:func:`indexed`). For another tree built in code, :func:`index_of` builds the index
+the second time a node is queried (a single lookup walks the tree and stops at
 its first match, which building an index would not beat). An index is kept while the
 node lives and forgotten with it: it holds the node by a weak reference and only the
 elements below it (which never refer to their parents), so an index never keeps a

@@ -17,6 +17,7 @@ True
 from __future__ import annotations
 
 import operator
+from array import array
 from collections.abc import Callable, Collection, Iterator, Sequence
 from typing import TypeVar
 
@@ -32,6 +33,7 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.schema.namespaces import child_key, guess_context
 from mjcf_model.tree.ancestry import Ancestors
+from mjcf_model.tree.indexes import TagIndex, indexed
 
 __all__ = [
     "GUESS",
@@ -156,7 +158,9 @@ def map_elements(
     not know), ``ancestors`` the original elements from the root down to the
     parent. Comments are kept as they are. ``kept`` names the keys of elements
     ``fn`` returns unchanged when they have no children: ``fn`` is not called
-    for those (a transform's way of skipping what it has nothing to do with).
+    for those (a transform's way of skipping what it has nothing to do with). A result
+    of the same shape (each element's result has its tag and the children mapped from
+    its own) is indexed for lookups from its first one, as a loaded model is.
 
     Examples:
         >>> from mjcf_model import Body, Geom
@@ -196,7 +200,9 @@ def with_mapped_children(element: _A, mapped: list[Node]) -> _A:
 
 
 #: A frame of :func:`_map_elements`' stack.
-_Frame = tuple[AnyElement, str | None, str | None, Ancestors, Ancestors, list[Node], Iterator[Node]]
+_Frame = tuple[
+    AnyElement, str | None, str | None, Ancestors, Ancestors, list[Node], Iterator[Node], int
+]
 
 
 def _map_elements(
@@ -205,34 +211,60 @@ def _map_elements(
     """:func:`map_elements` with an explicit stack, so trees of any depth are mapped.
 
     A frame is pushed only for an element with children; a leaf is visited
-    where it stands.
+    where it stands. The results are noted in document order as the reader notes what
+    it reads: when ``fn`` keeps the shape of the tree (each element's result has its
+    tag, and the children mapped from its own), that is the lookup index of the new
+    tree (:func:`~mjcf_model.tree.indexes.indexed`), so its first lookup walks nothing.
     """
     key = _key_of(context, root.tag)
     inner = context if key is None or key == "include" else key
     top = Ancestors()
     keys, unknown = _KEYS, _UNKNOWN
-    # (element, key, its children's context, its ancestors, theirs, mapped, pending)
-    stack: list[_Frame] = [(root, key, inner, top, top.extended(root), [], iter(root.children))]
+    order: list[AnyElement] = []
+    places: dict[str, array[int]] = {}
+    same_shape = True
+    # (element, key, its children's context, its ancestors, theirs, mapped, pending, place)
+    stack: list[_Frame] = [(root, key, inner, top, top.extended(root), [], iter(root.children), -1)]
     while True:
-        element, key, inner, ancestors, below, mapped, pending = stack[-1]
+        element, key, inner, ancestors, below, mapped, pending, place = stack[-1]
         for child in pending:
             if not isinstance(child, Element):
                 mapped.append(child)
                 continue
-            child_key = keys.get((inner, child.tag), unknown)
+            tag = child.tag
+            child_key = keys.get((inner, tag), unknown)
             if child_key is unknown:
-                child_key = _key_of(inner, child.tag)
+                child_key = _key_of(inner, tag)
+            tagged = places.get(tag)
+            if tagged is None:
+                tagged = places[tag] = array("l")
+            tagged.append(len(order))
             if child.children:
                 deeper = inner if child_key is None or child_key == "include" else child_key
                 level = below.extended(child)
-                stack.append((child, child_key, deeper, below, level, [], iter(child.children)))
+                stack.append(
+                    (child, child_key, deeper, below, level, [], iter(child.children), len(order))
+                )
+                order.append(child)  # its place; the result takes it
                 break
-            mapped.append(child if child_key in kept else fn(child, child_key, below))
+            result = child if child_key in kept else fn(child, child_key, below)
+            if result is not child and (result.tag != tag or result.children):
+                same_shape = False
+            order.append(result)
+            mapped.append(result)
         else:
             stack.pop()
-            result = fn(with_mapped_children(element, mapped), key, ancestors)
+            built = with_mapped_children(element, mapped)
+            result = fn(built, key, ancestors)
+            if result is not built and (
+                result.tag != element.tag or result.children is not built.children
+            ):
+                same_shape = False
             if not stack:
+                if same_shape and result is not root:
+                    indexed(result, TagIndex.from_reading(order, places))
                 return result
+            order[place] = result
             stack[-1][5].append(result)
 
 

@@ -11,12 +11,26 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from mjcf_model import Include, Mujoco, Node, find, find_all, prefixed
+from mjcf_model import (
+    Body,
+    GenericElement,
+    Include,
+    Mujoco,
+    Node,
+    find,
+    find_all,
+    map_elements,
+    prefixed,
+    renamed,
+    scaled,
+    with_attributes,
+)
+from mjcf_model.nodes.base import AnyElement
 from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.strategies import models
 from mjcf_model.tree import indexes
 from mjcf_model.tree.indexes import TagIndex, elements_below, index_of
-from mjcf_model.tree.traversal import walk
+from mjcf_model.tree.traversal import walk, with_children
 from tests.conftest import compiling_corpus, corpus_id
 
 CORPUS = compiling_corpus()
@@ -65,7 +79,8 @@ def test_an_index_is_built_on_the_second_query_and_goes_with_its_tree() -> None:
 
     The index never keeps the tree alive.
     """
-    model = prefixed(loads(_scene(50)), "p_")  # a tree no reader noted
+    read = prefixed(loads(_scene(50)), "p_")
+    model = Mujoco(children=read.children)  # a tree built in code: nothing noted its index
     assert index_of(model) is None
     index = index_of(model)
     assert isinstance(index, TagIndex) and index_of(model) is index
@@ -77,6 +92,47 @@ def test_an_index_is_built_on_the_second_query_and_goes_with_its_tree() -> None:
     del model
     gc.collect()
     assert alive() is None and key not in indexes._INDEXES
+
+
+@given(models(), st.sampled_from(["prefixed", "scaled", "renamed", "map_elements"]))
+def test_a_transform_that_keeps_the_shape_indexes_its_result(model: Mujoco, how: str) -> None:
+    """A transform's result has its index from its first query, noted as it was built.
+
+    Referee: the index a walk of the result builds, element for element (``is``). A
+    scaled model may have a section rebuilt at its root; its first query then walks.
+    """
+    changed = {
+        "prefixed": lambda: prefixed(model, "p_"),
+        "scaled": lambda: scaled(model, 2),
+        "renamed": lambda: renamed(model, {"body0": "moved"}),
+        "map_elements": lambda: map_elements(
+            lambda e, key, _: with_attributes(e, {"x": "1"}), model
+        ),
+    }[how]()
+    index = index_of(changed)
+    if how == "scaled" and index is None:
+        # scaling may rebuild a section at the root (friction defaults): no index then
+        assert find_all(changed, "geom") == [e for _, e in walk(changed) if e.tag == "geom"]
+    elif changed is not model:
+        _assert_the_walks_index(changed, index)
+
+
+@given(models())
+def test_a_transform_that_changes_the_shape_gives_no_index(model: Mujoco) -> None:
+    """Elements added or a tag changed: no index is noted, and lookups still answer right."""
+
+    def grown(element: AnyElement, key: str | None, _: object) -> AnyElement:
+        if element.tag == "worldbody":
+            return with_children(element, [*element.children, Body(name="added")])
+        if element.tag == "geom":
+            return GenericElement(tag="thing", attributes={"name": "t"})
+        return element
+
+    changed = map_elements(grown, model)
+    assert index_of(changed) is None  # the first query: nothing noted
+    assert find(changed, "body", name="added") is changed.worldbody.children[-1]
+    assert find_all(changed, "geom") == []
+    assert find_all(changed, "thing") == [e for _, e in walk(changed) if e.tag == "thing"]
 
 
 def test_a_transformed_tree_gets_its_own_index() -> None:
@@ -154,7 +210,7 @@ def test_a_tree_with_a_long_attribute_is_indexed() -> None:
 
 def test_the_first_query_of_a_built_tree_walks_without_an_index() -> None:
     """A walk answers the first query by name (the first of that name, document order)."""
-    model = prefixed(loads(_scene(20)), "p_")
+    model = loads(_scene(20))
     twice = Mujoco(children=[*model.children, *model.children])
-    assert find(twice, "geom", name="p_g3") is model.worldbody.bodies[3].geoms[0]
+    assert find(twice, "geom", name="g3") is model.worldbody.bodies[3].geoms[0]
     assert index_of(twice) is not None  # the second query built it
