@@ -34,6 +34,7 @@ __all__ = [
     "SourceText",
     "detail",
     "layout_of",
+    "new_layout",
     "place_key",
     "read_slots",
 ]
@@ -403,11 +404,12 @@ def _with_children(layout: Layout, children: tuple[Any, ...]) -> Layout:
         True
 
     """
-    return _new_layout(Layout, (*layout[:6], children, *layout[7:]))
+    return new_layout(Layout, (*layout[:6], children, *layout[7:]))
 
 
-#: Makes a layout from a tuple of its fields.
-_new_layout = tuple.__new__
+#: Makes a layout from a tuple of its fields, in C: ``new_layout(Layout, fields)`` (the
+#: reader makes one per element, the transforms one per rebuilt parent).
+new_layout = tuple.__new__
 
 
 def layout_of(node: Any) -> Layout | None:

@@ -15,7 +15,6 @@ expat refuses is repaired (:mod:`mjcf_model.serializers.repairs`) and read again
 
 from __future__ import annotations
 
-from array import array
 from typing import Any, NoReturn
 from xml.parsers import expat
 
@@ -29,7 +28,13 @@ from mjcf_model.errors import (
 from mjcf_model.nodes.base import AnyElement, Comment, Element, Node, TypedElement
 from mjcf_model.nodes.root import Include
 from mjcf_model.serializers.includes import PendingInclude, Session
-from mjcf_model.serializers.layout import DocumentText, Layout, SourceText, layout_of
+from mjcf_model.serializers.layout import (
+    DocumentText,
+    Layout,
+    SourceText,
+    layout_of,
+    new_layout,
+)
 from mjcf_model.serializers.open_element import STEPS, OpenElement, step_of
 from mjcf_model.serializers.parsed_elements import (
     Deferred,
@@ -49,7 +54,7 @@ from mjcf_model.serializers.repairs import (
     exact_attributes,
 )
 from mjcf_model.serializers.scanning import BREAK, may_hold_text, start_tag_end
-from mjcf_model.tree.indexes import TagIndex
+from mjcf_model.tree.indexes import NotedOrder, TagIndex
 from mjcf_model.values import Unparsed
 
 __all__ = ["Reader"]
@@ -98,10 +103,8 @@ class Reader:
         #: The element being closed, for :meth:`locate`.
         self.closing: OpenElement | None = None
         #: Every element below the root in document order (each has its place from its
-        #: start tag on, and is put there at its end tag), and the places of each tag's:
-        #: the lookup index of the tree read (:meth:`index`).
-        self.order: list[Any] = []
-        self.places: dict[str, array[int]] = {}
+        #: start tag on, and is put there at its end tag): the lookup index of the tree read.
+        self.noted = NotedOrder()
         #: Each long attribute left to convert after parsing: its node, and where it
         #: stands, with what :func:`~mjcf_model.serializers.parsed_elements.read_typed` deferred.
         self.deferred: list[tuple[TypedElement, int, str, Deferred]] = []
@@ -193,13 +196,7 @@ class Reader:
             if self.include_context is not None:
                 inner = self.include_context  # MuJoCo takes the root's children, whatever its tag
         else:
-            order = self.order
-            place = len(order)
-            order.append(None)
-            places = self.places.get(tag)
-            if places is None:
-                places = self.places[tag] = array("l")
-            places.append(place)
+            place = self.noted.reserve(tag)
         stack.append(
             OpenElement(
                 tag, flat, key, typed, inner, self.parser.CurrentLineNumber, begin, stop, place
@@ -236,7 +233,7 @@ class Reader:
             after = stop
         else:
             after = self.raw.index(b">", self.parser.CurrentByteIndex) + 1
-        layout = _new_layout(
+        layout = new_layout(
             Layout,
             (
                 self.origin,
@@ -293,7 +290,7 @@ class Reader:
             )
         if stack:  # after the include's path is taken: the path counts its siblings so far
             stack[-1].add_child(node)
-            self.order[item.place] = node
+            self.noted.order[item.place] = node
         else:
             self.top.append(node)
             self.root_end = after
@@ -399,7 +396,7 @@ class Reader:
                     pass
                 else:
                     self.includes = retry.includes
-                    self.order, self.places = retry.order, retry.places
+                    self.noted = retry.noted
                     return top
             raise self.syntax_error(error, raw) from None
         finally:
@@ -411,7 +408,7 @@ class Reader:
 
         Valid for the root's children as read (an inlined include replaces elements).
         """
-        return TagIndex.from_reading(self.order, self.places)
+        return self.noted.index()
 
     def release(self) -> None:
         """Let go of the parser and the text: the parser holds this reader's handlers.
@@ -463,7 +460,5 @@ class Reader:
         return MjcfSyntaxError(detail, file=self.filename, line=error.lineno, path=path)
 
 
-#: Makes a layout from a tuple of its fields (in C: one is made per element).
-_new_layout = tuple.__new__
 #: The byte of ``/``: a start tag that ends with ``/>`` is an empty element.
 _SLASH = ord("/")

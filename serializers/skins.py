@@ -49,7 +49,7 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.tree.traversal import with_children
+from mjcf_model.tree.traversal import SKIN_KEYS, with_children
 from mjcf_model.values import format_float
 from mjcf_model.values.writing import LONG_LIST, remember_text
 
@@ -299,8 +299,8 @@ def inline_skin_files(node: _N, directory: str | os.PathLike[str] | None = None)
     return cast(_N, with_children(node, children))
 
 
-#: The sections whose ``<skin>`` elements may read a file.
-_SKIN_SECTIONS = ("asset", "deformable")
+#: The sections whose ``<skin>`` elements may read a file (the first part of their keys).
+_SKIN_SECTIONS = frozenset(key.partition("/")[0] for key in SKIN_KEYS)
 
 
 def _inlined_skin(

@@ -24,13 +24,22 @@ tree alive.
 from __future__ import annotations
 
 import weakref
+from array import array
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import Any, cast
 
 from mjcf_model.caching import BoundedCache
 from mjcf_model.nodes.base import AnyElement, Comment, Element, GenericElement, Node, TypedElement
 
-__all__ = ["TagIndex", "elements_below", "first_named", "index_of", "indexed", "name_of"]
+__all__ = [
+    "NotedOrder",
+    "TagIndex",
+    "elements_below",
+    "first_named",
+    "index_of",
+    "indexed",
+    "name_of",
+]
 
 
 def elements_below(node: Node, tag: str | None = None) -> Iterator[AnyElement]:
@@ -148,6 +157,48 @@ class TagIndex:
                 if written is not None:
                     names[written] = element
         return names.get(name)
+
+
+class NotedOrder:
+    r"""The elements of a tree being built, noted in document order: its index to be.
+
+    A builder that makes a parent after its children (the reader, ``map_elements``)
+    :meth:`reserve`\ s each element's place when it meets the element and puts the
+    built node in :attr:`order` at that place; :meth:`index` is then the tree's index.
+
+    Examples:
+        >>> from mjcf_model import Body, Geom
+        >>> notes = NotedOrder()
+        >>> body, geom = notes.reserve("body"), notes.reserve("geom")
+        >>> notes.order[geom] = Geom(name="g")
+        >>> notes.order[body] = Body(children=[notes.order[geom]])
+        >>> notes.index().named("geom", "g").name, [e.tag for e in notes.index().order]
+        ('g', ['body', 'geom'])
+
+    """
+
+    __slots__ = ("order", "places")
+
+    def __init__(self) -> None:
+        #: The elements in document order (a reserved place holds ``None`` until filled).
+        self.order: list[Any] = []
+        #: The places in :attr:`order` of each tag's elements.
+        self.places: dict[str, array[int]] = {}
+
+    def reserve(self, tag: str) -> int:
+        """The place of the next ``tag`` element met, in document order."""
+        order = self.order
+        place = len(order)
+        order.append(None)
+        places = self.places.get(tag)
+        if places is None:
+            places = self.places[tag] = array("l")
+        places.append(place)
+        return place
+
+    def index(self) -> TagIndex:
+        """The index of the elements noted (every place filled)."""
+        return TagIndex.from_reading(self.order, self.places)
 
 
 def name_of(element: AnyElement) -> str | None:

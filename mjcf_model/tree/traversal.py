@@ -17,7 +17,6 @@ True
 from __future__ import annotations
 
 import operator
-from array import array
 from collections.abc import Callable, Collection, Iterator, Sequence
 from typing import TypeVar
 
@@ -33,7 +32,7 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.schema.namespaces import child_key, guess_context
 from mjcf_model.tree.ancestry import Ancestors
-from mjcf_model.tree.indexes import TagIndex, indexed
+from mjcf_model.tree.indexes import NotedOrder, indexed
 
 __all__ = [
     "GUESS",
@@ -220,8 +219,8 @@ def _map_elements(
     inner = context if key is None or key == "include" else key
     top = Ancestors()
     keys, unknown = _KEYS, _UNKNOWN
-    order: list[AnyElement] = []
-    places: dict[str, array[int]] = {}
+    noted = NotedOrder()
+    order, reserve = noted.order, noted.reserve
     same_shape = True
     # (element, key, its children's context, its ancestors, theirs, mapped, pending, place)
     stack: list[_Frame] = [(root, key, inner, top, top.extended(root), [], iter(root.children), -1)]
@@ -235,22 +234,18 @@ def _map_elements(
             child_key = keys.get((inner, tag), unknown)
             if child_key is unknown:
                 child_key = _key_of(inner, tag)
-            tagged = places.get(tag)
-            if tagged is None:
-                tagged = places[tag] = array("l")
-            tagged.append(len(order))
+            child_place = reserve(tag)
             if child.children:
                 deeper = inner if child_key is None or child_key == "include" else child_key
                 level = below.extended(child)
                 stack.append(
-                    (child, child_key, deeper, below, level, [], iter(child.children), len(order))
+                    (child, child_key, deeper, below, level, [], iter(child.children), child_place)
                 )
-                order.append(child)  # its place; the result takes it
                 break
             result = child if child_key in kept else fn(child, child_key, below)
             if result is not child and (result.tag != tag or result.children):
                 same_shape = False
-            order.append(result)
+            order[child_place] = result
             mapped.append(result)
         else:
             stack.pop()
@@ -262,7 +257,7 @@ def _map_elements(
                 same_shape = False
             if not stack:
                 if same_shape and result is not root:
-                    indexed(result, TagIndex.from_reading(order, places))
+                    indexed(result, noted.index())
                 return result
             order[place] = result
             stack[-1][5].append(result)
