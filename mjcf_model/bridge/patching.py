@@ -4,9 +4,11 @@ Physical randomisation mostly changes values a compiled model holds one for one:
 geom's colour and contact parameters, a joint's damping, an actuator's gains, a
 body's explicit mass. :func:`patched` finds what changed between two models (the
 unchanged subtrees they share are skipped), writes each change into a copy of the
-compiled model, and recomputes what MuJoCo derives from it (``mj_setConst``, and the
-mean mass and inertia of ``<statistic>``). Anything else (a new element, a default
-class, a size, a position...) is compiled again in full, with a
+compiled model, and recomputes what MuJoCo derives from it (``mj_setConst``, the
+stiffness and damping of ``springdamper`` joints, and the mean mass and inertia of
+``<statistic>``). A value changed in a default class is written into exactly the
+elements that take it from that class. Anything else (a new element or class, a size,
+a position...) is compiled again in full, with a
 :class:`~mjcf_model.MjcfRecompiledWarning` that names the first such change.
 
 >>> from mjcf_model import compiled, map_elements, with_attributes
@@ -23,7 +25,6 @@ class, a size, a position...) is compiled again in full, with a
 from __future__ import annotations
 
 import copy
-import functools
 import warnings
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
@@ -40,7 +41,8 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import child_key
-from mjcf_model.tree.traversal import keyed_walk, with_children
+from mjcf_model.tree.defaults import ACTUATOR_DEFAULT_TAGS, DefaultClasses
+from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import numbers_of
 
 if TYPE_CHECKING:
@@ -177,7 +179,33 @@ def patched(
     if again or any(field not in _LOCAL for field, _, _, _ in changes):
         mujoco.mj_setConst(result, mujoco.MjData(result))
         _restate(result, before)
+    _spring_dampers(result, _springdampers(before)[0])
     return result
+
+
+def _spring_dampers(model: mujoco.MjModel, joints: list[tuple[int, float, float]]) -> None:
+    """The stiffness and damping MuJoCo's compiler derives from each joint's ``springdamper``.
+
+    As the compiler computes them (``mjCModel::AutoSpringDamper``), from the joint's
+    ``dof_invweight0`` as :func:`mujoco.mj_setConst` left it: the mean inertia of its
+    degrees of freedom, a time constant and a damping ratio (``joints``: the joint's row,
+    its time constant and its ratio). They replace any written stiffness and damping.
+    """
+    for row, timeconst, dampratio in joints:
+        start = int(model.jnt_dofadr[row])
+        count = {0: 6, 1: 3}.get(int(model.jnt_type[row]), 1)
+        total = 0.0
+        for dof in range(start, start + count):
+            total += float(model.dof_invweight0[dof])
+        inertia = count / max(_MINVAL, total)
+        model.jnt_stiffness[row] = inertia / max(
+            _MINVAL, timeconst * timeconst * dampratio * dampratio
+        )
+        model.dof_damping[start : start + count] = 2 * inertia / max(_MINVAL, timeconst)
+
+
+#: MuJoCo's ``mjMINVAL``: the least divisor its compiler divides by.
+_MINVAL = 1e-15
 
 
 def _body_margins(model: mujoco.MjModel) -> None:
@@ -209,17 +237,23 @@ def _mapped(
     changes: list[tuple[str, str, int, tuple[float, ...]]],
 ) -> str | None:
     """Fill ``changes`` (field, attribute, row, numbers); the first change it cannot map."""
-    pending: list[tuple[str, AnyElement, str, tuple[float, ...], int | None, tuple[int, ...]]] = []
-    for problem in _differences(before, after, None, (), pending):
+    pending: list[_Pending] = []
+    classes_changed: list[tuple[int, ...]] = []
+    for problem in _differences(before, after, None, (), pending, classes_changed):
         return problem
+    if classes_changed:
+        unmapped = _class_changes(model, before, after, pending)
+        if unmapped is not None:
+            return unmapped
     if not pending:
         return None
     rows = _Rows(before)
+    springs = _springdampers(before)[1]
+    if springs is not None:
+        return springs
     for key, element, attribute, numbers, written, path in pending:
         if key == "body/inertial" and rows.inertia_settings:
             return f"the compiler's {rows.inertia_settings} changes how inertials compile"
-        if key in ("body/joint", "body/inertial") and rows.springdamper:
-            return "a springdamper sets stiffness and damping from the joints' masses"
         row = rows.row(path)
         if row is None:
             return f"cannot tell which compiled {key} the element at {path} is"
@@ -241,14 +275,24 @@ def _mapped(
     return None
 
 
+#: A change to write: the element's key, the element, the attribute, its new numbers, how
+#: many numbers the compiled row took from what was written before (``None``: none, the
+#: whole row is MuJoCo's default), and the element's path.
+_Pending = tuple[str, AnyElement, str, tuple[float, ...], int | None, tuple[int, ...]]
+
+
 def _differences(
     before: AnyElement,
     after: AnyElement,
     context: str | None,
     path: tuple[int, ...],
-    pending: list[tuple[str, AnyElement, str, tuple[float, ...], int | None, tuple[int, ...]]],
+    pending: list[_Pending],
+    classes_changed: list[tuple[int, ...]],
 ) -> Iterator[str]:
-    """Collect mappable changes below two elements into ``pending``; yield what is not."""
+    """Collect mappable changes below two elements into ``pending``; yield what is not.
+
+    A changed ``<default>`` is noted in ``classes_changed`` (see :func:`_class_changes`).
+    """
     if before is after:
         return
     key = child_key(context, before.tag) if context is not None or before.tag == "mujoco" else None
@@ -257,7 +301,7 @@ def _differences(
         return
     if key.startswith("default"):  # a class reaches every element that uses it
         if before != after:
-            yield f"the default class at {path} changed"
+            classes_changed.append(path)
         return
     if getattr(before, "text", None) != getattr(after, "text", None):
         yield f"the text of <{after.tag}> at {path} changed"
@@ -279,7 +323,7 @@ def _differences(
         yield f"the children of <{after.tag}> at {path} changed"
         return
     for index, (old_child, new_child) in enumerate(zip(kept, made, strict=True)):
-        yield from _differences(old_child, new_child, key, (*path, index), pending)
+        yield from _differences(old_child, new_child, key, (*path, index), pending, classes_changed)
 
 
 def _sections(model: Mujoco, tag: str) -> list[dict[str, object]]:
@@ -290,6 +334,170 @@ def _sections(model: Mujoco, tag: str) -> list[dict[str, object]]:
 def _elements(element: AnyElement) -> list[AnyElement]:
     """The element children of ``element`` (comments left out)."""
     return [child for child in element.children if isinstance(child, Element)]
+
+
+def _class_changes(
+    model: mujoco.MjModel, before: Mujoco, after: Mujoco, pending: list[_Pending]
+) -> str | None:
+    """Add to ``pending`` what changed default classes change; the first change they cannot.
+
+    The classes must keep their names, nesting and default elements, and each changed
+    default value its count of numbers (or, newly written, fill a whole row). Each geom,
+    joint and actuator is then resolved as MuJoCo resolves it (:func:`_resolved`) in both
+    models: where the value it takes from its classes differs, that element changes, and
+    only that one.
+    """
+    old, new = DefaultClasses.of(before), DefaultClasses.of(after)
+    same_layers = all(len(held) == len(new.layers.get(key, ())) for key, held in old.layers.items())
+    if dict(old.parents) != dict(new.parents) or old.layers.keys() != new.layers.keys():
+        same_layers = False
+    if not same_layers:
+        return "a default class, or a default element in one, was added or removed"
+    changed: dict[str, set[str]] = {}  # by the tag elements read defaults for
+    layers = [
+        (name, tag, setting, variant)
+        for (name, tag), held in old.layers.items()
+        for setting, variant in zip(held, new.layers[name, tag], strict=True)
+    ]
+    for name, tag, setting, variant in layers:
+        was, now = dict(attribute_items(setting)), dict(attribute_items(variant))
+        for attribute in was.keys() | now.keys():
+            if was.get(attribute) == now.get(attribute):
+                continue
+            numbers, written = numbers_of(now.get(attribute)), numbers_of(was.get(attribute))
+            whole = written is None and len(numbers or ()) == _row_width(model, tag, attribute)
+            if numbers is None or not (whole or (written and len(numbers) == len(written))):
+                return (
+                    f"<{tag}> {attribute} of default class {name!r}:"
+                    f" {was.get(attribute)!r} -> {now.get(attribute)!r}"
+                )
+            reader = "actuator" if tag in ACTUATOR_DEFAULT_TAGS else tag
+            changed.setdefault(reader, set()).add(attribute)
+    for key, element, ancestors, variant, variant_ancestors, path in _paired_walk(before, after):
+        fields = FIELDS.get(key)
+        if fields is None or key == "body/inertial":
+            continue
+        reader = "actuator" if key.startswith("actuator/") else element.tag
+        for attribute in sorted(changed.get(reader, ())):
+            taken = _resolved(old, element, ancestors, reader, attribute)
+            taking = _resolved(new, variant, variant_ancestors, reader, attribute)
+            if taken == taking:
+                continue
+            if attribute not in fields or taking is None:
+                return f"<{element.tag}> {attribute} at {path}, changed by its default class"
+            count = None if taken is None else len(taken)
+            pending.append((key, element, attribute, taking, count, path))
+    return None
+
+
+def _row_width(model: mujoco.MjModel, tag: str, attribute: str) -> int | None:
+    """How many numbers the compiled row of a default ``<tag>``'s ``attribute`` holds.
+
+    ``None`` when the attribute maps to no array (see :data:`FIELDS`).
+    """
+    key = f"actuator/{tag}" if tag in ACTUATOR_DEFAULT_TAGS else f"body/{tag}"
+    field = FIELDS.get(key, {}).get(attribute)
+    if field is None:
+        return None
+    array = getattr(model, field)
+    return int(array.shape[1]) if array.ndim == 2 else 1
+
+
+def _resolved(
+    classes: DefaultClasses,
+    element: AnyElement,
+    ancestors: tuple[AnyElement, ...],
+    reader: str,
+    attribute: str,
+) -> tuple[float, ...] | None:
+    """The numbers ``attribute`` of ``element`` compiles from, as far as they are written.
+
+    MuJoCo starts from the default elements of the element's classes, outermost first
+    (``reader`` names which: a tag, or ``"actuator"``), and each written value replaces
+    as many numbers as it holds; the element's own value goes last. ``None`` when
+    nothing is written (the row is MuJoCo's own default).
+    """
+    row: list[float] = []
+    name = classes.class_of(element, ancestors)
+    for setting in (*classes.settings_along(name, reader), element):
+        numbers = numbers_of(get_attribute(setting, attribute))
+        if numbers:
+            row[: len(numbers)] = numbers
+    return tuple(row) if row else None
+
+
+def _paired_walk(
+    before: AnyElement, after: AnyElement
+) -> Iterator[
+    tuple[
+        str, AnyElement, tuple[AnyElement, ...], AnyElement, tuple[AnyElement, ...], tuple[int, ...]
+    ]
+]:
+    """Each element of two models of the same shape outside ``<default>``, with the other's.
+
+    Yields the key, the element, its ancestors, the element at its place in ``after``,
+    that one's ancestors, and the path (as :func:`_differences` numbers it).
+    """
+    stack: list[
+        tuple[
+            AnyElement,
+            AnyElement,
+            str | None,
+            tuple[AnyElement, ...],
+            tuple[AnyElement, ...],
+            tuple[int, ...],
+        ]
+    ] = [(before, after, None, (), (), ())]
+    while stack:
+        was, now, context, above, above_now, path = stack.pop()
+        key = child_key(context, was.tag) if context is not None or was.tag == "mujoco" else None
+        if key is None or key.startswith("default"):
+            continue
+        yield key, was, above, now, above_now, path
+        pairs = zip(_elements(was), _elements(now), strict=True)
+        inner, inner_now = (*above, was), (*above_now, now)
+        for index, (old_child, new_child) in enumerate(pairs):
+            stack.append((old_child, new_child, key, inner, inner_now, (*path, index)))
+
+
+def _springdampers(before: Mujoco) -> tuple[list[tuple[int, float, float]], str | None]:
+    """The joints of ``before`` whose stiffness and damping a ``springdamper`` sets.
+
+    Each as its compiled row, time constant and damping ratio (both positive: MuJoCo
+    ignores the setting otherwise); and what stops a patch, when such a joint has no
+    row this module can tell (inside a ``<replicate>``). Remembered per model.
+    """
+    known = _SPRINGS.get(id(before))
+    if known is not None and known[0] is before:
+        return known[1]
+    classes = DefaultClasses.of(before)
+    joints: list[tuple[int, float, float]] = []
+    problem: str | None = None
+    if classes.sets("joint") or any(
+        get_attribute(element, "springdamper") is not None
+        for key, element, *_ in _paired_walk(before, before)
+        if key == "body/joint"
+    ):
+        rows = _numbering(before)
+        for key, element, ancestors, *_, path in _paired_walk(before, before):
+            if key != "body/joint":
+                continue
+            setting = _resolved(classes, element, ancestors, "joint", "springdamper")
+            if setting is None or len(setting) < 2 or min(setting[:2]) <= 0:
+                continue
+            row = rows.get(path)
+            if row is None:
+                problem = f"cannot tell which compiled joint the springdamper at {path} sets"
+                break
+            joints.append((row, setting[0], setting[1]))
+        joints.sort()
+    return _SPRINGS.remember(id(before), (before, (joints, problem)))[1]
+
+
+#: What :func:`_springdampers` found for the last few models, by ``id`` (kept with the model).
+_SPRINGS: BoundedCache[int, tuple[Mujoco, tuple[list[tuple[int, float, float]], str | None]]] = (
+    BoundedCache(8)
+)
 
 
 class _Rows:
@@ -309,14 +517,6 @@ class _Rows:
         self.inertia_settings = ", ".join(settings)
         #: Whether MuJoCo is older than 4.0 (see :data:`_BEFORE_4`).
         self.before_4 = int(mujoco.__version__.split(".")[0]) < 4
-
-    @functools.cached_property
-    def springdamper(self) -> bool:
-        """Whether some joint or class has a ``springdamper`` (it sets stiffness and damping)."""
-        return any(
-            get_attribute(element, "springdamper") is not None
-            for element, _, _ in keyed_walk(self.before)
-        )
 
     def row(self, path: tuple[int, ...]) -> int | None:
         """The compiled row of the geom, joint, inertial (its body) or actuator at ``path``."""

@@ -60,8 +60,20 @@ class DefaultClasses:
 
     #: Each class's parent class (``None`` for ``main``).
     parents: Mapping[str, str | None]
-    #: The default element of each ``(class, tag)``, e.g. ``("arm", "geom")``.
+    #: The default element of each ``(class, tag)``, e.g. ``("arm", "geom")`` (the last
+    #: written, where two top-level ``<default>`` sections both set ``main``'s).
     settings: Mapping[tuple[str, str], AnyElement]
+    #: Every default element of each ``(class, tag)`` in the order written: MuJoCo applies
+    #: each over the one before (two top-level ``<default>`` sections, one from an
+    #: ``<include>``, both set ``main``'s). By default, :attr:`settings`' one each.
+    layers: Mapping[tuple[str, str], tuple[AnyElement, ...]] = attrs.field(
+        default=attrs.Factory(
+            lambda self: MappingProxyType({key: (value,) for key, value in self.settings.items()}),
+            takes_self=True,
+        ),
+        eq=False,
+        repr=False,
+    )
     #: Chains and merged settings, worked out on first use (the classes never change).
     _memo: dict[tuple[object, ...], Any] = attrs.field(
         factory=dict, init=False, eq=False, repr=False
@@ -71,7 +83,7 @@ class DefaultClasses:
 
     @_tags.default
     def _set_tags(self) -> frozenset[str]:
-        return frozenset(tag for (_, tag), setting in self.settings.items() if _writes(setting))
+        return frozenset(tag for (_, tag), held in self.layers.items() if any(map(_writes, held)))
 
     @classmethod
     def empty(cls) -> DefaultClasses:
@@ -91,6 +103,7 @@ class DefaultClasses:
         """
         parents: dict[str, str | None] = {MAIN: None}
         settings: dict[tuple[str, str], AnyElement] = {}
+        layers: dict[tuple[str, str], tuple[AnyElement, ...]] = {}
 
         tops = [c for c in model.children if isinstance(c, Element) and c.tag == "default"]
         for top in tops if model.tag == "mujoco" else []:
@@ -110,9 +123,14 @@ class DefaultClasses:
                         stack.append((iter(child.children), inner_name))
                         break
                     settings[(name, child.tag)] = child
+                    layers[(name, child.tag)] = (*layers.get((name, child.tag), ()), child)
                 else:
                     stack.pop()
-        return cls(parents=MappingProxyType(parents), settings=MappingProxyType(settings))
+        return cls(
+            parents=MappingProxyType(parents),
+            settings=MappingProxyType(settings),
+            layers=MappingProxyType(layers),
+        )
 
     def chain(self, name: str) -> tuple[str, ...]:
         """``name`` and its ancestors, innermost first (an unknown class is just itself).
@@ -166,11 +184,9 @@ class DefaultClasses:
             known: Mapping[str, tuple[Value, str]] = memo
             return known
         merged: dict[str, tuple[Value, str]] = {}
-        for current in reversed(self.chain(name)):
-            setting = self.settings.get((current, tag))
-            if setting is not None:
-                for attribute, value in attribute_items(setting):
-                    merged[attribute] = (value, current)
+        for current, setting in self._along(name, tag):
+            for attribute, value in attribute_items(setting):
+                merged[attribute] = (value, current)
         shared = self._memo[("given", name, tag)] = MappingProxyType(merged)  # read-only
         return shared
 
@@ -190,6 +206,42 @@ class DefaultClasses:
 
         """
         return self.given(name, tag).get(attribute)
+
+    def settings_along(self, name: str, tag: str) -> tuple[AnyElement, ...]:
+        """The default elements class ``name`` and its ancestors hold for ``tag``, outermost first.
+
+        MuJoCo starts an element from these, each written value over the one before
+        (a value of fewer numbers than the last replaces only its first numbers), then
+        applies what the element writes itself. ``tag`` ``"actuator"`` gives every
+        actuator default element of each class in the order written: ``<general>``,
+        ``<motor>``, ``<position>``... set one shared actuator default.
+
+        Examples:
+            >>> from mjcf_model import Geom
+            >>> classes = DefaultClasses(
+            ...     parents={"main": None, "a": "main"},
+            ...     settings={("main", "geom"): Geom(size=[1]), ("a", "geom"): Geom(type="box")},
+            ... )
+            >>> [setting.size for setting in classes.settings_along("a", "geom")]
+            [(1.0,), None]
+
+        """
+        return tuple(setting for _, setting in self._along(name, tag))
+
+    def _along(self, name: str, tag: str) -> list[tuple[str, AnyElement]]:
+        """:meth:`settings_along`, each with the class that holds it."""
+        found: list[tuple[str, AnyElement]] = []
+        for current in reversed(self.chain(name)):
+            if tag == "actuator":
+                found += [
+                    (current, setting)
+                    for (owner, kind), held in self.layers.items()
+                    if owner == current and kind in ACTUATOR_DEFAULT_TAGS
+                    for setting in held
+                ]
+            else:
+                found += [(current, setting) for setting in self.layers.get((current, tag), ())]
+        return found
 
     def class_of(self, element: AnyElement, ancestors: Sequence[AnyElement]) -> str:
         """The class ``element`` takes defaults from: its own, an inherited ``childclass``, or main.
@@ -262,17 +314,7 @@ class DefaultClasses:
         name = self._giver(element, ancestors)
         if name is None:
             return _NOTHING
-        memo = self._memo.get(("actuator", name))
-        if memo is None:
-            merged: dict[str, tuple[Value, str]] = {}
-            for current in reversed(self.chain(name)):
-                for (owner, tag), setting in self.settings.items():
-                    if owner == current and tag in ACTUATOR_DEFAULT_TAGS:
-                        for attribute, value in attribute_items(setting):
-                            merged[attribute] = (value, current)
-            memo = self._memo[("actuator", name)] = MappingProxyType(merged)
-        given: Mapping[str, tuple[Value, str]] = memo
-        return given
+        return self.given(name, "actuator")
 
     def _giver(self, element: AnyElement, ancestors: Sequence[AnyElement]) -> str | None:
         """The class whose settings ``element`` inherits (``None``: none, in the main default)."""

@@ -18,7 +18,14 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from mjcf_model import MjcfRecompiledWarning, compiled, map_elements, patched, with_attributes
+from mjcf_model import (
+    MjcfRecompiledWarning,
+    compiled,
+    map_elements,
+    map_tree,
+    patched,
+    with_attributes,
+)
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.bridge.patching import FIELDS
 from mjcf_model.nodes.base import AnyElement, attribute_items, get_attribute
@@ -44,14 +51,24 @@ def _changed_value(attribute: str, numbers: tuple[float, ...], rng: np.random.Ge
     return tuple(v * factor for v in numbers)
 
 
-def variant(model: Mujoco, seed: int) -> tuple[Mujoco, int]:
-    """``model`` with every mapped attribute it writes changed; how many were changed."""
+def _default_fields(key: str) -> dict[str, str]:
+    """The mapped attributes of a default element (``default/geom`` sets ``body/geom``'s)."""
+    tag = key.rpartition("/")[2]
+    return FIELDS.get(f"body/{tag}") or FIELDS.get(f"actuator/{tag}") or {}
+
+
+def variant(model: Mujoco, seed: int, *, classes: bool = True) -> tuple[Mujoco, int]:
+    """``model`` with every mapped attribute it writes changed; how many were changed.
+
+    With ``classes``, the default classes' mapped values are changed too.
+    """
     rng = np.random.default_rng(seed)
     count = 0
 
     def change(element: AnyElement, key: str | None, ancestors: Any) -> AnyElement:
         nonlocal count
-        fields = FIELDS.get(key or "", {})
+        in_class = classes and (key or "").startswith("default/")
+        fields = _default_fields(key or "") if in_class else FIELDS.get(key or "", {})
         values = {}
         for name, value in attribute_items(element):
             numbers = numbers_of(value)
@@ -88,8 +105,41 @@ def test_patched_corpus_variants_are_compiled_variants(path: Path) -> None:
     after, _ = variant(before, 0)
     result, expected, reasons = _patched_and_expected(before, after)
     assert model_differences(result, expected) == []
-    allowed = ("the compiler's", "a springdamper", *(("MuJoCo before 4.0",) if OLD else ()))
+    allowed = ("the compiler's", *(("MuJoCo before 4.0",) if OLD else ()))
     assert all(any(why in reason for why in allowed) for reason in reasons), reasons
+
+
+def _recolored_everywhere(model: Mujoco) -> Mujoco:
+    """Every geom recoloured, its default classes' ``<geom>`` included (a user's ``map_tree``)."""
+
+    def recolor(node: Any) -> Any:
+        if getattr(node, "tag", None) == "geom":
+            return with_attributes(node, {"rgba": (0.2, 0.4, 0.6, 1.0)})
+        return node
+
+    return map_tree(recolor, model)
+
+
+@pytest.mark.parametrize(
+    "name", ["robots/panda/robot.xml", "suite/humanoid.xml", "suite/dog.xml", "suite/quadruped.xml"]
+)
+def test_recolouring_every_geom_and_class_is_patched_in_a_loop(name: str) -> None:
+    """A user's loop: every geom and class recoloured, then physics varied, into one model.
+
+    Nothing compiles again (the classes' changes reach exactly the geoms that take them), and
+    each result is what MuJoCo compiles from that variant. The dog's joints have
+    ``springdamper``: their stiffness and damping follow its changed masses.
+    """
+    (path,) = [p for p in compiling_corpus() if p.as_posix().endswith(name)]
+    before = load(path, inline_includes=True)
+    model = compiled(before)
+    scratch = copy.copy(model)
+    for after in (_recolored_everywhere(before), variant(before, 5)[0], before):
+        with warnings.catch_warnings():
+            if not OLD:
+                warnings.simplefilter("error", MjcfRecompiledWarning)
+            result = patched(model, before, after, into=scratch)
+        assert model_differences(result, compiled(after)) == []
 
 
 def _recolored(model: Mujoco, seed: int) -> Mujoco:
@@ -237,3 +287,146 @@ def test_readme_process_pool_sweep_runs_as_a_script(tmp_path: Path) -> None:
     assert done.stdout.startswith("8 rollouts, second joint from ")
     low, high = (float(v) for v in done.stdout.split("from ")[1].split(" to "))
     assert low < high  # the variants differ
+
+
+#: Classes as MuJoCo layers them: a main class written in two top-level sections (one
+#: element each), a nested class writing part of a row, ``childclass``, an element's own
+#: partial value, and actuators reading one shared default from ``<general>`` and ``<motor>``.
+_CLASSES = """
+<mujoco>
+  <default><geom solref="0.02 1" friction="0.8 0.01 0.001"/></default>
+  <default>
+    <geom rgba="0.5 0.5 0.5 1"/>
+    <general ctrlrange="-1 1"/>
+    <default class="soft">
+      <geom friction="0.4" margin="0.01"/>
+      <joint damping="2" armature="0.1"/>
+      <motor gear="3"/>
+      <default class="softer"><geom solref="0.05"/></default>
+    </default>
+  </default>
+  <worldbody>
+    <body name="a" childclass="soft">
+      <joint name="ja"/>
+      <geom name="ga" size="0.1"/>
+      <geom name="gb" size="0.1" class="softer" friction="0.3 0.02"/>
+      <body name="b" pos="0 0 1">
+        <joint name="jb" class="main" damping="1"/>
+        <geom name="gc" size="0.1" class="main"/>
+      </body>
+    </body>
+  </worldbody>
+  <actuator>
+    <motor name="m" joint="ja" class="soft"/>
+    <general name="g" joint="jb"/>
+  </actuator>
+</mujoco>
+"""
+
+
+def _with_class_values(
+    model: Mujoco, values: dict[tuple[str | None, str], dict[str, Any]]
+) -> Mujoco:
+    """``model`` with the default element ``(class, tag)`` of ``values`` given new values.
+
+    ``None`` names the top-level ``<default>`` sections (each of their elements of the tag).
+    """
+
+    def change(element: AnyElement, key: str | None, ancestors: Any) -> AnyElement:
+        if not (key or "").startswith("default/") or not ancestors:
+            return element
+        owner = get_attribute(ancestors[-1], "class")
+        new = values.get((owner if isinstance(owner, str) else None, element.tag))
+        return with_attributes(element, new) if new else element
+
+    return map_elements(change, model)
+
+
+@pytest.mark.parametrize(
+    "values",
+    [
+        {(None, "geom"): {"friction": (0.9, 0.02, 0.002), "rgba": (1, 0, 0, 1)}},
+        {("soft", "geom"): {"friction": (0.6,), "margin": 0.02}},
+        {("softer", "geom"): {"solref": (0.07,)}, (None, "geom"): {"solref": (0.03, 0.9)}},
+        {("soft", "joint"): {"damping": 5, "armature": 0.3}},
+        {("soft", "motor"): {"gear": (4,)}, (None, "general"): {"ctrlrange": (-2, 2)}},
+    ],
+    ids=[
+        "main-both-sections",
+        "nested-partial",
+        "partial-over-changed-parent",
+        "joint",
+        "actuator",
+    ],
+)
+def test_a_changed_class_is_patched_into_the_elements_that_take_it(
+    values: dict[tuple[str | None, str], dict[str, Any]],
+) -> None:
+    """Each class change reaches the elements MuJoCo gives it to, and only those: no compile."""
+    before = loads(_CLASSES)
+    after = _with_class_values(before, values)
+    assert after != before
+    result, expected, reasons = _patched_and_expected(before, after)
+    assert model_differences(result, expected) == []
+    assert model_differences(result, compiled(before)) != []  # the change arrived
+    if not OLD:
+        assert reasons == []
+
+
+def test_a_class_change_without_an_array_compiles_again_and_names_it() -> None:
+    """A class's geom size reaches geoms through no one-for-one array: compiled, and said."""
+    before = loads(_CLASSES)
+    after = _with_class_values(before, {("soft", "geom"): {"size": (0.2,)}})
+    with pytest.warns(MjcfRecompiledWarning, match=r"<geom> size of default class 'soft'"):
+        result = patched(compiled(before), before, after)
+    assert model_differences(result, compiled(after)) == []
+
+
+def test_an_added_class_compiles_again() -> None:
+    """A class added changes which class elements read: compiled again."""
+    before = loads(_CLASSES)
+    after = loads(
+        _CLASSES.replace(
+            '<default class="softer">', '<default class="new"/><default class="softer">'
+        )
+    )
+    with pytest.warns(MjcfRecompiledWarning, match="a default class"):
+        patched(compiled(before), before, after)
+
+
+_SPRINGS = """
+<mujoco>
+  <default><default class="sprung"><joint springdamper="0.2 0.7"/></default></default>
+  <worldbody>
+    <body name="hinged"><joint name="h" springdamper="0.1 0.5" damping="9"/>
+      <geom size="0.1 0.3" type="capsule" mass="2"/>
+      <body name="slid" pos="0 0 1"><joint name="s" type="slide" class="sprung" armature="0.2"/>
+        <geom size="0.1" mass="3"/>
+        <body name="balled" pos="0 0 1"><joint name="b" type="ball" class="sprung"/>
+          <inertial pos="0 0 0" mass="1.5" diaginertia="0.1 0.2 0.3"/>
+        </body>
+      </body>
+    </body>
+    <body name="free" pos="2 0 0"><joint name="f" type="free" class="sprung"/>
+      <inertial pos="0 0 0" mass="1" diaginertia="0.1 0.1 0.1"/></body>
+    <body name="unsprung" pos="4 0 0"><joint name="u" damping="0.5"/>
+      <inertial pos="0 0 0" mass="1" diaginertia="0.1 0.1 0.1"/></body>
+  </worldbody>
+</mujoco>
+"""
+
+
+def test_springdamper_joints_follow_changed_masses_inertias_and_armatures() -> None:
+    """``springdamper`` sets stiffness and damping from the joints' inertia: patched as compiled.
+
+    Hinge, slide, ball and free joints, set on the joint or by its class; the written damping
+    of a sprung joint is overridden, as MuJoCo overrides it.
+    """
+    before = loads(_SPRINGS)
+    after, count = variant(before, 11)
+    assert count >= 5
+    result, expected, reasons = _patched_and_expected(before, after)
+    assert model_differences(result, expected) == []
+    assert not np.array_equal(result.jnt_stiffness, compiled(before).jnt_stiffness)
+    if not OLD:
+        assert reasons == []
