@@ -29,12 +29,15 @@ import warnings
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
+import numpy
+
 from mjcf_model.bridge.compiling import compiled
 from mjcf_model.caching import BoundedCache
 from mjcf_model.errors import MjcfRecompiledWarning
 from mjcf_model.nodes.base import (
     AnyElement,
     Element,
+    TypedElement,
     attribute_items,
     get_attribute,
     with_attributes,
@@ -43,7 +46,7 @@ from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import child_key
 from mjcf_model.tree.defaults import ACTUATOR_DEFAULT_TAGS, DefaultClasses
 from mjcf_model.tree.traversal import with_children
-from mjcf_model.values import numbers_of
+from mjcf_model.values import Value, numbers_of
 
 if TYPE_CHECKING:
     import mujoco
@@ -165,12 +168,18 @@ def patched(
         result = into
         for field in _PATCHED:  # what an earlier variant wrote goes back to the model's
             getattr(result, field)[...] = getattr(model, field)
+    # One assignment per field and length of value (a later change of a row wins).
+    grouped: dict[tuple[str, int], tuple[list[int], list[tuple[float, ...]]]] = {}
     for field, _, row, numbers in changes:
+        rows, values = grouped.setdefault((field, len(numbers)), ([], []))
+        rows.append(row)
+        values.append(numbers)
+    for (field, count), (rows, values) in grouped.items():
         array = getattr(result, field)
         if array.ndim == 1:
-            array[row] = numbers[0]
+            array[rows] = [numbers[0] for numbers in values]
         else:
-            array[row, : len(numbers)] = numbers
+            array[rows, :count] = values
     # A model patched before may hold what an earlier variant derived: derive it all again
     # (before MuJoCo 4.0 only fields that derive nothing are patched).
     again = into is not None and int(mujoco.__version__.split(".")[0]) >= 4
@@ -211,8 +220,7 @@ _MINVAL = 1e-15
 def _body_margins(model: mujoco.MjModel) -> None:
     """Each body's margin: the largest margin plus gap of its geoms, as MuJoCo compiles it."""
     model.body_margin[:] = 0
-    for body, margin, gap in zip(model.geom_bodyid, model.geom_margin, model.geom_gap, strict=True):
-        model.body_margin[body] = max(model.body_margin[body], margin + gap)
+    numpy.maximum.at(model.body_margin, model.geom_bodyid, model.geom_margin + model.geom_gap)
 
 
 def _restate(model: mujoco.MjModel, source: Mujoco) -> None:
@@ -306,14 +314,11 @@ def _differences(
     if getattr(before, "text", None) != getattr(after, "text", None):
         yield f"the text of <{after.tag}> at {path} changed"
         return
-    old, new = dict(attribute_items(before)), dict(attribute_items(after))
     fields = FIELDS.get(key, {})
-    for name in old.keys() | new.keys():
-        if old.get(name) == new.get(name):
-            continue
-        numbers, written = numbers_of(new.get(name)), numbers_of(old.get(name))
+    for name, was, now in _changed_attributes(before, after):
+        numbers, written = numbers_of(now), numbers_of(was)
         if name not in fields or numbers is None:
-            yield f"<{after.tag}> {name} at {path}: {old.get(name)!r} -> {new.get(name)!r}"
+            yield f"<{after.tag}> {name} at {path}: {was!r} -> {now!r}"
             return
         pending.append(
             (key, before, name, numbers, None if written is None else len(written), path)
@@ -324,6 +329,37 @@ def _differences(
         return
     for index, (old_child, new_child) in enumerate(zip(kept, made, strict=True)):
         yield from _differences(old_child, new_child, key, (*path, index), pending, classes_changed)
+
+
+def _changed_attributes(
+    before: AnyElement, after: AnyElement
+) -> list[tuple[str, Value | None, Value | None]]:
+    """Each attribute whose value differs between two elements: its name, old and new value.
+
+    Two typed elements of one class with the same ``extra`` are compared by the fields
+    they store (a variant changes a few of them); any others by their attribute items.
+    """
+    if (
+        type(before) is type(after)
+        and isinstance(before, TypedElement)
+        and isinstance(after, TypedElement)
+        and before.extra == after.extra
+    ):
+        info = type(before).__node_info__
+        rank, held, holding = info.rank, before.__dict__, after.__dict__
+        return [
+            (info.names[rank[field]], held.get(field), holding.get(field))
+            for field in held.keys() | holding.keys()
+            if field in rank
+            and held.get(field) is not holding.get(field)
+            and held.get(field) != holding.get(field)
+        ]
+    old, new = dict(attribute_items(before)), dict(attribute_items(after))
+    return [
+        (name, old.get(name), new.get(name))
+        for name in old.keys() | new.keys()
+        if old.get(name) != new.get(name)
+    ]
 
 
 def _sections(model: Mujoco, tag: str) -> list[dict[str, object]]:

@@ -227,7 +227,8 @@ def test_unchanged_models_and_the_input_model_are_left_alone() -> None:
 def test_readme_variant_example_runs_on_a_robot(monkeypatch: pytest.MonkeyPatch) -> None:
     """The README's variant loop, from the installed package's description, on robosuite's Panda.
 
-    It patches every variant (no full compile) and each equals ``compiled`` of that variant.
+    It patches every variant into one scratch model (no full compile, no copy), and one more
+    into a copy of its own.
     """
     from importlib import metadata
 
@@ -243,10 +244,13 @@ def test_readme_variant_example_runs_on_a_robot(monkeypatch: pytest.MonkeyPatch)
     with warnings.catch_warnings():
         warnings.simplefilter("error", MjcfRecompiledWarning)
         exec(code.replace('"robot.xml"', repr(str(panda))), namespace)
-    made = namespace["models"]
-    assert len(made) == 100
-    assert not np.array_equal(made[0].geom_rgba, made[1].geom_rgba)
-    assert not np.array_equal(made[0].geom_rgba, namespace["base"].geom_rgba)
+    colours, base = namespace["colours"], namespace["base"]
+    assert len(colours) == 100
+    assert not np.array_equal(colours[0], colours[1])
+    assert not np.array_equal(colours[0], base.geom_rgba)
+    assert namespace["physics"] is namespace["scratch"]
+    assert namespace["kept"] is not namespace["scratch"]
+    assert not np.array_equal(namespace["kept"].geom_rgba, base.geom_rgba)
 
 
 def test_readme_process_pool_sweep_runs_as_a_script(tmp_path: Path) -> None:
