@@ -397,8 +397,39 @@ def _scaled_case(path: Path, tiny: bool) -> Case:
     )
 
 
+#: How many variants of robosuite's Panda the ``batched`` row stacks (``tiny``: the other).
+BATCHED_VARIANTS, TINY_BATCHED_VARIANTS = 1000, 4
+#: The case name of the ``batched`` row.
+BATCHED_CASE = "batched: panda/robot.xml"
+
+
+def _batched_case(path: Path, tiny: bool) -> Case:
+    """``batched`` over physical variants of one model, made beforehand: its variants per second."""
+    from mjcf_model import batched
+    from mjcf_model.serializers import load
+
+    model = load(path, inline_includes=True)
+    rng = np.random.default_rng(2)
+    count = TINY_BATCHED_VARIANTS if tiny else BATCHED_VARIANTS
+    variants = [our_physical_variant(model, rng) for _ in range(count)]
+    return Case(
+        BATCHED_CASE,
+        [
+            Contender(
+                OURS,
+                lambda: batched(model, variants),
+                note="every variant patched into one scratch model, the changed fields stacked",
+            )
+        ],
+        f"{count} variants (rgba, friction per geom; mass per inertial), made beforehand",
+    )
+
+
 def variant_cases(tiny: bool = False) -> list[Case]:
-    """Per model of :data:`VARIANT_MODELS` (``tiny``: the last), the physical and scaled loops."""
+    """Per model of :data:`VARIANT_MODELS` (``tiny``: the last), the physical and scaled loops.
+
+    And the ``batched`` row, on the first model (robosuite's Panda) where it is installed.
+    """
     from benchmarks.inputs import package_dir
 
     cases = []
@@ -406,6 +437,10 @@ def variant_cases(tiny: bool = False) -> list[Case]:
         folder = package_dir(package)
         if folder is not None:
             cases += (_variant_case(folder / relative, tiny), _scaled_case(folder / relative, tiny))
+    package, relative = VARIANT_MODELS[0]
+    folder = package_dir(package)
+    if folder is not None:
+        cases.append(_batched_case(folder / relative, tiny))
     return cases
 
 

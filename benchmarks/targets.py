@@ -7,7 +7,7 @@ import re
 import numpy as np
 
 from benchmarks.cases_resets import RESET_CASE, ROBOSUITE_RESETS
-from benchmarks.cases_variants import PATCHED
+from benchmarks.cases_variants import BATCHED_CASE, PATCHED
 from benchmarks.harness import OURS, Row
 
 __all__ = ["targets"]
@@ -160,6 +160,14 @@ def _variants(rows: list[Row]) -> list[str]:
     scaled = _per_case(rows, "scaled variants: ", "MjSpec")
     if scaled:
         lines.append(_geometric_mean_line("scaled variants + compile", scaled))
+    batch = _median(rows, BATCHED_CASE, OURS)
+    count = next((row.inputs for row in rows if row.case == BATCHED_CASE), "")
+    if batch:
+        variants = int(count.split()[0]) if count[:1].isdigit() else 0
+        lines.append(
+            f"| {BATCHED_CASE}: variants per second ({count.split(' (')[0]}) "
+            f"| {variants / batch:,.0f} | measured |"
+        )
     return lines
 
 

@@ -26,6 +26,7 @@ from mjcf_model.errors import *  # noqa: F403  (every error class; listed in err
 
 if TYPE_CHECKING:  # what the names below are, for type checkers (at run time: __getattr__)
     from mjcf_model import nodes
+    from mjcf_model.bridge.batching import batched
     from mjcf_model.bridge.compiling import compiled
     from mjcf_model.bridge.patching import patched
 
@@ -95,6 +96,7 @@ if TYPE_CHECKING:  # what the names below are, for type checkers (at run time: _
         "attach",
         "attach_all",
         "attribute_items",
+        "batched",
         "collector_paused",
         "compiled",
         "declared_names",
@@ -144,6 +146,7 @@ _HOMES = {
         ),
         "mjcf_model.nodes.base",
     ),
+    "batched": "mjcf_model.bridge.batching",
     "compiled": "mjcf_model.bridge.compiling",
     "patched": "mjcf_model.bridge.patching",
     "collector_paused": "mjcf_model.serializers.collector",

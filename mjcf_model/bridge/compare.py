@@ -12,6 +12,7 @@ from __future__ import annotations
 import functools
 import os
 import tempfile
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
@@ -21,9 +22,12 @@ __all__ = [
     "NAME_FIELDS",
     "compile_text_beside",
     "compiled_names",
+    "differing_fields",
+    "field_value",
     "model_differences",
     "model_fields",
     "path_fields",
+    "struct_field_names",
 ]
 
 #: Fields that describe how the model was loaded, not the model.
@@ -114,12 +118,69 @@ def _equal(a: Any, b: Any) -> bool:
         a, b = np.asarray(a), np.asarray(b)
         if a.shape != b.shape:
             return False
+        if a.dtype == b.dtype and a.tobytes() == b.tobytes():
+            return True  # the same bits (most fields of two models): equal, NaN and all
         if a.dtype.kind == "f":
             return bool(np.array_equal(a, b, equal_nan=True))
         return bool(np.array_equal(a, b))
     if isinstance(a, float) and isinstance(b, float) and a != a and b != b:
         return True
     return bool(a == b)
+
+
+#: The groups of ``MjModel.vis`` whose fields are compared.
+_VIS_GROUPS = ("global_", "quality", "headlight", "map", "scale", "rgba")
+
+
+@functools.cache
+def struct_field_names() -> tuple[str, ...]:
+    """The fields of ``MjModel``'s ``opt``, ``stat`` and ``vis`` structs, dotted.
+
+    Examples:
+        >>> "opt.timestep" in struct_field_names(), "vis.global_.fovy" in struct_field_names()
+        (True, True)
+
+    """
+    import mujoco
+
+    model = mujoco.MjModel.from_xml_string("<mujoco/>")
+    names = [
+        f"{struct}.{name}"
+        for struct in ("opt", "stat")
+        for name in _struct_fields(getattr(model, struct))
+    ]
+    names += [
+        f"vis.{group}.{name}"
+        for group in _VIS_GROUPS
+        for name in _struct_fields(getattr(model.vis, group))
+    ]
+    return tuple(names)
+
+
+def field_value(model: Any, name: str) -> Any:
+    """A field of a compiled model by name, dotted for a struct's (``"opt.timestep"``).
+
+    Examples:
+        >>> import mujoco
+        >>> m = mujoco.MjModel.from_xml_string("<mujoco><option timestep='0.01'/></mujoco>")
+        >>> field_value(m, "opt.timestep"), field_value(m, "nbody")
+        (0.01, 1)
+
+    """
+    return functools.reduce(getattr, name.split("."), model)
+
+
+def differing_fields(a: Any, b: Any, names: Iterable[str]) -> list[str]:
+    """Which of the fields ``names`` differ between two ``MjModel`` objects (NaN equals NaN).
+
+    Examples:
+        >>> import mujoco
+        >>> m = mujoco.MjModel.from_xml_string("<mujoco/>")
+        >>> differing_fields(m, m, ["nbody", "opt.timestep"])
+        []
+
+    """
+    return [name for name in names if not _equal(field_value(a, name), field_value(b, name))]
 
 
 def model_differences(a: Any, b: Any, *, ignore: frozenset[str] = frozenset()) -> list[str]:
@@ -137,23 +198,8 @@ def model_differences(a: Any, b: Any, *, ignore: frozenset[str] = frozenset()) -
         []
 
     """
-    differing = [
-        name
-        for name in model_fields()
-        if name not in ignore and not _equal(getattr(a, name), getattr(b, name))
-    ]
-    for struct in ("opt", "stat"):
-        left, right = _struct_fields(getattr(a, struct)), _struct_fields(getattr(b, struct))
-        differing.extend(
-            f"{struct}.{name}" for name in left if not _equal(left[name], right.get(name))
-        )
-    for group in ("global_", "quality", "headlight", "map", "scale", "rgba"):
-        left = _struct_fields(getattr(a.vis, group))
-        right = _struct_fields(getattr(b.vis, group))
-        differing.extend(
-            f"vis.{group}.{name}" for name in left if not _equal(left[name], right.get(name))
-        )
-    return differing
+    names = (*model_fields(), *struct_field_names())
+    return differing_fields(a, b, [name for name in names if name not in ignore])
 
 
 def compile_text_beside(text: str, original: str | os.PathLike[str]) -> Any:
