@@ -34,6 +34,7 @@ from mjcf_model.nodes.root import Mujoco
 from mjcf_model.serializers.canonical import attribute_texts, write_canonical
 from mjcf_model.serializers.kept_format import write_kept
 from mjcf_model.serializers.loading import loads
+from mjcf_model.tree.queries import find_all
 from mjcf_model.tree.traversal import keyed_walk
 
 __all__ = [
@@ -251,7 +252,10 @@ def inlined_includes(model: Mujoco) -> Mujoco:
         True
 
     """
-    if not any(key == "include" for _, key, _ in keyed_walk(model)):
+    # the tree's index answers at once where there is no <include> at all (the usual case)
+    if not find_all(model, "include") or not any(
+        key == "include" for _, key, _ in keyed_walk(model)
+    ):
         return model
     base = model.base_dir if model.base_dir is not None else Path(os.getcwd())
     return loads(dumps(model), inline_includes=True, base_dir=base)

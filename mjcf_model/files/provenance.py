@@ -34,7 +34,7 @@ import os
 import posixpath
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from pathlib import Path, PurePosixPath
-from typing import Literal
+from typing import Literal, TypeGuard
 
 import attrs
 
@@ -50,6 +50,8 @@ from mjcf_model.nodes.base import (
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.compiler import Compiler
 from mjcf_model.nodes.root import Mujoco, to_base_dir
+from mjcf_model.schema.namespaces import SCHEMA, child_key
+from mjcf_model.tree.queries import find_all
 from mjcf_model.tree.traversal import keyed_walk, map_elements, with_children
 
 __all__ = [
@@ -235,6 +237,31 @@ def file_references(model: Mujoco) -> Iterator[FileReference]:
         yield from element_file_references(element, key, folders, model.base_dir)
 
 
+#: The schema keys of elements that write no file path (:func:`with_paths` skips them).
+_WITHOUT_FILES = frozenset(SCHEMA) - FILE_ATTRIBUTES.keys()
+#: The tags of the elements that may write one.
+_FILE_TAGS = frozenset(key.rpartition("/")[2] for key in FILE_ATTRIBUTES)
+#: The attributes that may hold a file path, by tag.
+_FILE_ATTRIBUTE_NAMES = {
+    tag: frozenset(
+        name for key, (_, names) in FILE_ATTRIBUTES.items() if key.endswith(tag) for name in names
+    )
+    for tag in _FILE_TAGS
+}
+#: The top-level sections whose children write file paths (a section's key is its tag).
+_FILE_SECTIONS = frozenset({"asset", "deformable"})
+
+
+def _writes_file(node: Node) -> TypeGuard[AnyElement]:
+    """Whether ``node`` is an element of a file-writing tag that writes a file path."""
+    names = _FILE_ATTRIBUTE_NAMES.get(getattr(node, "tag", ""))
+    if names is None or not isinstance(node, Element):
+        return False
+    return any(
+        isinstance(get_attribute(node, name), str) and get_attribute(node, name) for name in names
+    )
+
+
 def with_paths(
     model: Mujoco, new_path: Callable[[FileReference], str], folders: Folders | None = None
 ) -> Mujoco:
@@ -257,7 +284,28 @@ def with_paths(
                 changes[reference.attribute] = text
         return with_attributes(element, changes)
 
-    return map_elements(visit, model)
+    # Where every element of a file-writing tag stands in a top-level section (``<asset>``
+    # holds the meshes), only those sections are rebuilt; the tree's index finds them.
+    found = sum(1 for element in find_all(model, _FILE_TAGS) if _writes_file(element))
+    visited = 0
+    sections: list[Node] = []
+    for section in model.children:
+        if isinstance(section, Element) and section.tag in _FILE_SECTIONS:
+            inner = [
+                visit(child, child_key(section.tag, child.tag), ())
+                if _writes_file(child)
+                else child
+                for child in section.children
+            ]
+            visited += sum(1 for child in section.children if _writes_file(child))
+            section = with_children(section, inner)
+        elif _writes_file(section):
+            visited += 1
+            section = visit(section, child_key("mujoco", section.tag), ())
+        sections.append(section)
+    if visited == found:
+        return with_children(model, sections)
+    return map_elements(visit, model, kept=_WITHOUT_FILES)  # some stand deeper: walk them all
 
 
 def relocated(

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import mujoco
 import pytest
@@ -10,8 +11,18 @@ import pytest
 from mjcf_model import (
     MjcfValueError,
     compiled,
+    map_elements,
+    with_attributes,
 )
+from mjcf_model.files.provenance import (
+    Folders,
+    element_file_references,
+    file_references,
+    with_paths,
+)
+from mjcf_model.nodes.root import Mujoco
 from mjcf_model.serializers import dump, dumps, load, loads
+from tests.conftest import compiling_corpus, corpus_id
 from tests.support.model_files import ROBOT, _same, obj_mesh, with_files, write_tree
 
 # -- Where a model's files are: compiled in memory, dumped elsewhere, exported, MuJoCo as
@@ -181,3 +192,39 @@ def test_dump_to_an_open_file_relocates_to_its_folder(robot: Path, tmp_path: Pat
         dump(load(robot), stream)
     expected = mujoco.MjModel.from_xml_path(str(robot))
     assert _same(mujoco.MjModel.from_xml_path(str(target)), expected) == []
+
+
+def _every_path_rewritten(model: Mujoco) -> Mujoco:
+    """The reference: every element visited by a walk, its file paths upper-cased."""
+    folders = Folders.of(model)
+
+    def visit(element: Any, key: str | None, ancestors: Any) -> Any:
+        changes = {
+            reference.attribute: reference.text.upper()
+            for reference in element_file_references(element, key, folders, model.base_dir)
+        }
+        return with_attributes(element, changes)
+
+    return map_elements(visit, model)
+
+
+@pytest.mark.parametrize("path", compiling_corpus(), ids=corpus_id)
+def test_with_paths_rewrites_what_a_walk_of_every_element_rewrites(path: Path) -> None:
+    """Where the files stand in ``<asset>`` only those sections are rebuilt: the same result."""
+    model = load(path)
+    assert with_paths(model, lambda r: r.text.upper()) == _every_path_rewritten(model)
+
+
+def test_with_paths_finds_file_paths_outside_the_asset_section() -> None:
+    """A flexcomp's file in the worldbody, a default class's mesh, a kept include: all found."""
+    model = loads(
+        '<mujoco><default><mesh scale="2 2 2"/></default>'
+        '<asset><mesh name="m" file="m.stl"/><texture name="t" type="2d" file="t.png"/></asset>'
+        '<include file="part.xml"/>'
+        '<worldbody><body><flexcomp name="f" type="mesh" file="f.obj" dim="2"/></body>'
+        "</worldbody></mujoco>"
+    )
+    rewritten = with_paths(model, lambda r: r.text.upper())
+    assert rewritten == _every_path_rewritten(model)
+    texts = [r.text for r in file_references(rewritten)]
+    assert sorted(texts) == ["F.OBJ", "M.STL", "PART.XML", "T.PNG"]
