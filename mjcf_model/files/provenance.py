@@ -244,7 +244,10 @@ _FILE_TAGS = frozenset(key.rpartition("/")[2] for key in FILE_ATTRIBUTES)
 #: The attributes that may hold a file path, by tag.
 _FILE_ATTRIBUTE_NAMES = {
     tag: frozenset(
-        name for key, (_, names) in FILE_ATTRIBUTES.items() if key.endswith(tag) for name in names
+        name
+        for key, (_, names) in FILE_ATTRIBUTES.items()
+        if key.rpartition("/")[2] == tag
+        for name in names
     )
     for tag in _FILE_TAGS
 }
