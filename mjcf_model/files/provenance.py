@@ -51,7 +51,7 @@ from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.compiler import Compiler
 from mjcf_model.nodes.root import Mujoco, to_base_dir
 from mjcf_model.schema.namespaces import SCHEMA, child_key
-from mjcf_model.tree.queries import find_all
+from mjcf_model.tree.indexes import held_index
 from mjcf_model.tree.traversal import keyed_walk, map_elements, with_children
 
 __all__ = [
@@ -287,20 +287,23 @@ def with_paths(
                 changes[reference.attribute] = text
         return with_attributes(element, changes)
 
-    # Where every element of a file-writing tag stands in a top-level section (``<asset>``
-    # holds the meshes), only those sections are rebuilt; the tree's index finds them.
-    found = sum(1 for element in find_all(model, _FILE_TAGS) if _writes_file(element))
+    # A tree with an index (a loaded one): where every element of a file-writing tag
+    # stands in a top-level section (``<asset>`` holds the meshes), only those sections
+    # are rebuilt. Any other tree is walked once, leaves that write no file skipped.
+    index = held_index(model)
+    if index is None:
+        return map_elements(visit, model, kept=_WITHOUT_FILES)
+    found = sum(1 for tag in _FILE_TAGS for element in index.tagged(tag) if _writes_file(element))
     visited = 0
     sections: list[Node] = []
     for section in model.children:
         if isinstance(section, Element) and section.tag in _FILE_SECTIONS:
-            inner = [
-                visit(child, child_key(section.tag, child.tag), ())
-                if _writes_file(child)
-                else child
-                for child in section.children
-            ]
-            visited += sum(1 for child in section.children if _writes_file(child))
+            inner: list[Node] = []
+            for child in section.children:
+                if _writes_file(child):
+                    visited += 1
+                    child = visit(child, child_key(section.tag, child.tag), ())
+                inner.append(child)
             section = with_children(section, inner)
         elif _writes_file(section):
             visited += 1

@@ -228,8 +228,11 @@ class DefaultClasses:
         """
         return tuple(setting for _, setting in self._along(name, tag))
 
-    def _along(self, name: str, tag: str) -> list[tuple[str, AnyElement]]:
-        """:meth:`settings_along`, each with the class that holds it."""
+    def _along(self, name: str, tag: str) -> tuple[tuple[str, AnyElement], ...]:
+        """:meth:`settings_along`, each with the class that holds it (worked out once)."""
+        memo: tuple[tuple[str, AnyElement], ...] | None = self._memo.get(("along", name, tag))
+        if memo is not None:
+            return memo
         found: list[tuple[str, AnyElement]] = []
         for current in reversed(self.chain(name)):
             if tag == "actuator":
@@ -241,7 +244,8 @@ class DefaultClasses:
                 ]
             else:
                 found += [(current, setting) for setting in self.layers.get((current, tag), ())]
-        return found
+        along = self._memo[("along", name, tag)] = tuple(found)
+        return along
 
     def class_of(self, element: AnyElement, ancestors: Sequence[AnyElement]) -> str:
         """The class ``element`` takes defaults from: its own, an inherited ``childclass``, or main.

@@ -35,6 +35,7 @@ __all__ = [
     "NotedOrder",
     "TagIndex",
     "elements_below",
+    "held_index",
     "first_named",
     "index_of",
     "indexed",
@@ -288,6 +289,21 @@ def index_of(node: Node) -> TagIndex | None:
         index = TagIndex(node)
         _INDEXES[key] = (entry[0], index)
     return index
+
+
+def held_index(node: Node) -> TagIndex | None:
+    """The index ``node``'s tree already holds (read, made, or queried twice), else ``None``.
+
+    Unlike :func:`index_of` it is not a query: it never builds an index nor counts.
+
+    Examples:
+        >>> from mjcf_model import loads, Geom
+        >>> held_index(Geom()) is None, held_index(loads("<mujoco/>")) is not None
+        (True, True)
+
+    """
+    entry = _INDEXES.get(id(node))
+    return entry[1] if entry is not None and entry[0]() is node else None
 
 
 def indexed(node: Node, index: TagIndex) -> None:

@@ -175,16 +175,13 @@ def test_a_loaded_tree_is_indexed_by_its_reader(path: Path) -> None:
 
     Referee: the index a walk of the returned tree builds, element for element (``is``).
     With its includes inlined, the tree holds other elements than the ones read: the
-    reader's index is not given. Its index is the walk's (loading asked it where the
-    included files' paths stand, which was its first query), or none before a query.
+    reader's index is not given, and the first query walks.
     """
     model = load(path)
     _assert_the_walks_index(model, index_of(model))
     inlined = load(path, inline_includes=True)
     if any(isinstance(e, Include) for e in elements_below(model)):
-        index = index_of(inlined)
-        if index is not None:
-            _assert_the_walks_index(inlined, index)
+        assert index_of(inlined) is None
     else:
         _assert_the_walks_index(inlined, index_of(inlined))
 
