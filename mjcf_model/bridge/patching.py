@@ -25,6 +25,7 @@ a position...) is compiled again in full, with a
 from __future__ import annotations
 
 import copy
+import math
 import warnings
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
@@ -32,7 +33,8 @@ from typing import TYPE_CHECKING, Any
 import numpy
 
 from mjcf_model.bridge.compiling import compiled
-from mjcf_model.caching import BoundedCache
+from mjcf_model.bridge.scale_patching import Scaling, restore_scaled, scaled_model, scaling_of
+from mjcf_model.caching import BoundedCache, IdentityCache
 from mjcf_model.errors import MjcfRecompiledWarning
 from mjcf_model.nodes.base import (
     AnyElement,
@@ -151,21 +153,64 @@ def patched(
         ([[1.0, 0.0, 0.0, 1.0]], [[0.5, 0.5, 0.5, 1.0]])
 
     """
+    scaling = scaling_of(after)
+    if scaling is not None and scaling.source is before:
+        outcome = _scaled_variant(model, before, after, scaling, into)
+    else:
+        outcome = _physical_variant(model, before, after, into)
+    if isinstance(outcome, str):
+        warnings.warn(
+            f"patched() compiles the model again: {outcome}",
+            MjcfRecompiledWarning,
+            stacklevel=2,
+        )
+        return compiled(after)
+    return outcome
+
+
+def _scaled_variant(
+    model: mujoco.MjModel,
+    before: Mujoco,
+    after: Mujoco,
+    scaling: Scaling,
+    into: mujoco.MjModel | None,
+) -> mujoco.MjModel | str:
+    """``model`` scaled as ``after`` is ``before`` scaled; or why it must be compiled."""
+    if len(set(scaling.factors)) > 1:
+        return f"scaled by {scaling.factors}: per-axis factors are compiled"
+    if scaling.surface_masses:
+        return (
+            f"{scaling.surface_masses[0]} spreads its mass over its surface, which"
+            ' mass="volume" scales with the area'
+        )
+    springs, problem = _springdampers(before)
+    servos = _position_servos(before)
+    problem = problem or _damp_ratios(before)[1] or (servos if isinstance(servos, str) else None)
+    if problem is not None or isinstance(servos, str):
+        return problem or "unreachable"
+    result = scaled_model(model, after, scaling.factors[0], scaling.mass, into, servos=servos)
+    if isinstance(result, str):
+        return result
+    _spring_dampers(result, springs)
+    _position_dampings(result, _damp_ratios(before)[0])
+    return result
+
+
+def _physical_variant(
+    model: mujoco.MjModel, before: Mujoco, after: Mujoco, into: mujoco.MjModel | None
+) -> mujoco.MjModel | str:
+    """``model`` changed as ``after`` differs from ``before``; or why it must be compiled."""
     import mujoco
 
     changes: list[tuple[str, str, int, tuple[float, ...]]] = []
     problem = _mapped(model, before, after, changes)
     if problem is not None:
-        warnings.warn(
-            f"patched() compiles the model again: {problem}",
-            MjcfRecompiledWarning,
-            stacklevel=2,
-        )
-        return compiled(after)
+        return problem
     if into is None:
         result = copy.copy(model)
     else:
         result = into
+        restore_scaled(model, into)  # an earlier scaled variant wrote every float array
         for field in _PATCHED:  # what an earlier variant wrote goes back to the model's
             getattr(result, field)[...] = getattr(model, field)
     # One assignment per field and length of value (a later change of a row wins).
@@ -188,6 +233,7 @@ def patched(
     if again or any(field not in _LOCAL for field, _, _, _ in changes):
         mujoco.mj_setConst(result, mujoco.MjData(result))
         _restate(result, before)
+        _position_dampings(result, _damp_ratios(before)[0])
     _spring_dampers(result, _springdampers(before)[0])
     return result
 
@@ -256,7 +302,7 @@ def _mapped(
     if not pending:
         return None
     rows = _Rows(before)
-    springs = _springdampers(before)[1]
+    springs = _springdampers(before)[1] or _damp_ratios(before)[1]
     if springs is not None:
         return springs
     for key, element, attribute, numbers, written, path in pending:
@@ -528,6 +574,122 @@ def _springdampers(before: Mujoco) -> tuple[list[tuple[int, float, float]], str 
             joints.append((row, setting[0], setting[1]))
         joints.sort()
     return _SPRINGS.remember(id(before), (before, (joints, problem)))[1]
+
+
+def _damp_ratios(before: Mujoco) -> tuple[list[tuple[int, float]], str | None]:
+    """The actuators of ``before`` whose damping MuJoCo derives from a damping ratio.
+
+    A position servo's ``dampratio`` (or a positive third ``biasprm``) is a ratio the
+    compiler turns into a damping from the masses it moves. Each as its compiled row
+    and ratio: the last of ``biasprm``, ``kv`` and ``dampratio`` written along its
+    classes, outermost first, then on the element, sets it. And what stops a patch,
+    when such an actuator has no row this module can tell. Remembered per model.
+    """
+    return _RATIOS.recall_for(before, lambda: _find_damp_ratios(before))
+
+
+def _find_damp_ratios(before: Mujoco) -> tuple[list[tuple[int, float]], str | None]:
+    """What :func:`_damp_ratios` answers, computed."""
+    classes = DefaultClasses.of(before)
+    actuators = [
+        (element, ancestors, path)
+        for key, element, ancestors, *_, path in _paired_walk(before, before)
+        if key.startswith("actuator/")
+    ]
+    found: list[tuple[int, float]] = []
+    rows: dict[tuple[int, ...], int] | None = None
+    for element, ancestors, path in actuators:
+        name = classes.class_of(element, ancestors)
+        ratio = 0.0
+        for setting in (*classes.settings_along(name, "actuator"), element):
+            bias = numbers_of(get_attribute(setting, "biasprm"))
+            if bias is not None and len(bias) >= 3:
+                ratio = bias[2]
+            kv = numbers_of(get_attribute(setting, "kv"))
+            if kv:
+                ratio = -kv[0]
+            damp = numbers_of(get_attribute(setting, "dampratio"))
+            if damp:
+                ratio = damp[0]
+        if ratio <= 0:
+            continue
+        rows = _numbering(before) if rows is None else rows
+        row = rows.get(path)
+        if row is None:
+            return [], f"cannot tell which compiled actuator the damping ratio at {path} sets"
+        found.append((row, ratio))
+    return sorted(found), None
+
+
+def _position_servos(before: Mujoco) -> tuple[list[int], list[int]] | str:
+    """The compiled rows of the ``<position>`` actuators of ``before`` on a joint.
+
+    Its controls and ``ctrlrange`` are lengths on a slide joint: every such row, and the
+    rows whose element writes its own ``ctrlrange`` (the ones ``scaled`` changes); or
+    what stops a patch, when such an actuator has no row this module can tell.
+    """
+    return _SERVOS.recall_for(before, lambda: _find_position_servos(before))
+
+
+def _find_position_servos(before: Mujoco) -> tuple[list[int], list[int]] | str:
+    """What :func:`_position_servos` answers, computed."""
+    servos: list[int] = []
+    ranged: list[int] = []
+    rows: dict[tuple[int, ...], int] | None = None
+    for key, element, *_, path in _paired_walk(before, before):
+        if key != "actuator/position" or get_attribute(element, "joint") is None:
+            continue
+        rows = _numbering(before) if rows is None else rows
+        row = rows.get(path)
+        if row is None:
+            return f"cannot tell which compiled actuator the <position> at {path} is"
+        servos.append(row)
+        if get_attribute(element, "ctrlrange") is not None:
+            ranged.append(row)
+    return sorted(servos), sorted(ranged)
+
+
+#: What :func:`_position_servos` found for the last few models.
+_SERVOS: IdentityCache[tuple[list[int], list[int]] | str] = IdentityCache(8)
+
+
+#: What :func:`_damp_ratios` found for the last few models.
+_RATIOS: IdentityCache[tuple[list[tuple[int, float]], str | None]] = IdentityCache(8)
+
+
+def _position_dampings(model: mujoco.MjModel, actuators: list[tuple[int, float]]) -> None:
+    """The damping MuJoCo's compiler derives from each position servo's damping ratio.
+
+    As the compiler computes it at ``qpos0``: ``2 * ratio * sqrt(kp * mass)``, the mass
+    being each moved degree of freedom's ``dof_M0`` over its transmission squared
+    (``actuators``: each servo's row and ratio); only where ``biasprm`` is
+    ``-gainprm`` and the gain and bias are fixed and affine, as MuJoCo requires.
+    """
+    if not actuators:
+        return
+    import mujoco
+
+    data = mujoco.MjData(model)
+    data.qpos[:] = model.qpos0
+    mujoco.mj_kinematics(model, data)
+    mujoco.mj_comPos(model, data)
+    mujoco.mj_tendon(model, data)
+    mujoco.mj_transmission(model, data)
+    for row, ratio in actuators:
+        gain, bias = model.actuator_gainprm[row], model.actuator_biasprm[row]
+        if (
+            model.actuator_gaintype[row] != int(mujoco.mjtGain.mjGAIN_FIXED)
+            or model.actuator_biastype[row] != int(mujoco.mjtBias.mjBIAS_AFFINE)
+            or gain[0] != -bias[1]
+        ):
+            continue
+        start, count = int(data.moment_rowadr[row]), int(data.moment_rownnz[row])
+        mass = 0.0
+        for entry in range(start, start + count):
+            lever = abs(float(data.actuator_moment[entry]))
+            if lever * lever > _MINVAL:
+                mass += float(model.dof_M0[data.moment_colind[entry]]) / (lever * lever)
+        bias[2] = -(ratio * 2 * math.sqrt(gain[0] * mass))
 
 
 #: What :func:`_springdampers` found for the last few models, by ``id`` (kept with the model).

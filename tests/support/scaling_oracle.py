@@ -1,7 +1,7 @@
 """The complete scaling oracle: every compiled field has its expected change, MuJoCo compiles both.
 
 :func:`scaled_model_problems` multiplies each float array of the original model
-by its kind's factor (:data:`tests.support.compiled_fields.FLOAT_FIELDS`) and requires the
+by its kind's factor (:data:`mjcf_model.bridge.scaled_fields.FLOAT_FIELDS`) and requires the
 scaled model's array to match; every other array and size, and the ``opt``,
 ``stat`` and ``vis`` structs, must be unchanged, but for the few stated here.
 """
@@ -21,10 +21,10 @@ from mjcf_model.bridge.compare import (
     model_fields,
     path_fields,
 )
+from mjcf_model.bridge.scaled_fields import FLOAT_FIELDS, float_fields
 from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.transforms.scaling.transform import MassPolicy, scaled
 from tests.conftest import FIXTURES, MUJOCO_VERSION
-from tests.support.compiled_fields import FLOAT_FIELDS, float_fields
 
 __all__ = ["MESH_ARRAYS_COMPARABLE", "scaled_model_problems"]
 

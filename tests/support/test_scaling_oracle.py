@@ -6,13 +6,13 @@ import mujoco
 import numpy as np
 import pytest
 
-from tests.support.compiled_fields import FLOAT_FIELDS, float_fields
+from mjcf_model.bridge.scaled_fields import FLOAT_FIELDS, float_fields
 from tests.support.scaling_oracle import compiled_pair, scaled_model_problems
 
 # -- The complete scaling oracle: every float field classified, and the bugs it catches. -------
 #
 # MuJoCo compiles each model before and after scaling; :func:`scaled_model_problems`
-# states the expected change of every field (:mod:`tests.support.compiled_fields`).
+# states the expected change of every field (:mod:`mjcf_model.bridge.scaled_fields`).
 
 
 def test_every_float_field_of_the_installed_mujoco_is_classified() -> None:

@@ -79,6 +79,9 @@ class ScaleContext:
     cycles: Cycles = attrs.field(init=False, eq=False, repr=False)
     #: The joints and what rules work out once per scaling, on first use.
     _memo: dict[object, Any] = attrs.field(factory=dict, init=False, eq=False, repr=False)
+    #: The geoms met whose mass, spread over their surface, grows with the area while
+    #: the other masses grow with the volume (under ``mass="volume"``), for people.
+    surface_masses: list[str] = attrs.field(factory=list, init=False, eq=False, repr=False)
 
     @mean.default
     def _mean(self) -> float:

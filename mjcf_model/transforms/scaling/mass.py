@@ -98,6 +98,24 @@ def _in_world(ancestors: Sequence[AnyElement]) -> bool:
     return False
 
 
+def _weighs_its_body(ancestors: Sequence[AnyElement], context: ScaleContext) -> bool:
+    """Whether a geom's mass counts in its body's: no ``<inertial>`` there replaces it.
+
+    Under the compiler's ``inertiafromgeom="true"`` geoms always count.
+    """
+    body = next((a for a in reversed(ancestors) if a.tag == "body"), None)
+    if body is None or not any(child.tag == "inertial" for child in body.elements):
+        return True
+    model = context.model
+    sections = model.elements if model is not None and model.tag == "mujoco" else ()
+    settings = [
+        get_attribute(section, "inertiafromgeom")
+        for section in sections
+        if section.tag == "compiler"
+    ]
+    return any(setting in (True, "true") for setting in settings)
+
+
 def geom_density(
     geom: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
@@ -118,11 +136,18 @@ def geom_density(
         {}
 
     """
-    if context.mass != "keep" or _in_world(ancestors):
+    if _in_world(ancestors):
         return {}
     mass, density, kind, mesh, shell = context.classes.resolve_many(geom, ancestors, _DENSITY_READ)
     if mass is not None:
         return {}
     value = (numbers_of(density) or builtin_default("geom", "density"))[0]
-    factor = context.area if _is_shell(kind, mesh, shell, context) else context.volume
-    return {"density": value / factor}
+    surface = _is_shell(kind, mesh, shell, context)
+    if context.mass != "keep":
+        if surface and value != 0 and _weighs_its_body(ancestors, context):
+            name = get_attribute(geom, "name")
+            context.surface_masses.append(
+                f"<geom name={name!r}>" if name else f"a <geom mesh={mesh!r}>"
+            )
+        return {}
+    return {"density": value / (context.area if surface else context.volume)}

@@ -33,6 +33,7 @@ from typing import Literal
 import numpy as np
 import numpy.typing as npt
 
+from mjcf_model.bridge.scale_patching import remember_scaling
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.base import AnyElement, get_attribute, with_attributes
 from mjcf_model.serializers.skins import inline_skin_files
@@ -140,6 +141,7 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     if factors == (1.0, 1.0, 1.0):
         return node
 
+    source = node
     node = inline_skin_files(node)  # a skin file's vertices and bind poses are lengths
     classes = DefaultClasses.of(node)
     context = ScaleContext(factors=factors, mass=mass, classes=classes, model=node)
@@ -164,7 +166,11 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
             return with_friction_defaults(changed, context)
         return changed
 
-    return map_elements(visit, node, GUESS, kept=_UNSCALED)
+    result = map_elements(visit, node, GUESS, kept=_UNSCALED)
+    remember_scaling(
+        result, source, factors, mass, context.surface_masses[:1]
+    )  # patched() writes it into compiled arrays
+    return result
 
 
 #: The keys of elements that never change, when they have no children.

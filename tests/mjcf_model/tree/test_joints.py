@@ -9,7 +9,7 @@ from tests.support.scaling_oracle import compiled_pair, scaled_model_problems
 # -- The complete scaling oracle: every float field classified, and the bugs it catches. -------
 #
 # MuJoCo compiles each model before and after scaling; :func:`scaled_model_problems`
-# states the expected change of every field (:mod:`tests.support.compiled_fields`).
+# states the expected change of every field (:mod:`mjcf_model.bridge.scaled_fields`).
 
 
 @pytest.mark.parametrize("wrap", [False, True], ids=["body", "frame"])

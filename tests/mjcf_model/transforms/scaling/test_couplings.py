@@ -17,7 +17,7 @@ from tests.support.scaling_oracle import ALIGNED_SLIDES, compiled_pair, scaled_m
 # -- The complete scaling oracle: every float field classified, and the bugs it catches. -------
 #
 # MuJoCo compiles each model before and after scaling; :func:`scaled_model_problems`
-# states the expected change of every field (:mod:`tests.support.compiled_fields`).
+# states the expected change of every field (:mod:`mjcf_model.bridge.scaled_fields`).
 
 
 @pytest.mark.parametrize(

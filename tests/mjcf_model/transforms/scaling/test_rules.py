@@ -39,7 +39,7 @@ from tests.support.schema_cases import known, reference_cases
 # -- The complete scaling oracle: every float field classified, and the bugs it catches. -------
 #
 # MuJoCo compiles each model before and after scaling; :func:`scaled_model_problems`
-# states the expected change of every field (:mod:`tests.support.compiled_fields`).
+# states the expected change of every field (:mod:`mjcf_model.bridge.scaled_fields`).
 
 
 @pytest.mark.parametrize("factor", [2.0, 0.5])

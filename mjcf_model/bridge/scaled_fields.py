@@ -7,7 +7,12 @@ for solids), as one kind: a length (``s``), a mass (``m``), an inertia
 parameters, forces, times, user data), mixed (rows or columns of different
 kinds, worked out from the original model's joint, tendon, actuator and
 equality types), or derived (computed by MuJoCo from masses, inertias and
-armatures together, such as ``dof_invweight0``; checked only through its inputs).
+armatures together, such as ``dof_invweight0``, which :func:`mjcf_model.patched`
+has MuJoCo derive again after writing the others).
+
+:func:`mjcf_model.patched` writes a scaled variant into a compiled model with it
+(:mod:`mjcf_model.bridge.scale_patching`); the tests check ``scaled`` against it and
+both against MuJoCo compiling the scaled model.
 
 Units follow MuJoCo's ``mjmodel.h`` comments and XML reference. Time is never
 scaled, so velocities of lengths (``key_qvel`` of slide joints) are lengths too.
@@ -21,17 +26,28 @@ from collections.abc import Callable, Mapping
 from types import MappingProxyType
 from typing import Any
 
-import mujoco
 import numpy as np
+import numpy.typing as npt
 
 __all__ = ["DERIVED", "FLOAT_FIELDS", "UNSCALED_BY_DECISION", "Multiplier", "float_fields"]
 
+#: A numpy array of any kind.
+Array = npt.NDArray[Any]
+
 #: The factor a field is multiplied by: from the original model, ``s`` and ``m``;
 #: a number, or an array broadcasting over the field (rows, or rows by columns).
-Multiplier = Callable[[Any, float, float], "float | np.ndarray"]
+Multiplier = Callable[[Any, float, float], "float | Array"]
 
-_J = mujoco.mjtJoint
-_SLIDE, _FREE = int(_J.mjJNT_SLIDE), int(_J.mjJNT_FREE)
+# MuJoCo's enum values (``mjtJoint``, ``mjtWrap``...), stable across its releases and
+# checked against them in the tests: reading this table does not import MuJoCo.
+_FREE, _SLIDE = 0, 2
+_WRAP_JOINT = 1
+_TRN_JOINT, _TRN_JOINTINPARENT, _TRN_TENDON, _TRN_SITE = 0, 1, 3, 4
+_GAIN_FIXED, _BIAS_AFFINE, _DYN_FILTER = 0, 1, 2
+_EQ_CONNECT, _EQ_WELD, _EQ_JOINT, _EQ_TENDON = 0, 1, 2, 3
+_OBJ_SITE = 6
+#: MuJoCo's ``mjMAXVAL``: the size of an infinite plane's bounding box.
+_MAXVAL = 1e10
 
 
 def _length(model: Any, s: float, m: float) -> float:
@@ -53,22 +69,22 @@ def _inertia(model: Any, s: float, m: float) -> float:
 def _columns(*factors: str) -> Multiplier:
     """Columns of different kinds: ``"1"`` unchanged, ``"s"`` a length."""
 
-    def multiplier(model: Any, s: float, m: float) -> np.ndarray:
+    def multiplier(model: Any, s: float, m: float) -> Array:
         return np.array([s if f == "s" else 1.0 for f in factors])
 
     return multiplier
 
 
-def _joint_factors(model: Any, s: float) -> np.ndarray:
+def _joint_factors(model: Any, s: float) -> Array:
     """Per joint: ``s`` for a slide joint (its coordinate is a length), else 1."""
     return np.where(model.jnt_type == _SLIDE, s, 1.0)
 
 
-def _per_joint(model: Any, s: float, m: float) -> np.ndarray:
+def _per_joint(model: Any, s: float, m: float) -> Array:
     return _joint_factors(model, s)[:, None]
 
 
-def _coordinates(model: Any, s: float, velocity: bool) -> np.ndarray:
+def _coordinates(model: Any, s: float, velocity: bool) -> Array:
     """Per ``qpos`` (or ``qvel``) entry: ``s`` for slide joints and free positions, else 1."""
     factors = np.ones(model.nv if velocity else model.nq)
     addresses = model.jnt_dofadr if velocity else model.jnt_qposadr
@@ -80,15 +96,15 @@ def _coordinates(model: Any, s: float, velocity: bool) -> np.ndarray:
     return factors
 
 
-def _qpos(model: Any, s: float, m: float) -> np.ndarray:
+def _qpos(model: Any, s: float, m: float) -> Array:
     return _coordinates(model, s, velocity=False)
 
 
-def _qvel(model: Any, s: float, m: float) -> np.ndarray:
+def _qvel(model: Any, s: float, m: float) -> Array:
     return _coordinates(model, s, velocity=True)
 
 
-def tendon_factors(model: Any, s: float) -> np.ndarray:
+def tendon_factors(model: Any, s: float) -> Array:
     """Per tendon: ``s`` for a spatial tendon and a fixed one over a slide joint, else 1.
 
     A fixed tendon's length ``sum(coef * q)`` over hinges alone is an angle; with a
@@ -97,13 +113,13 @@ def tendon_factors(model: Any, s: float) -> np.ndarray:
     factors = np.ones(model.ntendon)
     for tendon, (start, count) in enumerate(zip(model.tendon_adr, model.tendon_num, strict=True)):
         kinds, ids = model.wrap_type[start : start + count], model.wrap_objid[start : start + count]
-        spatial = np.any(kinds != mujoco.mjtWrap.mjWRAP_JOINT)
+        spatial = np.any(kinds != _WRAP_JOINT)
         if spatial or np.any(model.jnt_type[ids] == _SLIDE):
             factors[tendon] = s
     return factors
 
 
-def _wrap_parameters(model: Any, s: float, m: float) -> np.ndarray:
+def _wrap_parameters(model: Any, s: float, m: float) -> Array:
     """A fixed tendon's ``coef``: the tendon's length per unit of its joint's coordinate.
 
     The other wrap parameters (pulley divisors, side sites) are unitless or ids.
@@ -112,90 +128,89 @@ def _wrap_parameters(model: Any, s: float, m: float) -> np.ndarray:
     joints, tendons = _joint_factors(model, s), tendon_factors(model, s)
     for tendon, (start, count) in enumerate(zip(model.tendon_adr, model.tendon_num, strict=True)):
         for wrap in range(start, start + count):
-            if model.wrap_type[wrap] == mujoco.mjtWrap.mjWRAP_JOINT:
+            if model.wrap_type[wrap] == _WRAP_JOINT:
                 factors[wrap] = tendons[tendon] / joints[model.wrap_objid[wrap]]
     return factors
 
 
-def _per_tendon(model: Any, s: float, m: float) -> np.ndarray:
+def _per_tendon(model: Any, s: float, m: float) -> Array:
     return tendon_factors(model, s)[:, None]
 
 
-def _spatial_tendons(model: Any, s: float, m: float) -> np.ndarray:
+def _spatial_tendons(model: Any, s: float, m: float) -> Array:
     """Widths: spatial tendons only (a fixed tendon is not drawn)."""
     spatial = [
-        np.any(model.wrap_type[a : a + n] != mujoco.mjtWrap.mjWRAP_JOINT)
+        np.any(model.wrap_type[a : a + n] != _WRAP_JOINT)
         for a, n in zip(model.tendon_adr, model.tendon_num, strict=True)
     ]
     return np.where(np.array(spatial, dtype=bool), s, 1.0)[:, None]
 
 
-def _mixed_site_gears(model: Any) -> np.ndarray:
+def _mixed_site_gears(model: Any) -> Array:
     """Per actuator: a site transmission with a refsite whose gear has both parts."""
     gear = np.asarray(model.actuator_gear)
-    return (
-        (model.actuator_trntype == int(mujoco.mjtTrn.mjTRN_SITE))
+    return np.asarray(
+        (model.actuator_trntype == _TRN_SITE)
         & (model.actuator_trnid[:, 1] >= 0)
         & np.any(gear[:, :3] != 0, axis=1)
         & np.any(gear[:, 3:] != 0, axis=1)
     )
 
 
-def _actuator_gear(model: Any, s: float, m: float) -> np.ndarray:
+def _actuator_gear(model: Any, s: float, m: float) -> Array:
     """Ratios, but for the rotational part of a mixed site gear: a lever arm (times s)."""
     factors = np.ones(np.shape(model.actuator_gear))
     factors[_mixed_site_gears(model), 3:] = s
     return factors
 
 
-def _transmission_factors(model: Any, s: float) -> np.ndarray:
+def _transmission_factors(model: Any, s: float) -> Array:
     """Per actuator: the factor of its length (slide joint, tendon, site or crank)."""
-    trn = mujoco.mjtTrn
     joints, tendons = _joint_factors(model, s), tendon_factors(model, s)
     factors = np.ones(model.nu)
     for actuator, (kind, target) in enumerate(
         zip(model.actuator_trntype, model.actuator_trnid[:, 0], strict=True)
     ):
-        if kind in (int(trn.mjTRN_JOINT), int(trn.mjTRN_JOINTINPARENT)):
+        if kind in (_TRN_JOINT, _TRN_JOINTINPARENT):
             factors[actuator] = joints[target]
-        elif kind == int(trn.mjTRN_TENDON):
+        elif kind == _TRN_TENDON:
             factors[actuator] = tendons[target]
-        elif kind == int(trn.mjTRN_SITE) and not np.any(model.actuator_gear[actuator, :3]):
+        elif kind == _TRN_SITE and not np.any(model.actuator_gear[actuator, :3]):
             factors[actuator] = 1.0  # a purely rotational gear measures an angle
         else:  # site, slider-crank, body: lengths in space (a mixed site gear: a length)
             factors[actuator] = s
     return factors
 
 
-def _actuator_lengths(model: Any, s: float, m: float) -> np.ndarray:
+def _actuator_lengths(model: Any, s: float, m: float) -> Array:
     return _transmission_factors(model, s)[:, None]
 
 
-def _position_servos(model: Any) -> np.ndarray:
+def _position_servos(model: Any) -> Array:
     """Which actuators are ``<position>`` servos on a joint: ``bias = -kp * length``."""
-    return (
-        (model.actuator_trntype == mujoco.mjtTrn.mjTRN_JOINT)
-        & (model.actuator_gaintype == mujoco.mjtGain.mjGAIN_FIXED)
-        & (model.actuator_biastype == mujoco.mjtBias.mjBIAS_AFFINE)
+    return np.asarray(
+        (model.actuator_trntype == _TRN_JOINT)
+        & (model.actuator_gaintype == _GAIN_FIXED)
+        & (model.actuator_biastype == _BIAS_AFFINE)
         & (model.actuator_gainprm[:, 0] != 0)
         & (model.actuator_biasprm[:, 1] == -model.actuator_gainprm[:, 0])
     )
 
 
-def _targets(model: Any, s: float) -> np.ndarray:
+def _targets(model: Any, s: float) -> Array:
     """Per actuator: the factor of its control, a length for a position servo on a slide joint."""
     return np.where(_position_servos(model), _transmission_factors(model, s), 1.0)
 
 
-def _ctrlrange(model: Any, s: float, m: float) -> np.ndarray:
+def _ctrlrange(model: Any, s: float, m: float) -> Array:
     return _targets(model, s)[:, None]
 
 
-def _key_ctrl(model: Any, s: float, m: float) -> np.ndarray:
+def _key_ctrl(model: Any, s: float, m: float) -> Array:
     return _targets(model, s)[None, :]
 
 
-def _cylinder_gains(model: Any, s: float, m: float) -> np.ndarray:
+def _cylinder_gains(model: Any, s: float, m: float) -> Array:
     """A ``<cylinder>``'s gain is its area.
 
     A cylinder compiles to filter dynamics, a fixed gain (the area) and an affine
@@ -203,9 +218,9 @@ def _cylinder_gains(model: Any, s: float, m: float) -> np.ndarray:
     way is taken for one.
     """
     cylinder = (
-        (model.actuator_dyntype == mujoco.mjtDyn.mjDYN_FILTER)
-        & (model.actuator_gaintype == mujoco.mjtGain.mjGAIN_FIXED)
-        & (model.actuator_biastype == mujoco.mjtBias.mjBIAS_AFFINE)
+        (model.actuator_dyntype == _DYN_FILTER)
+        & (model.actuator_gaintype == _GAIN_FIXED)
+        & (model.actuator_biastype == _BIAS_AFFINE)
         & np.all(model.actuator_biasprm[:, 1:3] == 0, axis=1)
     )
     factors = np.ones(model.actuator_gainprm.shape)
@@ -213,7 +228,7 @@ def _cylinder_gains(model: Any, s: float, m: float) -> np.ndarray:
     return factors
 
 
-def _equality_data(model: Any, s: float, m: float) -> np.ndarray:
+def _equality_data(model: Any, s: float, m: float) -> Array:
     """Anchors and relative poses of connect and weld; joint and tendon polynomials.
 
     A connect's data are its anchor and the other body's; a weld's its anchor and
@@ -222,17 +237,16 @@ def _equality_data(model: Any, s: float, m: float) -> np.ndarray:
     its built-in data (``0 1 0 ...``), which stay. A joint or tendon coupling
     ``y1 = a0 + a1 y2 + ... + a4 y2**4`` has ``a_k`` in units of ``y1 / y2**k``.
     """
-    eq = mujoco.mjtEq
     factors = np.ones(model.eq_data.shape)
     joints, tendons = _joint_factors(model, s), tendon_factors(model, s)
     for row, (kind, first, second) in enumerate(
         zip(model.eq_type, model.eq_obj1id, model.eq_obj2id, strict=True)
     ):
-        if kind in (int(eq.mjEQ_CONNECT), int(eq.mjEQ_WELD)):
-            if model.eq_objtype[row] != mujoco.mjtObj.mjOBJ_SITE:
+        if kind in (_EQ_CONNECT, _EQ_WELD):
+            if model.eq_objtype[row] != _OBJ_SITE:
                 factors[row, :6] = s
-        elif kind in (int(eq.mjEQ_JOINT), int(eq.mjEQ_TENDON)):
-            of = joints if kind == int(eq.mjEQ_JOINT) else tendons
+        elif kind in (_EQ_JOINT, _EQ_TENDON):
+            of = joints if kind == _EQ_JOINT else tendons
             if second < 0:  # the object is held at a0; MuJoCo keeps the rest as written
                 factors[row, 0] = of[first]
             else:
@@ -240,17 +254,17 @@ def _equality_data(model: Any, s: float, m: float) -> np.ndarray:
     return factors
 
 
-def _intrinsics(model: Any, s: float, m: float) -> np.ndarray:
+def _intrinsics(model: Any, s: float, m: float) -> Array:
     """Focal length and principal point: lengths where a sensor size makes MuJoCo use them."""
     return np.where(np.any(model.cam_sensorsize != 0, axis=1), s, 1.0)[:, None]
 
 
-def _geom_boxes(model: Any, s: float, m: float) -> np.ndarray:
+def _geom_boxes(model: Any, s: float, m: float) -> Array:
     """Bounding boxes (centre, half sizes); an infinite plane's stay at MuJoCo's infinity."""
-    return np.where(np.abs(model.geom_aabb) >= mujoco.mjMAXVAL / 2, 1.0, s)
+    return np.where(np.abs(model.geom_aabb) >= _MAXVAL / 2, 1.0, s)
 
 
-def _fluid(model: Any, s: float, m: float) -> np.ndarray:
+def _fluid(model: Any, s: float, m: float) -> Array:
     """Ellipsoid fluid model: flag and five coefficients, then added mass and inertia.
 
     MuJoCo computes the last six from the geom's semi-axes alone (volume-like
