@@ -7,7 +7,8 @@ seeded draws (checked before timing: both compile to the same model):
   with an explicit inertial a random mass (times 0.8 to 1.2); made and compiled,
   and made and patched into the compiled model (:func:`mjcf_model.patched`);
 * scaled: every length times a factor drawn from 0.8 to 1.2, masses by volume
-  (:func:`mjcf_model.scaled`; the spec side scales every length itself);
+  (:func:`mjcf_model.scaled`; the spec side scales every length itself); compiled, and
+  patched into the compiled model;
 * compiling: ``compiled(load(path))`` against MuJoCo loading the file.
 
 ``MjSpec`` parses the file once and copies the spec per variant (``spec.copy()``);
@@ -360,7 +361,7 @@ def scaled_differences(ours: Any, theirs: Any) -> list[str]:
 
 def _scaled_case(path: Path, tiny: bool) -> Case:
     count = TINY_VARIANTS if tiny else VARIANTS
-    from mjcf_model import compiled, scaled
+    from mjcf_model import compiled, patched, scaled
     from mjcf_model.serializers import load
 
     model = load(path, inline_includes=True)
@@ -379,6 +380,13 @@ def _scaled_case(path: Path, tiny: bool) -> Case:
         for factor in np.random.default_rng(1).uniform(0.8, 1.2, count):
             spec_scaled_variant(spec, float(factor), lengths).compile()
 
+    base = compiled(model)
+    scratch = copy.copy(base)
+
+    def ours_patched() -> None:
+        for factor in np.random.default_rng(1).uniform(0.8, 1.2, count):
+            patched(base, model, scaled(model, float(factor), mass="volume"), into=scratch)
+
     return Case(
         f"scaled variants: {path.parent.name}/{path.name}",
         [
@@ -391,6 +399,12 @@ def _scaled_case(path: Path, tiny: bool) -> Case:
                 "MjSpec",
                 _from_an_empty_cache(mjspec, not tiny),
                 note="spec.copy(), every length scaled, compile()",
+            ),
+            Contender(
+                PATCHED,
+                _from_an_empty_cache(ours_patched, not tiny),
+                note="the same variants, patched(compiled, model, variant, into=scratch): "
+                "no compile (a variant patched() cannot write is compiled, with a warning)",
             ),
         ],
         f"{count} variants (uniform factor 0.8 to 1.2, masses by volume)",

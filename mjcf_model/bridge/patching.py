@@ -33,7 +33,13 @@ from typing import TYPE_CHECKING, Any
 import numpy
 
 from mjcf_model.bridge.compiling import compiled
-from mjcf_model.bridge.scale_patching import Scaling, restore_scaled, scaled_model, scaling_of
+from mjcf_model.bridge.scale_patching import (
+    Scaling,
+    restore_scaled,
+    scaled_model,
+    scaling_of,
+    scratch_data,
+)
 from mjcf_model.caching import BoundedCache, IdentityCache
 from mjcf_model.errors import MjcfRecompiledWarning
 from mjcf_model.nodes.base import (
@@ -231,7 +237,7 @@ def _physical_variant(
     if again or any(field in ("geom_margin", "geom_gap") for field, _, _, _ in changes):
         _body_margins(result)
     if again or any(field not in _LOCAL for field, _, _, _ in changes):
-        mujoco.mj_setConst(result, mujoco.MjData(result))
+        mujoco.mj_setConst(result, scratch_data(result))
         _restate(result, before)
         _position_dampings(result, _damp_ratios(before)[0])
     _spring_dampers(result, _springdampers(before)[0])
@@ -293,7 +299,8 @@ def _mapped(
     """Fill ``changes`` (field, attribute, row, numbers); the first change it cannot map."""
     pending: list[_Pending] = []
     classes_changed: list[tuple[int, ...]] = []
-    for problem in _differences(before, after, None, (), pending, classes_changed):
+    problem = _differences(before, after, None, (), pending, classes_changed)
+    if problem is not None:
         return problem
     if classes_changed:
         unmapped = _class_changes(model, before, after, pending)
@@ -342,39 +349,67 @@ def _differences(
     path: tuple[int, ...],
     pending: list[_Pending],
     classes_changed: list[tuple[int, ...]],
-) -> Iterator[str]:
-    """Collect mappable changes below two elements into ``pending``; yield what is not.
+) -> str | None:
+    """Collect mappable changes below two elements into ``pending``; the first that is not.
 
     A changed ``<default>`` is noted in ``classes_changed`` (see :func:`_class_changes`).
     """
     if before is after:
-        return
+        return None
     key = child_key(context, before.tag) if context is not None or before.tag == "mujoco" else None
     if before.tag != after.tag or key is None:
-        yield f"<{after.tag}> at {path} changed"
-        return
+        return f"<{after.tag}> at {path} changed"
     if key.startswith("default"):  # a class reaches every element that uses it
         if before != after:
             classes_changed.append(path)
-        return
+        return None
     if getattr(before, "text", None) != getattr(after, "text", None):
-        yield f"the text of <{after.tag}> at {path} changed"
-        return
+        return f"the text of <{after.tag}> at {path} changed"
     fields = FIELDS.get(key, {})
     for name, was, now in _changed_attributes(before, after):
         numbers, written = numbers_of(now), numbers_of(was)
         if name not in fields or numbers is None:
-            yield f"<{after.tag}> {name} at {path}: {was!r} -> {now!r}"
-            return
+            return f"<{after.tag}> {name} at {path}: {was!r} -> {now!r}"
         pending.append(
             (key, before, name, numbers, None if written is None else len(written), path)
         )
+    kept, made = before.children, after.children
+    if kept is made:
+        return None
+    if len(kept) != len(made):
+        return _differences_by_elements(before, after, key, path, pending, classes_changed)
+    index = 0
+    for old_child, new_child in zip(kept, made, strict=True):
+        if old_child is new_child:  # shared: unchanged (a comment, too, keeps its place)
+            if isinstance(old_child, Element):
+                index += 1
+            continue
+        if not isinstance(old_child, Element) or not isinstance(new_child, Element):
+            return _differences_by_elements(before, after, key, path, pending, classes_changed)
+        problem = _differences(old_child, new_child, key, (*path, index), pending, classes_changed)
+        if problem is not None:
+            return problem
+        index += 1
+    return None
+
+
+def _differences_by_elements(
+    before: AnyElement,
+    after: AnyElement,
+    key: str,
+    path: tuple[int, ...],
+    pending: list[_Pending],
+    classes_changed: list[tuple[int, ...]],
+) -> str | None:
+    """:func:`_differences` of the children, paired element by element (comments moved)."""
     kept, made = _elements(before), _elements(after)
     if len(kept) != len(made):
-        yield f"the children of <{after.tag}> at {path} changed"
-        return
+        return f"the children of <{after.tag}> at {path} changed"
     for index, (old_child, new_child) in enumerate(zip(kept, made, strict=True)):
-        yield from _differences(old_child, new_child, key, (*path, index), pending, classes_changed)
+        problem = _differences(old_child, new_child, key, (*path, index), pending, classes_changed)
+        if problem is not None:
+            return problem
+    return None
 
 
 def _changed_attributes(
@@ -392,14 +427,22 @@ def _changed_attributes(
         and before.extra == after.extra
     ):
         info = type(before).__node_info__
-        rank, held, holding = info.rank, before.__dict__, after.__dict__
-        return [
-            (info.names[rank[field]], held.get(field), holding.get(field))
-            for field in held.keys() | holding.keys()
-            if field in rank
-            and held.get(field) is not holding.get(field)
-            and held.get(field) != holding.get(field)
-        ]
+        rank, names, held, holding = info.rank, info.names, before.__dict__, after.__dict__
+        changed: list[tuple[str, Value | None, Value | None]] = []
+        shared = 0
+        for field, was in held.items():
+            if field in holding:
+                shared += 1
+            now = holding.get(field)
+            if now is not was and field in rank and now != was:
+                changed.append((names[rank[field]], was, now))
+        if shared != len(holding):  # fields only the variant stores
+            changed += [
+                (names[rank[field]], None, holding[field])
+                for field in holding.keys() - held.keys()
+                if field in rank and holding[field] is not None
+            ]
+        return changed
     old, new = dict(attribute_items(before)), dict(attribute_items(after))
     return [
         (name, old.get(name), new.get(name))
@@ -669,8 +712,7 @@ def _position_dampings(model: mujoco.MjModel, actuators: list[tuple[int, float]]
         return
     import mujoco
 
-    data = mujoco.MjData(model)
-    data.qpos[:] = model.qpos0
+    data = scratch_data(model)
     mujoco.mj_kinematics(model, data)
     mujoco.mj_comPos(model, data)
     mujoco.mj_tendon(model, data)

@@ -29,6 +29,7 @@ import numpy
 import numpy.typing as npt
 
 from mjcf_model.bridge.scaled_fields import FLOAT_FIELDS, float_fields
+from mjcf_model.caching import IdentityCache
 from mjcf_model.nodes.base import get_attribute
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.values import numbers_of
@@ -36,7 +37,14 @@ from mjcf_model.values import numbers_of
 if TYPE_CHECKING:
     import mujoco
 
-__all__ = ["Scaling", "remember_scaling", "restore_scaled", "scaled_model", "scaling_of"]
+__all__ = [
+    "Scaling",
+    "remember_scaling",
+    "restore_scaled",
+    "scaled_model",
+    "scaling_of",
+    "scratch_data",
+]
 
 #: A numpy array of any kind.
 Array = npt.NDArray[Any]
@@ -131,11 +139,28 @@ def scaled_model(
             getattr(result, field)[...] = value
     if into is not None:
         _HOLDING.add(into)
-    data = mujoco.MjData(result)
+    data = scratch_data(result)
     mujoco.mj_setConst(result, data)
     _statistics(result, data)
     _written_statistics(result, after)
     return result
+
+
+#: The ``MjData`` of the last few models written into (making one costs more than a patch).
+_DATA: IdentityCache[Any] = IdentityCache(4)
+
+
+def scratch_data(model: mujoco.MjModel) -> mujoco.MjData:
+    """An ``MjData`` for ``model`` to compute in, reset to the model's state at ``qpos0``.
+
+    The same one for a model patched again, reset (its mocap bodies too, which follow the
+    model's ``body_pos``).
+    """
+    import mujoco
+
+    data = _DATA.recall_for(model, lambda: mujoco.MjData(model))
+    mujoco.mj_resetData(model, data)
+    return data
 
 
 #: The models a scaled variant was written into (:func:`restore_scaled` sets them back);
@@ -230,7 +255,7 @@ def _statistics(model: mujoco.MjModel, data: mujoco.MjData) -> None:
     """
     import mujoco
 
-    data.qpos[:] = model.qpos0  # mj_setConst leaves the springs' pose
+    mujoco.mj_resetData(model, data)  # mj_setConst leaves the springs' pose
     mujoco.mj_kinematics(model, data)
     points = [data.xpos[1:], data.xipos[1:], data.xanchor, data.site_xpos]
     radius = numpy.asarray(model.geom_rbound, dtype=float).copy()
