@@ -5,10 +5,12 @@ geom's colour and contact parameters, a joint's damping, an actuator's gains, a
 body's explicit mass. :func:`patched` finds what changed between two models (the
 unchanged subtrees they share are skipped), writes each change into a copy of the
 compiled model, and recomputes what MuJoCo derives from it (``mj_setConst``, the
-stiffness and damping of ``springdamper`` joints, and the mean mass and inertia of
-``<statistic>``). A value changed in a default class is written into exactly the
-elements that take it from that class. Anything else (a new element or class, a size,
-a position...) is compiled again in full, with a
+stiffness and damping of ``springdamper`` joints, the damping of ``dampratio`` servos,
+and the mean mass and inertia of ``<statistic>``). A value changed in a default class is
+written into exactly the elements that take it from that class. A variant made by
+:func:`mjcf_model.scaled` from the model itself is written as every array times its
+unit's factor (:mod:`mjcf_model.bridge.scale_patching`). Anything else (a new element or
+class, a size, a position...) is compiled again in full, with a
 :class:`~mjcf_model.MjcfRecompiledWarning` that names the first such change.
 
 >>> from mjcf_model import compiled, map_elements, with_attributes
@@ -140,7 +142,10 @@ def patched(
         What ``compiled(after)`` returns, array for array: patched when every change
         is a value of :data:`FIELDS` that ``after`` writes whole (a full row: four
         numbers of ``rgba``, three of ``friction``...) or with as many numbers as
-        ``before`` wrote, else compiled in full (with a
+        ``before`` wrote, or when ``after`` is ``scaled(before, factor, mass=...)``
+        with one factor (then to a millionth of each array's scale: a compile rounds
+        the scaled 32-bit mesh vertices again; see
+        :mod:`mjcf_model.bridge.scale_patching`), else compiled in full (with a
         :class:`~mjcf_model.MjcfRecompiledWarning`).
 
     Examples:

@@ -15,6 +15,15 @@ applied to the model it was given. It answers with the reason instead where the
 scaled model would compile to something else than the arrays multiplied (a mass
 bound of the compiler, a muscle's length range found by simulation, a frame offset
 that crosses MuJoCo's tolerance for "the same frame"...).
+
+>>> from mjcf_model import compiled, loads, patched, scaled
+>>> ball = loads('<mujoco><worldbody><body pos="0 0 1"><freejoint/><geom size="0.1"/>'
+...              '</body></worldbody></mujoco>')
+>>> big = patched(compiled(ball), ball, scaled(ball, 2, mass="volume"))
+>>> big.geom_size[0].tolist(), big.body_pos[1].tolist()
+([0.2, 0.0, 0.0], [0.0, 0.0, 2.0])
+>>> round(float(big.body_mass[1] / compiled(ball).body_mass[1]), 9)
+8.0
 """
 
 from __future__ import annotations
