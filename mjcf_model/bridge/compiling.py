@@ -13,15 +13,17 @@ so nothing is written and the model may combine files from many folders.
 from __future__ import annotations
 
 import itertools
+import os
 from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 from mjcf_model.bridge.compile_errors import compile_error
+from mjcf_model.caching import IdentityCache
 from mjcf_model.nodes.asset import Skin
 from mjcf_model.nodes.base import Element, Node
 from mjcf_model.nodes.building import build_node
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.serializers.bundling import bundled_on_disk
+from mjcf_model.serializers.bundling import Bundle, bundled_on_disk
 from mjcf_model.serializers.dumping import dumps
 from mjcf_model.serializers.skins import skin_file_bytes
 from mjcf_model.tree.traversal import with_children
@@ -109,10 +111,26 @@ def compiled(model: Mujoco, *, assets: Mapping[str, bytes] | None = None) -> muj
     """
     import mujoco
 
-    bundle = bundled_on_disk(model, dict(assets or {}))
-    given, files = _skins_as_files(bundle.model, bundle.files)
-    text = dumps(given)
+    if assets:
+        bundle, text, files = _written(model, dict(assets))
+    else:  # a model compiled again (a reset, a sweep) is written once
+        bundle, text, files = _WRITTEN.recall_for(model, lambda: _written(model, {}), os.getcwd())
+        if files:  # file contents were read: read them again next time
+            _WRITTEN.pop((id(model), os.getcwd()), None)
     try:
         return mujoco.MjModel.from_xml_string(text, files)
     except ValueError as error:
         raise compile_error(str(error), model, bundle, text) from None
+
+
+def _written(model: Mujoco, assets: dict[str, bytes]) -> tuple[Bundle, str, dict[str, bytes]]:
+    """The bundle of ``model``, the text MuJoCo compiles and the files it reads from memory."""
+    bundle = bundled_on_disk(model, assets)
+    given, files = _skins_as_files(bundle.model, bundle.files)
+    return bundle, dumps(given), files
+
+
+#: What :func:`compiled` wrote for the last few models given no assets, by model and working
+#: folder (a relative path of a model built in code resolves from it); kept only where
+#: MuJoCo reads every file itself, by absolute path, so it reads what is there each time.
+_WRITTEN: IdentityCache[tuple[Bundle, str, dict[str, bytes]]] = IdentityCache(8)

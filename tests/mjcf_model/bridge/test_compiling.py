@@ -239,3 +239,37 @@ def test_compiled_says_which_file_is_missing_and_what_mujoco_rejects() -> None:
         compiled(loads(ROBOT))
     with pytest.raises(MjcfCompileError, match="MuJoCo rejects the model"):
         compiled(loads('<mujoco><worldbody><geom type="mesh" mesh="no"/></worldbody></mujoco>'))
+
+
+def test_a_model_compiled_again_is_written_once_where_mujoco_reads_its_files(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Compiling one model again reuses its text, per working folder; read files are not kept.
+
+    The text names every file by absolute path, so MuJoCo reads what is on disk each time;
+    a relative path of a model built in code resolves from the working folder of each call.
+    """
+    text = '<mujoco><asset><mesh name="tet" file="tet.obj"/></asset><worldbody>'
+    text += '<geom type="mesh" mesh="tet"/></worldbody></mujoco>'
+    model = loads(text)
+    for folder, points in (("four", 4), ("six", 6)):
+        (tmp_path / folder).mkdir()
+        (tmp_path / folder / "tet.obj").write_text(obj_mesh(points))
+    written: list[str] = []
+    real_dumps = compiling.dumps
+
+    def counting_dumps(node: object, **options: object) -> str:
+        written.append("once")
+        return real_dumps(node, **options)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(compiling, "dumps", counting_dumps)
+    monkeypatch.chdir(tmp_path / "four")
+    assert [compiled(model).mesh_vertnum[0] for _ in range(3)] == [4, 4, 4]
+    assert len(written) == 1
+    monkeypatch.chdir(tmp_path / "six")
+    assert compiled(model).mesh_vertnum[0] == 6 and len(written) == 2
+    # files handed over in memory are bundled at every call: they may change
+    for points in (5, 7):
+        assets = {"tet.obj": obj_mesh(points).encode()}
+        assert compiled(model, assets=assets).mesh_vertnum[0] == points
+    assert len(written) == 4
