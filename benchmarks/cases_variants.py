@@ -535,7 +535,8 @@ def compile_cases(files: list[Path], most: int | None = None) -> list[Case]:
                     Contender(
                         OURS,
                         _from_an_empty_cache(lambda m=model: compiled(m), most is None),
-                        note="compiled(model), loaded",
+                        note="compiled(model), loaded (its text is written at the first "
+                        "compile and reused while MuJoCo reads every file by path)",
                     ),
                     Contender(
                         "MjModel.from_xml_path",
