@@ -12,9 +12,12 @@ each degree of freedom, ``springdamper`` joints).
 :func:`mjcf_model.patched` calls it when its variant is the result of
 :func:`mjcf_model.scaled` (which remembers what it scaled, :func:`remember_scaling`)
 applied to the model it was given. It answers with the reason instead where the
-scaled model would compile to something else than the arrays multiplied (a mass
-bound of the compiler, a muscle's length range found by simulation, a frame offset
-that crosses MuJoCo's tolerance for "the same frame"...).
+scaled model would compile to something else than the arrays multiplied: a flex or a
+plugin (derived from its scaled shape or settings), a muscle (its length range is
+found by simulation), a frame offset that scaling carries across MuJoCo's tolerance
+for "the same frame", an array this table does not know (a newer MuJoCo), and any
+model before MuJoCo 4.0 (which derives a scaled mesh's frame anew). ``patched`` adds
+per-axis factors and masses on a surface under ``mass="volume"``.
 
 >>> from mjcf_model import compiled, loads, patched, scaled
 >>> ball = loads('<mujoco><worldbody><body pos="0 0 1"><freejoint/><geom size="0.1"/>'
@@ -38,7 +41,7 @@ import numpy
 import numpy.typing as npt
 
 from mjcf_model.bridge.scaled_fields import FLOAT_FIELDS, float_fields
-from mjcf_model.caching import IdentityCache
+from mjcf_model.caching import BoundedCache, IdentityCache
 from mjcf_model.nodes.base import get_attribute
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.values import numbers_of
@@ -114,9 +117,15 @@ def scaled_model(
 ) -> mujoco.MjModel | str:
     """``model`` as ``after`` compiles, ``after`` being its source scaled by ``factor``.
 
-    ``servos`` are the rows of ``before``'s ``<position>`` actuators on a joint, and
-    of those that write their own ``ctrlrange``: on a slide joint, ``scaled`` takes
-    their controls (and that range) for lengths.
+    Args:
+        model: The source compiled.
+        after: The source scaled (its ``<statistic>`` values replace computed ones).
+        factor: The one factor of every length.
+        mass: The mass policy ``after`` was scaled under.
+        into: A copy of ``model`` to write into (see :func:`mjcf_model.patched`).
+        servos: The rows of the source's ``<position>`` actuators on a joint, and of
+            those that write their own ``ctrlrange``: on a slide joint, ``scaled`` takes
+            their controls (and that range) for lengths.
 
     Returns:
         The model, ``into`` when given; or why it cannot be written array by array.
@@ -210,7 +219,7 @@ def _problem(model: mujoco.MjModel, factor: float) -> str | None:
 
     if int(mujoco.__version__.split(".")[0]) < 4:
         return "MuJoCo before 4.0 derives a scaled mesh's frame anew (compile it)"
-    unknown = [field for field in float_fields(model) if field not in FLOAT_FIELDS]
+    unknown = _UNKNOWN.recall(type(model), lambda: _unknown_fields(model))
     if unknown:
         return f"this MuJoCo has arrays scaling does not know: {', '.join(unknown)}"
     if model.nflex:
@@ -226,6 +235,15 @@ def _problem(model: mujoco.MjModel, factor: float) -> str | None:
     if crossing is not None:
         return crossing
     return None
+
+
+def _unknown_fields(model: mujoco.MjModel) -> list[str]:
+    """The float arrays of this MuJoCo's ``MjModel`` that the table does not classify."""
+    return [field for field in float_fields(model) if field not in FLOAT_FIELDS]
+
+
+#: :func:`_unknown_fields`, once per ``MjModel`` class (one per MuJoCo in a process).
+_UNKNOWN: BoundedCache[type, list[str]] = BoundedCache(4)
 
 
 def _crossing_offsets(model: mujoco.MjModel, factor: float) -> str | None:
