@@ -40,6 +40,7 @@ __all__ = [
     "masses",
     "parts",
     "points",
+    "principal_inertias",
 ]
 
 Changes = dict[str, Value | None]
@@ -179,6 +180,45 @@ def masses(*attributes: str) -> list[Rule]:
 def inertias(*attributes: str) -> list[Rule]:
     """Inertias: length squared, times the mass factor (per axis an approximation)."""
     return [ValueRule(a, _INERTIAS) for a in attributes]
+
+
+def principal_inertias(attribute: str) -> list[Rule]:
+    """Principal moments: inertias that MuJoCo still accepts where it accepted them before.
+
+    MuJoCo rejects moments of which one exceeds the sum of the two others. Moments on
+    that edge (``0.1 0.2 0.3``, where ``0.1 + 0.2 >= 0.3`` in floating point) can fall
+    off it once scaled and rounded (``0.144 + 0.288 < 0.432``); the largest is then the
+    sum of the two others, the nearest value MuJoCo accepts.
+
+    Examples:
+        >>> from mjcf_model import Inertial
+        >>> rule = principal_inertias("diaginertia")[0]
+        >>> rule(Inertial(diaginertia=[0.1, 0.2, 0.3]), (), ScaleContext(factors=(1.2,) * 3))
+        {'diaginertia': (0.144, 0.288, 0.43199999999999994)}
+
+    """
+    return [ValueRule(attribute, _triangle_kept)]
+
+
+def _triangle_kept(value: Value, context: ScaleContext) -> Value | None:
+    """``value`` scaled as an inertia, its largest moment lowered to keep the triangle."""
+    scaled = _INERTIAS(value, context)
+    before, after = numbers_of(value), numbers_of(scaled)
+    if before is None or after is None or len(before) != 3 or len(after) != 3:
+        return scaled
+    if not _is_triangle(before) or _is_triangle(after):
+        return scaled
+    largest = max(range(3), key=after.__getitem__)
+    first, second = (after[i] for i in range(3) if i != largest)
+    kept = list(after)
+    kept[largest] = first + second
+    return tuple(kept)
+
+
+def _is_triangle(moments: tuple[float, ...]) -> bool:
+    """Whether no moment exceeds the sum of the two others."""
+    a, b, c = moments
+    return a + b >= c and a + c >= b and b + c >= a
 
 
 class BuiltinRule:

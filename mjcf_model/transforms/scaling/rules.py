@@ -40,6 +40,7 @@ from mjcf_model.transforms.scaling.pieces import (
     lengths,
     masses,
     points,
+    principal_inertias,
 )
 from mjcf_model.transforms.scaling.plugins import makes_sdf, sdf_config, sdf_mesh_scale
 from mjcf_model.tree.queries import attribute_values
@@ -390,7 +391,9 @@ _EXPLICIT: dict[str, Rule] = {
     "asset/skin": combine(points("vertex"), lengths("inflate")),
     "asset/skin/bone": combine(points("bindpos")),
     "body": combine(points("pos")),
-    "body/inertial": combine(points("pos"), masses("mass"), inertias("diaginertia", "fullinertia")),
+    "body/inertial": combine(
+        points("pos"), masses("mass"), principal_inertias("diaginertia"), inertias("fullinertia")
+    ),
     "body/joint": combine(points("pos"), _joint),
     "body/geom": combine(_GEOM, geom_density),
     "body/site": _SITE,

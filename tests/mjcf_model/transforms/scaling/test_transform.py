@@ -470,3 +470,21 @@ def test_class_slide_ranges_scale_along_each_joints_axis() -> None:
     joints = {e.name: e for e, key, _ in keyed_walk(model) if key == "body/joint"}
     assert (joints["x"].range, joints["x"].margin) == (None, None)  # inherits the class's
     assert joints["z"].range is not None
+
+
+_EDGE = """<mujoco><worldbody><body><joint/>
+<inertial pos="0 0 0" mass="1" diaginertia="0.1 0.2 0.3"/></body></worldbody></mujoco>"""
+
+
+@pytest.mark.parametrize("mass", ["keep", "volume"])
+@pytest.mark.parametrize("factor", [1.2, 0.7, 1.1, 3.0])
+def test_moments_on_the_triangle_edge_still_compile(factor: float, mass: str) -> None:
+    """Moments MuJoCo accepts (``0.1 + 0.2 >= 0.3``) are accepted scaled, as scaled as floats allow.
+
+    Times 1.44 they would round to ``0.144 + 0.288 < 0.432``, which MuJoCo rejects.
+    """
+    model = loads(_EDGE)
+    moments = compiled(scaled(model, factor, mass=mass)).body_inertia[1]  # MuJoCo accepts it
+    inertia = factor**2 * (factor**3 if mass == "volume" else 1.0)
+    expected = mujoco.MjModel.from_xml_string(_EDGE).body_inertia[1] * inertia
+    np.testing.assert_allclose(np.sort(moments), np.sort(expected), rtol=1e-15)
