@@ -30,7 +30,6 @@ from mjcf_model import (
     scaled,
     with_attributes,
 )
-from mjcf_model.bridge import scaled_fields
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.serializers import dumps, load, loads
@@ -180,31 +179,6 @@ def test_what_cannot_be_written_is_compiled_and_named() -> None:
     assert "body 1 (1.2e-06)" in message and "tolerance" in message
     # a variant scaled from an equal model, not this one, is compared as any other
     assert "changed" in _warned(ball, scaled(loads(_BALL.format(inertial="")), 2))
-
-
-def test_the_table_reads_mujocos_enums() -> None:
-    """The table's copies of MuJoCo's enum values (it does not import MuJoCo) are MuJoCo's."""
-    copies = {
-        "_FREE": mujoco.mjtJoint.mjJNT_FREE,
-        "_SLIDE": mujoco.mjtJoint.mjJNT_SLIDE,
-        "_WRAP_JOINT": mujoco.mjtWrap.mjWRAP_JOINT,
-        "_TRN_JOINT": mujoco.mjtTrn.mjTRN_JOINT,
-        "_TRN_JOINTINPARENT": mujoco.mjtTrn.mjTRN_JOINTINPARENT,
-        "_TRN_TENDON": mujoco.mjtTrn.mjTRN_TENDON,
-        "_TRN_SITE": mujoco.mjtTrn.mjTRN_SITE,
-        "_GAIN_FIXED": mujoco.mjtGain.mjGAIN_FIXED,
-        "_BIAS_AFFINE": mujoco.mjtBias.mjBIAS_AFFINE,
-        "_DYN_FILTER": mujoco.mjtDyn.mjDYN_FILTER,
-        "_EQ_CONNECT": mujoco.mjtEq.mjEQ_CONNECT,
-        "_EQ_WELD": mujoco.mjtEq.mjEQ_WELD,
-        "_EQ_JOINT": mujoco.mjtEq.mjEQ_JOINT,
-        "_EQ_TENDON": mujoco.mjtEq.mjEQ_TENDON,
-        "_OBJ_SITE": mujoco.mjtObj.mjOBJ_SITE,
-        "_MAXVAL": mujoco.mjMAXVAL,
-    }
-    assert {name: getattr(scaled_fields, name) for name in copies} == {
-        name: float(value) if name == "_MAXVAL" else int(value) for name, value in copies.items()
-    }
 
 
 _SERVO = """<mujoco><worldbody><body name="arm" pos="0 0 0.5">
