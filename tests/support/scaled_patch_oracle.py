@@ -108,7 +108,9 @@ def _singular(model: Any) -> bool:
     if not model.nv:
         return False
     data = mujoco.MjData(model)
-    mujoco.mj_forward(model, data)
+    mujoco.mj_kinematics(model, data)  # no collision: MuJoCo 3.9 aborts on some drawn models
+    mujoco.mj_comPos(model, data)
+    mujoco.mj_makeM(model, data)
     matrix = np.zeros((model.nv, model.nv))
     if MUJOCO_VERSION >= (4, 0):
         mujoco.mj_fullM(model, data, matrix)
@@ -315,8 +317,10 @@ def _mesh_vertices(model: Any, mesh: int) -> np.ndarray:
 
 def _extrema_problems(model: Any, referee: Any) -> list[str]:
     """Where MuJoCo picks another, each extreme vertex per direction must reach as far."""
-    problems = []
-    moved = np.any(model.mesh_extrema != referee.mesh_extrema, axis=1) if model.nmesh else []
+    problems: list[str] = []
+    if not model.nmesh or not hasattr(model, "mesh_extrema"):  # MuJoCo 4.0 added them
+        return problems
+    moved = np.any(model.mesh_extrema != referee.mesh_extrema, axis=1)
     for mesh in np.flatnonzero(moved):
         start = int(model.mesh_graphadr[mesh])
         if start < 0:
