@@ -134,8 +134,13 @@ def _turned_meshes(ours: Any, referee: Any) -> np.ndarray:
 
 
 def _turned_bodies(ours: Any, referee: Any) -> np.ndarray:
-    """The bodies whose inertial frame MuJoCo picked otherwise (see :func:`_turned_meshes`)."""
-    return np.any(np.abs(ours.body_iquat - referee.body_iquat) > TOLERANCE, axis=1)
+    """The bodies whose inertial frame MuJoCo picked otherwise (see :func:`_turned_meshes`).
+
+    Any difference beyond the tolerance of models without meshes: principal axes carry
+    the rounding of the moments divided by the gap between them (a drawn body's frame
+    moved by 1.4e-9), so a body's frame is checked by the inertia it holds.
+    """
+    return np.any(np.abs(ours.body_iquat - referee.body_iquat) > TOLERANCE_WITHOUT_MESHES, axis=1)
 
 
 def _rows_of(adr: np.ndarray, num: np.ndarray, chosen: np.ndarray, total: int) -> np.ndarray:
