@@ -98,6 +98,24 @@ def _in_world(ancestors: Sequence[AnyElement]) -> bool:
     return False
 
 
+def _may_spread(geom: AnyElement, context: ScaleContext) -> bool:
+    """Whether ``geom`` may spread its mass over its surface (cheap: most models have none)."""
+    if get_attribute(geom, "shellinertia") is not None:
+        return True
+    return context.cached("surfaces", lambda: _surfaces_set(context))
+
+
+def _surfaces_set(context: ScaleContext) -> bool:
+    """Whether a shell mesh or a class's ``shellinertia`` stands in the model."""
+    classes = context.classes.layers.items()
+    return bool(_shell_meshes(context)) or any(
+        get_attribute(setting, "shellinertia") is not None
+        for (_, tag), held in classes
+        if tag == "geom"
+        for setting in held
+    )
+
+
 def _weighs_its_body(ancestors: Sequence[AnyElement], context: ScaleContext) -> bool:
     """Whether a geom's mass counts in its body's: no ``<inertial>`` there replaces it.
 
@@ -137,6 +155,8 @@ def geom_density(
 
     """
     if _in_world(ancestors):
+        return {}
+    if context.mass != "keep" and not _may_spread(geom, context):
         return {}
     mass, density, kind, mesh, shell = context.classes.resolve_many(geom, ancestors, _DENSITY_READ)
     if mass is not None:
