@@ -13,10 +13,10 @@ from benchmarks.harness import OURS, Row
 __all__ = ["targets"]
 
 
-def _median(rows: list[Row], case: str, contender: str) -> float | None:
+def _time(rows: list[Row], case: str, contender: str) -> float | None:
     for row in rows:
         if row.case == case and row.contender.startswith(contender):
-            return row.median
+            return row.time
     return None
 
 
@@ -43,7 +43,7 @@ def _at_most(rows: list[Row], case: str, peer: str, label: str, limit: float) ->
     """mjcf-model's time over ``peer``'s in ``case``: met when at most ``limit``."""
     return _line(
         f"{label}: mjcf-model time / {peer} time",
-        _ratio(_median(rows, case, OURS), _median(rows, case, peer)),
+        _ratio(_time(rows, case, OURS), _time(rows, case, peer)),
         limit,
         at_most=True,
     )
@@ -53,7 +53,7 @@ def _faster(rows: list[Row], case: str, peer: str, label: str, limit: float) -> 
     """``peer``'s time over mjcf-model's in ``case``: met when at least ``limit``."""
     return _line(
         f"{label}: {peer} time / mjcf-model time",
-        _ratio(_median(rows, case, peer), _median(rows, case, OURS)),
+        _ratio(_time(rows, case, peer), _time(rows, case, OURS)),
         limit,
         at_most=False,
     )
@@ -73,8 +73,8 @@ def _compose(rows: list[Row]) -> list[str]:
         _line(
             f"compose: mjcf-model time N={big} / N={small} (linear: {big / small:g})",
             _ratio(
-                _median(rows, write_big, OURS),
-                _median(rows, f"compose {small} cans + write XML", OURS),
+                _time(rows, write_big, OURS),
+                _time(rows, f"compose {small} cans + write XML", OURS),
             ),
             1.2 * big / small,
             at_most=True,
@@ -118,7 +118,7 @@ def _per_case(rows: list[Row], prefix: str, peer: str) -> dict[str, float]:
     """mjcf-model's time over ``peer``'s in every case whose name starts with ``prefix``."""
     ratios = {}
     for case in sorted({row.case for row in rows if row.case.startswith(prefix)}):
-        ratio = _ratio(_median(rows, case, OURS), _median(rows, case, peer))
+        ratio = _ratio(_time(rows, case, OURS), _time(rows, case, peer))
         if ratio is not None:
             ratios[case.removeprefix(prefix)] = ratio
     return ratios
@@ -171,7 +171,7 @@ def _variants(rows: list[Row]) -> list[str]:
                     at_most=False,
                 )
             )
-    batch = _median(rows, BATCHED_CASE, OURS)
+    batch = _time(rows, BATCHED_CASE, OURS)
     count = next((row.inputs for row in rows if row.case == BATCHED_CASE), "")
     if batch:
         variants = int(count.split()[0]) if count[:1].isdigit() else 0
@@ -255,12 +255,12 @@ def targets(rows: list[Row]) -> str:
     lines += _compose(rows)
     lines += _resets(rows)
     for shape in ("deep", "wide"):
-        load = _median(rows, f"synthetic {shape}: load", OURS)
+        load = _time(rows, f"synthetic {shape}: load", OURS)
         for what in ("== of two separately loaded models", "hash"):
             lines.append(
                 _line(
                     f"synthetic {shape}: mjcf-model time of {what} / of load",
-                    _ratio(_median(rows, f"synthetic {shape}: {what}", OURS), load),
+                    _ratio(_time(rows, f"synthetic {shape}: {what}", OURS), load),
                     1,
                     at_most=True,
                 )

@@ -225,7 +225,7 @@ def test_reset_times_measured_by_another_interpreter_are_read_back(
     monkeypatch.setenv("MJCF_MODEL_MUJOCO39_PYTHON", str(python))
     cases = cases_resets._measured_elsewhere(["Lift", "TwoArmPegInHole"], repeat=3)
     rows = [row for case in cases for row in run_case(case, repeat=3)]
-    medians = {(row.case, row.contender): (row.median, row.ratio) for row in rows}
+    medians = {(row.case, row.contender): (row.time, row.ratio) for row in rows}
     assert medians == {
         (RESET_CASE.format(task="Lift"), OURS): (0.2, 1.0),
         (RESET_CASE.format(task="Lift"), ROBOSUITE_RESETS): (0.4, 2.0),
@@ -316,11 +316,46 @@ def test_ratios_are_relative_to_this_library() -> None:
     )
     rows = {row.contender: row for row in run_case(case, repeat=5)}
     assert rows[OURS].ratio == 1.0
-    slower, ours = rows["slower"].median, rows[OURS].median
+    slower, ours = rows["slower"].time, rows[OURS].time
     assert slower is not None and ours is not None
     assert rows["slower"].ratio == slower / ours
     assert len(rows["slower"].times) == 5
-    assert rows["absent"].median is None and rows["absent"].note == "not installed"
+    assert rows["absent"].time is None and rows["absent"].note == "not installed"
+
+
+def test_an_interleaved_case_takes_turns_and_can_show_the_least_time() -> None:
+    """Contenders run in turns, the order reversed every round, after an untimed round.
+
+    The case's ``least_repeat`` raises the runner's repeat, and ``least`` shows the minimum.
+    """
+    calls: list[str] = []
+
+    def contender(name: str) -> Contender:
+        return Contender(name, lambda: calls.append(name))
+
+    case = Case(
+        "turns",
+        [contender(OURS), contender("peer")],
+        interleaved=True,
+        least_repeat=4,
+        least=True,
+    )
+    rows = {row.contender: row for row in run_case(case, repeat=2)}
+    assert calls == [OURS, "peer", OURS, "peer", "peer", OURS, OURS, "peer", "peer", OURS]
+    for row in rows.values():
+        assert len(row.times) == 4 and row.time == min(row.times)
+
+
+def test_an_interleaved_case_reports_a_failing_contender() -> None:
+    """A contender that raises while the case takes turns is timed alone and reported."""
+
+    def fail() -> None:
+        raise RuntimeError("broken peer")
+
+    case = Case("turns", [Contender(OURS, lambda: None), Contender("peer", fail)], interleaved=True)
+    rows = {row.contender: row for row in run_case(case, repeat=3)}
+    assert len(rows[OURS].times) == 3 and rows[OURS].time is not None
+    assert rows["peer"].time is None and "broken peer" in rows["peer"].note
 
 
 def _variant_model(model: tuple[str, str]) -> Path:
