@@ -28,7 +28,8 @@ MuJoCo may read what mjcf-model cannot)
 
 from __future__ import annotations
 
-from typing import NamedTuple
+import os
+from typing import NamedTuple, Self
 
 __all__ = [
     "Advice",
@@ -46,6 +47,7 @@ __all__ = [
     "MjcfSecurityError",
     "MjcfSyntaxError",
     "MjcfValueError",
+    "folder_advice",
     "unreadable_file",
 ]
 
@@ -107,7 +109,7 @@ class MjcfError(Exception):
 
     def located(
         self, *, file: str | None = None, line: int | None = None, path: str | None = None
-    ) -> MjcfError:
+    ) -> Self:
         """Return a copy of this error with missing location parts filled in.
 
         Examples:
@@ -184,6 +186,8 @@ class MjcfAssetError(MjcfFileError):
 def unreadable_file(path: object, error: OSError) -> MjcfFileError:
     """The error for a file given to read that cannot be: ``error``'s reason, and its kind.
 
+    An empty path and a folder are said to be what they are.
+
     Examples:
         >>> try:
         ...     open("/no/such/model.xml")
@@ -191,12 +195,40 @@ def unreadable_file(path: object, error: OSError) -> MjcfFileError:
         ...     problem = unreadable_file("/no/such/model.xml", error)
         >>> isinstance(problem, FileNotFoundError), str(problem)
         (True, "cannot read '/no/such/model.xml': No such file or directory")
+        >>> str(unreadable_file("", IsADirectoryError(21, "Is a directory")))
+        'no file given: the path is empty; name the model file (scene.xml)'
 
     """
     kind = MjcfFileNotFoundError if isinstance(error, FileNotFoundError) else MjcfFileError
-    problem = kind(f"cannot read {str(path)!r}: {error.strerror or error}")
-    problem.errno, problem.strerror, problem.filename = error.errno, error.strerror, str(path)
+    name = os.fspath(path) if isinstance(path, (str, os.PathLike)) else str(path)
+    if not name:
+        detail = "no file given: the path is empty; name the model file (scene.xml)"
+    elif isinstance(error, IsADirectoryError) or os.path.isdir(name):
+        detail = f"{name!r} is a folder, not a file; {folder_advice(name)}"
+    else:
+        detail = f"cannot read {name!r}: {error.strerror or error}"
+    problem = kind(detail)
+    problem.errno, problem.strerror, problem.filename = error.errno, error.strerror, name
     return problem
+
+
+def folder_advice(folder: str) -> str:
+    """What to do with a folder given for a model file: name one of its XML files.
+
+    Examples:
+        >>> folder_advice("/no/such/folder")
+        'name a model file in it'
+
+    """
+    try:
+        found = sorted(entry.name for entry in os.scandir(folder) if entry.name.endswith(".xml"))
+    except OSError:
+        found = []
+    if not found:
+        return "name a model file in it"
+    shown = ", ".join(os.path.join(folder, name) for name in found[:3])
+    more = f" (and {len(found) - 3} more .xml files)" if len(found) > 3 else ""
+    return f"name a model file in it: {shown}{more}"
 
 
 class MjcfCompileError(MjcfError, ValueError):

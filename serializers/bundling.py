@@ -25,6 +25,7 @@ from mjcf_model.files.provenance import FileReference, Folders, with_folders, wi
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.serializers.dumping import dumps, inlined_includes
 from mjcf_model.serializers.loading import loads
+from mjcf_model.serializers.locations import located_in, read_from
 
 __all__ = ["Bundle", "bundled", "bundled_on_disk"]
 
@@ -76,16 +77,31 @@ def _read(reference: FileReference, assets: Mapping[str, bytes]) -> bytes:
         return reference.path.read_bytes()
     except OSError as error:
         name = reference.element.tag
-        raise MjcfAssetError(
+        file, _ = read_from(reference.element)
+        problem = MjcfAssetError(
             f"<{name} {reference.attribute}={reference.text!r}>: cannot read "
             f"{str(reference.path)!r}: {error.strerror or error}",
-            advice=Advice(
-                "load the model from its file (so it knows its folder) or pass the file's "
-                "bytes in assets=",
-                "put the file where the model names it (beside the model, or under its "
-                "meshdir/texturedir), or run the command on the model where its files are",
-            ),
-        ) from None
+            advice=_FROM_A_FILE if file is not None and not file.startswith("<") else _IN_CODE,
+        )
+        problem.errno, problem.strerror = error.errno, error.strerror
+        problem.filename = str(reference.path)
+        raise problem from None
+
+
+#: What to do about a file that cannot be read, named in a model read from a file.
+_FROM_A_FILE = Advice(
+    "put the file where the model names it (relative paths resolve from the model's "
+    "folder, under its meshdir, texturedir or assetdir), or pass its bytes in assets=",
+    "put the file where the model names it (relative paths resolve from the model's "
+    "folder, under its meshdir, texturedir or assetdir)",
+)
+#: The same, named in a model built in code or read from text.
+_IN_CODE = Advice(
+    "load the model from its file (so it knows its folder), give loads() base_dir=, or "
+    "pass the file's bytes in assets=",
+    "put the file where the model names it (beside the model, or under its "
+    "meshdir/texturedir), or run the command on the model where its files are",
+)
 
 
 def bundled(
@@ -149,7 +165,10 @@ def _bundle(
         elif on_disk and _on_disk(reference, assets):
             return os.path.abspath(reference.path)
         else:
-            data = _read(reference, assets)
+            try:
+                data = _read(reference, assets)
+            except MjcfAssetError as error:
+                raise located_in(error, model, reference.element) from None
         return folder + names.name(reference.text, data)
 
     return with_folders(with_paths(model, new_path), Folders())

@@ -181,7 +181,7 @@ def load(
         try:
             data = path.read_bytes()
         except OSError as error:
-            raise unreadable_file(path, error) from None
+            raise unreadable_file(source, error) from None
         session = Session(
             inline_includes=inline_includes,
             # the folder MuJoCo resolves from: the link's own, when the path is a link

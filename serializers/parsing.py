@@ -52,6 +52,7 @@ from mjcf_model.serializers.repairs import (
     epilog_end,
     escape_stray_markup,
     exact_attributes,
+    not_xml,
 )
 from mjcf_model.serializers.scanning import BREAK, may_hold_text, start_tag_end
 from mjcf_model.tree.indexes import NotedOrder, TagIndex
@@ -451,6 +452,13 @@ class Reader:
 
     def syntax_error(self, error: expat.ExpatError, raw: bytes) -> MjcfSyntaxError:
         """The error to raise for what expat refused, located and explained."""
+        kind = not_xml(raw)
+        if kind is not None:
+            return MjcfSyntaxError(
+                f"not an MJCF model: {kind}, not XML; give the model's XML file "
+                "(its root element is <mujoco>)",
+                file=self.filename,
+            )
         path = self.path_to(None) if self.stack else None
         message = expat.errors.messages[error.code] if error.code else str(error)
         detail = f"malformed XML: {message} (column {error.offset + 1})"

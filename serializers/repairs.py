@@ -33,6 +33,7 @@ __all__ = [
     "epilog_end",
     "escape_stray_markup",
     "exact_attributes",
+    "not_xml",
 ]
 
 
@@ -63,6 +64,36 @@ NOT_UTF8_ADVICE = (
     "and would not write them back as they were; save the file as UTF-8 "
     "(for a Latin-1 file: iconv -f latin1 -t utf-8)"
 )
+
+
+#: The first bytes of files people give by mistake for a model, and what they are.
+_FILE_KINDS = (
+    (b"\x89PNG\r\n\x1a\n", "a PNG image"),
+    (b"\xff\xd8\xff", "a JPEG image"),
+    (b"GIF8", "a GIF image"),
+    (b"PK\x03\x04", "a zip archive"),
+    (b"%PDF", "a PDF document"),
+    (b"\x7fELF", "a program"),
+    (b"\x1f\x8b", "a gzip archive"),
+)
+
+
+def not_xml(raw: bytes) -> str | None:
+    r"""What ``raw`` is instead of XML, when it plainly is no XML at all; ``None`` otherwise.
+
+    Examples:
+        >>> not_xml(b"\x89PNG\r\n\x1a\n..."), not_xml(b"v 0 0 0"), not_xml(b"<mujoco/>")
+        ('a PNG image', 'a file without any XML element (it begins with "v 0 0 0")', None)
+
+    """
+    for start, kind in _FILE_KINDS:
+        if raw.startswith(start):
+            return kind
+    if b"<" in raw:
+        return None
+    begins = raw[:40].decode("utf-8", "replace").strip().splitlines()
+    shown = f' (it begins with "{begins[0]}")' if begins else " (it is empty)"
+    return f"a file without any XML element{shown}"
 
 
 def character_hint(found: bytes) -> str:

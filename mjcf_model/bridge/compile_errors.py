@@ -27,11 +27,11 @@ from typing import TYPE_CHECKING
 import attrs
 
 from mjcf_model.errors import MjcfCompileError, MjcfError
-from mjcf_model.nodes.base import AnyElement, Element, attribute_text
+from mjcf_model.nodes.base import AnyElement, attribute_text
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.serializers import dumps, loads
 from mjcf_model.serializers.layout import Layout, SourceText, layout_of
-from mjcf_model.serializers.parsed_elements import element_step
+from mjcf_model.serializers.locations import element_at
 from mjcf_model.tree.traversal import Path, keyed_walk, walk
 
 if TYPE_CHECKING:
@@ -198,22 +198,8 @@ def _standing_on_canonical(bundle: Bundle, complaint: Complaint) -> list[tuple[P
 def _in_model(model: Mujoco, written: tuple[Path, AnyElement]) -> tuple[AnyElement, str] | None:
     """The element of ``model`` at the index path of ``written``, and its element path."""
     path, element = written
-    current: AnyElement = model
-    steps = [f"/{model.tag}"]
-    for index in path:
-        children = current.children
-        if index >= len(children):
-            return None
-        child = children[index]
-        if not isinstance(child, Element):
-            return None
-        same = sum(
-            1 for c in children[: index + 1] if isinstance(c, Element) and c.tag == child.tag
-        )
-        name = attribute_text(child, "name")
-        steps.append("/" + element_step(child.tag, [("name", name)] if name else [], same))
-        current = child
-    return (current, "".join(steps)) if current.tag == element.tag else None
+    found = element_at(model, path)
+    return found if found is not None and found[0].tag == element.tag else None
 
 
 def _source_of(element: AnyElement, model: Mujoco) -> tuple[str | None, int | None]:

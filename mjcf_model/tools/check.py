@@ -21,7 +21,13 @@ import attrs
 from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.bridge.compile_errors import Complaint
 from mjcf_model.bridge.compiling import compiled
-from mjcf_model.errors import MjcfCompileError, MjcfError
+from mjcf_model.errors import (
+    MjcfCompileError,
+    MjcfError,
+    MjcfFileError,
+    MjcfSyntaxError,
+    folder_advice,
+)
 from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.tools.diff import changes_between
 
@@ -89,7 +95,13 @@ def check_file(
 
     name = str(path)
     if not Path(path).is_file():
-        return CheckResult(path=name, status="error", message="no such file")
+        if not name:
+            message = "no file given: the path is empty"
+        elif Path(path).is_dir():
+            message = f"a folder, not a file; {folder_advice(name)}"
+        else:
+            message = "no such file"
+        return CheckResult(path=name, status="error", message=message)
     if part:
         return _checked_part(Path(path), includers_of(Path(path)))
     result = _checked(
@@ -272,6 +284,8 @@ def _rejection(message: str, loaded: Callable[[], Mujoco]) -> str:
         compiled(loaded())
     except MjcfCompileError as error:
         return str(error) if Complaint.parse(message).what in error.detail else plain
+    except (MjcfSyntaxError, MjcfFileError) as error:  # the reader's words name the place
+        return error.for_command_line()
     except MjcfError:  # mjcf-model cannot read it either: MuJoCo's words alone
         return plain
     return plain

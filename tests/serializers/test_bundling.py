@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import errno
 from pathlib import Path
 
 import mujoco
@@ -78,4 +79,24 @@ def test_files_on_disk_stay_where_they_are_and_missing_ones_are_refused(tmp_path
     ]
     with pytest.raises(MjcfAssetError) as missing:
         bundled(loads('<mujoco><asset><mesh file="gone.obj"/></asset></mujoco>'))
-    assert "gone.obj" in str(missing.value)
+    assert "gone.obj" in str(missing.value) and "give loads() base_dir=" in str(missing.value)
+
+
+def test_a_missing_file_of_a_loaded_model_is_located_in_its_file(tmp_path: Path) -> None:
+    """The error names the model's file, line and element path, and the missing file.
+
+    It carries the errno and advises putting the file in place (the model knows its folder).
+    """
+    path = tmp_path / "arm.xml"
+    path.write_text(
+        '<mujoco>\n<compiler meshdir="meshes"/>\n<asset>\n'
+        '  <mesh name="hand" file="hand.stl"/>\n</asset>\n</mujoco>'
+    )
+    with pytest.raises(MjcfAssetError) as missing:
+        bundled(load(path))
+    error = missing.value
+    where = (str(path), 4, "/mujoco/asset/mesh[@name='hand']")
+    assert (error.file, error.line, error.path) == where
+    assert error.errno == errno.ENOENT and error.filename == str(tmp_path / "meshes" / "hand.stl")
+    assert "put the file where the model names it" in str(error)
+    assert "load the model from its file" not in str(error)

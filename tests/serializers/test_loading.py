@@ -95,6 +95,13 @@ def test_a_missing_main_file_is_a_file_not_found_error(tmp_path: Path) -> None:
         assert isinstance(error, MjcfFileNotFoundError) and isinstance(error, MjcfError)
         assert error.errno == errno.ENOENT and error.filename == str(missing)
         assert str(error) == f"cannot read {str(missing)!r}: No such file or directory"
+    (tmp_path / "scene.xml").write_text("<mujoco/>")
     with pytest.raises(MjcfFileError) as folder:
         load(tmp_path)
     assert isinstance(folder.value, OSError) and folder.value.errno == errno.EISDIR
+    assert str(folder.value) == (
+        f"{str(tmp_path)!r} is a folder, not a file; name a model file in it: "
+        f"{tmp_path / 'scene.xml'}"
+    )
+    with pytest.raises(MjcfFileError, match=r"^no file given: the path is empty; name the model"):
+        load("")

@@ -36,6 +36,37 @@ def test_errors_and_rejections(tmp_path: Path, capsys: pytest.CaptureFixture[str
     assert "ERROR" in out and "no such file" in out
 
 
+def test_every_failure_names_the_users_file_and_says_what_to_do(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A missing mesh, a PNG, text without XML, an empty file, a folder: each names the file.
+
+    And the line and element where there is one, and says what to do, in command-line
+    words; MuJoCo's bare messages ("Error opening file", "XML parse error 8") do not show.
+    """
+    missing = tmp_path / "arm.xml"
+    missing.write_text(
+        '<mujoco>\n  <asset>\n    <mesh name="hand" file="nope/hand.stl"/>\n  </asset>\n'
+        '  <worldbody><geom type="mesh" mesh="hand"/></worldbody>\n</mujoco>\n'
+    )
+    picture = tmp_path / "picture.png"
+    picture.write_bytes(b"\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR")
+    prose = tmp_path / "notes.xml"
+    prose.write_text("hello, not a model\n")
+    empty = tmp_path / "empty.xml"
+    empty.write_bytes(b"")
+    for path in (missing, picture, prose, empty, tmp_path):
+        assert main(["check", str(path)]) == 1
+    out = capsys.readouterr().out
+    assert f"{missing}:3: /mujoco/asset/mesh[@name='hand']: <mesh file='nope/hand.stl'>" in out
+    assert "put the file where the model names it" in out and "assets=" not in out
+    assert f"{picture}: not an MJCF model: a PNG image, not XML" in out
+    assert f'{prose}: not an MJCF model: a file without any XML element (it begins with "h' in out
+    assert f"{empty}: not an MJCF model: a file without any XML element (it is empty)" in out
+    assert f"a folder, not a file; name a model file in it: {tmp_path / 'arm.xml'}" in out
+    assert "iconv" not in out and "Error opening file" not in out and "parse error" not in out
+
+
 def test_a_difference_fails_the_run(
     monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
