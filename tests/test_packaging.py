@@ -110,8 +110,23 @@ def test_wheel_metadata() -> None:
     # The declared floor is the release the oldest test environment runs.
     oldest = ".".join(_pinned("oldest", "mujoco").split(".")[:2])
     assert f"mujoco>={oldest}" in requirements
-    assert not any(r.startswith("mujoco==") for r in requirements)
+    assert not any(r.startswith("mujoco==") and "extra" not in r for r in requirements)
     assert "# mjcf-model" in metadata.get_payload()  # the README is the description
+
+
+def test_the_robosuite_extra_pins_what_the_suite_runs_robosuite_on() -> None:
+    """``[robosuite]`` pins robosuite 1.5.2 and the oldest test environment's MuJoCo.
+
+    That environment is where robosuite's own environments run (the compatibility tests
+    prove it there).
+    """
+    requirements = _metadata().get_all("Requires-Dist", [])
+    extra = sorted(
+        r.split(";")[0].strip()
+        for r in requirements
+        if "extra == 'robosuite'" in r.replace('"', "'")
+    )
+    assert extra == [f"mujoco=={_pinned('oldest', 'mujoco')}", "robosuite==1.5.2"]
 
 
 def test_the_suite_runs_on_the_package_it_says() -> None:
