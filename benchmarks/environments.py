@@ -5,7 +5,8 @@ seeded run both ways must give identical models and observations) and the hard-r
 benchmark (``benchmarks/cases_resets.py``: the same resets both ways must cost the same).
 An environment is built "with our objects" by binding, in the modules that build its
 objects, every name of a robosuite object class (and ``CustomMaterial``) to this
-library's twin; :func:`our_objects` does that and undoes it.
+library's twin, or those names and robosuite's ``mjcf_utils`` in every robosuite module
+(the global swap by assignment); :func:`our_objects` does that and undoes it.
 
 robosuite 1.5.2 runs only on MuJoCo up to 3.9 (from 3.10 on its own controllers call
 ``mj_fullM`` with the old arguments): :data:`ROBOSUITE_RUNS` says whether it runs here.
@@ -14,6 +15,7 @@ robosuite 1.5.2 runs only on MuJoCo up to 3.9 (from 3.10 on its own controllers 
 from __future__ import annotations
 
 import importlib
+import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from types import ModuleType
@@ -104,11 +106,15 @@ SETTINGS = {
 }
 
 
-def make(task: str, seed: int, **settings: Any) -> Any:
-    """robosuite's environment ``task`` on ``seed``, with :data:`SETTINGS` and ``settings``."""
+def make(task: str, seed: int, robots: str | list[str] | None = None, **settings: Any) -> Any:
+    """robosuite's environment ``task`` on ``seed``, with :data:`SETTINGS` and ``settings``.
+
+    ``robots`` replaces the task's own (:attr:`Task.robots`).
+    """
     import robosuite
 
-    return robosuite.make(task, seed=seed, robots=TASKS[task].robots, **SETTINGS, **settings)
+    robots = TASKS[task].robots if robots is None else robots
+    return robosuite.make(task, seed=seed, robots=robots, **SETTINGS, **settings)
 
 
 def robosuite_classes(module: ModuleType) -> list[str]:
@@ -134,26 +140,69 @@ def our_twin(name: str) -> Any:
 
 
 @contextmanager
-def our_objects(task: str) -> Iterator[list[str]]:
+def our_objects(task: str, *, everywhere: bool = False) -> Iterator[list[str]]:
     """Within the block, ``task``'s modules build this library's objects.
 
     Yields the names replaced; each module's own bindings come back afterwards.
+
+    Args:
+        task: The environment.
+        everywhere: Replace the names in every robosuite module imported (after
+            ``task``'s), ``robosuite.models.objects`` and the modules defining the
+            classes included, and robosuite's ``mjcf_utils`` functions and classes by this
+            library's: the global swap a program does by assignment.
 
     Raises:
         LookupError: This library has no twin of a class the modules use.
 
     """
+    for module_name in TASKS[task].modules:
+        importlib.import_module(module_name)
+    replacements = _everywhere() if everywhere else _in_modules(TASKS[task].modules)
     saved: list[tuple[ModuleType, str, Any]] = []
     try:
-        for module_name in TASKS[task].modules:
-            module = importlib.import_module(module_name)
-            for name in robosuite_classes(module):
-                twin = our_twin(name)
-                if twin is None:
-                    raise LookupError(f"mjcf_model.compat has no {name}")
-                saved.append((module, name, getattr(module, name)))
-                setattr(module, name, twin)
+        for module, name, twin in replacements:
+            saved.append((module, name, getattr(module, name)))
+            setattr(module, name, twin)
         yield [name for _, name, _ in saved]
     finally:
         for module, name, value in reversed(saved):
             setattr(module, name, value)
+
+
+def _in_modules(names: tuple[str, ...]) -> list[tuple[ModuleType, str, Any]]:
+    """Each object class (and ``CustomMaterial``) the modules ``names`` bind, with our twin."""
+    found = []
+    for module_name in names:
+        module = importlib.import_module(module_name)
+        for name in robosuite_classes(module):
+            twin = our_twin(name)
+            if twin is None:
+                raise LookupError(f"mjcf_model.compat has no {name}")
+            found.append((module, name, twin))
+    return found
+
+
+def _everywhere() -> list[tuple[ModuleType, str, Any]]:
+    """:func:`_in_modules` for every robosuite module, and its ``mjcf_utils`` names too."""
+    import robosuite.utils.mjcf_utils as their_utils
+
+    from mjcf_model.compat import mjcf_utils as our_utils
+
+    theirs = {
+        id(value): name
+        for name, value in vars(their_utils).items()
+        if callable(value) and getattr(value, "__module__", "") == their_utils.__name__
+    }
+    found = []
+    for module_name, module in sorted(sys.modules.items()):
+        if module_name.partition(".")[0] != "robosuite" or module is None:
+            continue
+        found.extend(_in_modules((module_name,)))
+        for name, value in vars(module).items():
+            if theirs.get(id(value)) == name and name != "CustomMaterial":
+                twin = getattr(our_utils, name, None)
+                if twin is None:
+                    raise LookupError(f"mjcf_model.compat.mjcf_utils has no {name}")
+                found.append((module, name, twin))
+    return found

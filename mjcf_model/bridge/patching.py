@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import copy
 import math
+import re
 import warnings
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
@@ -54,6 +55,7 @@ from mjcf_model.nodes.base import (
 )
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import child_key
+from mjcf_model.serializers.locations import element_at
 from mjcf_model.tree.defaults import ACTUATOR_DEFAULT_TAGS, DefaultClasses
 from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import Value, numbers_of
@@ -171,12 +173,43 @@ def patched(
         outcome = _physical_variant(model, before, after, into)
     if isinstance(outcome, str):
         warnings.warn(
-            f"patched() compiles the model again: {outcome}",
+            f"patched() compiles the model again: {_readable(outcome, after)}",
             MjcfRecompiledWarning,
             stacklevel=2,
         )
         return compiled(after)
     return outcome
+
+
+#: An element named by its index path among element children, as the comparison walks.
+_INDEX_PATH = re.compile(r"\bat \((\d+(?:, \d+)*),?\)")
+
+
+def _readable(message: str, root: AnyElement) -> str:
+    """``message`` with each element it names by index path named by its element path.
+
+    Examples:
+        >>> from mjcf_model import loads
+        >>> model = loads('<mujoco><worldbody><!-- a --><geom name="g"/></worldbody></mujoco>')
+        >>> _readable("<geom> size at (0, 0): '1' -> '2'", model)
+        "<geom> size at /mujoco/worldbody/geom[@name='g']: '1' -> '2'"
+
+    """
+
+    def named(match: re.Match[str]) -> str:
+        current, children_path = root, []
+        for index in (int(part) for part in match.group(1).split(", ")):
+            positions = [i for i, c in enumerate(current.children) if isinstance(c, Element)]
+            if index >= len(positions):
+                return match.group(0)
+            children_path.append(positions[index])
+            child = current.children[positions[index]]
+            assert isinstance(child, Element)
+            current = child
+        found = element_at(root, tuple(children_path))
+        return f"at {found[1]}" if found is not None else match.group(0)
+
+    return _INDEX_PATH.sub(named, message)
 
 
 def _scaled_variant(

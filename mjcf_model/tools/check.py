@@ -73,7 +73,11 @@ class CheckResult:
 
 
 def check_file(
-    path: str | os.PathLike[str], *, inline_includes: bool = False, part: bool = False
+    path: str | os.PathLike[str],
+    *,
+    inline_includes: bool = False,
+    part: bool = False,
+    stage: Callable[[str], object] | None = None,
 ) -> CheckResult:
     """Round-trip one MJCF file and compare the compiled models.
 
@@ -85,6 +89,10 @@ def check_file(
     A file MuJoCo rejects that other files include (:func:`includers_of`), or any
     file when ``part`` is true, is checked as a part for ``<include>``: it must read
     back to the same elements, and every file found including it must compile.
+
+    ``stage`` is told each step as it begins (``"compiling the original with MuJoCo"``...):
+    on a big model, MuJoCo's two compiles take most of the time (a 10,000-body model:
+    14 s each here, against 2 s for the rest).
 
     Examples:
         >>> check_file("/no/such/file.xml").status
@@ -108,6 +116,7 @@ def check_file(
         name,
         lambda: mujoco.MjModel.from_xml_path(name),
         lambda: load(path, inline_includes=inline_includes),
+        stage=stage,
     )
     if result.status == "not-compiled":
         includers = includers_of(Path(path))
@@ -257,14 +266,19 @@ def _checked(
     original: Callable[[], Any],
     loaded: Callable[[], Mujoco],
     beside: str | None = None,
+    stage: Callable[[str], object] | None = None,
 ) -> CheckResult:
     """Compile ``original()``, write ``loaded()`` back, compile that, compare."""
+    told = stage or (lambda _: None)
+    told("compiling the original with MuJoCo")
     try:
         model = original()
     except ValueError as error:
         return CheckResult(path=name, status="not-compiled", message=_rejection(str(error), loaded))
     try:
+        told("reading it and writing it back")
         written = dumps(loaded())
+        told("compiling the written model with MuJoCo and comparing")
         differences = written_differences(model, written, beside or name)
     except MjcfError as error:
         return CheckResult(path=name, status="error", message=str(error))

@@ -100,7 +100,25 @@ def effective_attributes(model: Mujoco, kind: str, name: str) -> list[EffectiveA
                 for attribute, (value, source) in inherited
             )
             return found
-    raise MjcfLookupError(f"no {kind} named {name!r} in the model")
+    raise MjcfLookupError(f"no {kind} named {name!r} in the model; {_names_of_kind(model, kind)}")
+
+
+#: How many names a lookup error lists before it says how many more there are.
+_NAMES_LISTED = 12
+
+
+def _names_of_kind(model: Mujoco, kind: str) -> str:
+    """The names the model's elements of ``kind`` (a tag or a namespace) have, in words."""
+    names: list[str] = []
+    for element, key, _ in keyed_walk(model):
+        for _, namespace, declared in declarations(element, key, base_dir=model.base_dir):
+            if kind in (element.tag, namespace) and declared not in names:
+                names.append(declared)
+    if not names:
+        return f"it has no named {kind}"
+    listed = ", ".join(names[:_NAMES_LISTED])
+    more = f" and {len(names) - _NAMES_LISTED} more" if len(names) > _NAMES_LISTED else ""
+    return f"its {kind} names: {listed}{more}"
 
 
 def _is(element: AnyElement, key: str | None, kind: str, name: str, model: Mujoco) -> bool:

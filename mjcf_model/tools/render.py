@@ -43,7 +43,12 @@ def choose_backend() -> None:
 
 
 def render(
-    model: Mujoco, *, camera: str | None = None, width: int = 640, height: int = 480
+    model: Mujoco,
+    *,
+    camera: str | None = None,
+    width: int = 640,
+    height: int = 480,
+    key: str | None = None,
 ) -> npt.NDArray[np.uint8]:
     """The model drawn in its initial state: an array of (height, width, 3) RGB pixels.
 
@@ -53,10 +58,13 @@ def render(
             looks at the whole model, as MuJoCo's viewer starts.
         width: The picture's width in pixels.
         height: Its height.
+        key: The name of a keyframe to draw the model in (``mj_resetDataKeyframe``)
+            instead of its initial state.
 
     Raises:
         MjcfCompileError: MuJoCo rejects the model.
-        MjcfLookupError: The model has no camera by that name.
+        MjcfLookupError: The model has no camera or keyframe by that name (the
+            message lists those it has).
         MjcfRenderError: No OpenGL backend works (the message says what to install).
 
     """
@@ -66,14 +74,14 @@ def render(
         raise MjcfRenderError(f"{_INSTALL} ({type(error).__name__}: {error})") from None
 
     compiled_model = compiled(model)
-    if (
-        camera is not None
-        and mujoco.mj_name2id(compiled_model, mujoco.mjtObj.mjOBJ_CAMERA, camera) < 0
-    ):
-        raise MjcfLookupError(f"the model has no camera named {camera!r}")
+    if camera is not None:
+        _named(compiled_model, mujoco.mjtObj.mjOBJ_CAMERA, "camera", camera)
     visual = compiled_model.vis.global_
     visual.offwidth, visual.offheight = max(width, visual.offwidth), max(height, visual.offheight)
     data = mujoco.MjData(compiled_model)
+    if key is not None:
+        index = _named(compiled_model, mujoco.mjtObj.mjOBJ_KEY, "keyframe", key)
+        mujoco.mj_resetDataKeyframe(compiled_model, data, index)
     mujoco.mj_forward(compiled_model, data)
     try:
         renderer = mujoco.Renderer(compiled_model, height=height, width=width)
@@ -89,3 +97,17 @@ def render(
     finally:
         renderer.close()
     return pixels
+
+
+def _named(compiled_model: Any, kind: Any, what: str, name: str) -> int:
+    """The id of the ``what`` called ``name``; else :class:`MjcfLookupError` listing names."""
+    import mujoco
+
+    index = int(mujoco.mj_name2id(compiled_model, kind, name))
+    if index >= 0:
+        return index
+    count = {"camera": compiled_model.ncam, "keyframe": compiled_model.nkey}[what]
+    names = [mujoco.mj_id2name(compiled_model, kind, i) for i in range(count)]
+    named = [repr(n) for n in names if n]
+    have = f"its {what}s: {', '.join(named)}" if named else f"it has no named {what}"
+    raise MjcfLookupError(f"the model has no {what} named {name!r}; {have}")

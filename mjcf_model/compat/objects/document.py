@@ -55,14 +55,18 @@ _FACES: BoundedCache[tuple[type, type], type] = BoundedCache(256)
 
 
 def robosuite_face(cls: type) -> type:
-    """``cls`` joined to the robosuite twin its MRO names, once imported; else ``cls`` itself."""
+    """``cls`` joined to the robosuite twin its MRO names, once imported; else ``cls`` itself.
+
+    The twin is robosuite's own class, also where a program replaced robosuite's names by
+    this library's classes (``robosuite.models.objects.BoxObject = BoxObject``):
+    :func:`robosuite_original` finds it.
+    """
     for klass in cls.__mro__:
         home = vars(klass).get("_robosuite_class")
         if not home:
             continue
-        module = sys.modules.get(home[0])
-        theirs = getattr(module, home[1], None) if module is not None else None
-        if not isinstance(theirs, type):
+        theirs = robosuite_original(home)
+        if theirs is None or issubclass(cls, theirs):
             continue
         face = _FACES.get((cls, theirs))
         if face is None:
@@ -74,6 +78,72 @@ def robosuite_face(cls: type) -> type:
             face = _FACES.remember((cls, theirs), type(cls.__name__, (cls, theirs), namespace))
         return face
     return cls
+
+
+#: robosuite's own class by (module, class name), once found.
+_ORIGINALS: dict[tuple[str, str], type] = {}
+
+
+def robosuite_original(home: tuple[str, str]) -> type | None:
+    """The class of robosuite's own that ``home`` (module, class name) names; ``None``: none yet.
+
+    The module's attribute, unless a program put another class there (this library's twin,
+    to swap robosuite's classes everywhere): then the class of that name defined in one of
+    robosuite's modules, found among the imported ones, or among the classes alive.
+
+    Examples:
+        >>> import xml.etree.ElementTree as ET
+        >>> robosuite_original(("xml.etree.ElementTree", "TreeBuilder")) is ET.TreeBuilder
+        True
+        >>> robosuite_original(("no_such_package.module", "Thing")) is None
+        True
+
+    """
+    module = sys.modules.get(home[0])
+    if module is None:
+        return None
+    named = getattr(module, home[1], None)
+    if _original(named, home):
+        _ORIGINALS.setdefault(home, named)
+        return named
+    found = _ORIGINALS.get(home)
+    if found is None:
+        found = _defined_original(home)
+        if found is not None:
+            _ORIGINALS[home] = found
+    return found
+
+
+def _original(candidate: object, home: tuple[str, str]) -> TypeGuard[type]:
+    """Whether ``candidate`` is a class of ``home``'s package, not one of this library's."""
+    package = home[0].partition(".")[0]
+    return (
+        isinstance(candidate, type)
+        and candidate.__name__ == home[1]
+        and candidate.__module__.partition(".")[0] == package
+        and not issubclass(candidate, RobosuiteCompatible)
+    )
+
+
+def _defined_original(home: tuple[str, str]) -> type | None:
+    """The class ``home`` names where its package's modules define it, or among all classes."""
+    package = home[0].partition(".")[0]
+    for name, module in list(sys.modules.items()):
+        if name.partition(".")[0] == package:
+            candidate = getattr(module, home[1], None)
+            if _original(candidate, home) and candidate.__module__ == name:
+                return candidate
+    pending: list[type] = [object]
+    seen: set[type] = set()
+    while pending:  # every module binding replaced: the class is still alive, below object
+        klass = pending.pop()
+        for subclass in type.__subclasses__(klass) if klass is type else klass.__subclasses__():
+            if subclass not in seen:
+                seen.add(subclass)
+                if _original(subclass, home):
+                    return subclass
+                pending.append(subclass)
+    return None
 
 
 def _restore(cls: type[RobosuiteCompatible]) -> RobosuiteCompatible:

@@ -38,10 +38,30 @@ def parser() -> argparse.ArgumentParser:
         prog="mjcf-model",
         description="MuJoCo MJCF files: check, format, diff, compose, inspect and render.",
     )
+    top.add_argument("--version", action="version", version=version_line())
     commands = top.add_subparsers(dest="command", required=True, metavar="VERB")
     for verb in _VERBS:
         verb.add_parsers(commands)
     return top
+
+
+def version_line() -> str:
+    """The version of mjcf-model and of the MuJoCo it runs with (MuJoCo is not imported).
+
+    Examples:
+        >>> version_line().startswith("mjcf-model ")
+        True
+
+    """
+    from importlib.metadata import PackageNotFoundError, version
+
+    def installed(name: str) -> str:
+        try:
+            return version(name)
+        except PackageNotFoundError:
+            return "not installed"
+
+    return f"mjcf-model {installed('mjcf-model')} (MuJoCo {installed('mujoco')})"
 
 
 def main(argv: Sequence[str] | None = None) -> int:

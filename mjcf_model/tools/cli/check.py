@@ -24,7 +24,7 @@ from typing import Any, TextIO
 from mjcf_model.errors import MjcfError
 from mjcf_model.serializers import loads
 from mjcf_model.tools.check import CheckResult, check_file, check_text
-from mjcf_model.tools.cli.common import STDIO, progress, read_stdin
+from mjcf_model.tools.cli.common import STDIO, progress, read_stdin, stages
 from mjcf_model.tools.cli.examples import example_path
 
 __all__ = ["add_parsers"]
@@ -79,9 +79,13 @@ def _check(arguments: argparse.Namespace) -> int:
         if path == STDIO:
             result = _check_stdin()
         else:
-            result = check_file(
-                path, inline_includes=arguments.inline_includes, part=arguments.part
-            )
+            with stages(path, arguments.quiet) as stage:
+                result = check_file(
+                    path,
+                    inline_includes=arguments.inline_includes,
+                    part=arguments.part,
+                    stage=stage,
+                )
         results.append(result)
         if not arguments.quiet:
             _report(result, sys.stdout, verbose=True)

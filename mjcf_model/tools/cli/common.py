@@ -12,7 +12,9 @@ from __future__ import annotations
 
 import argparse
 import sys
+import time
 from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 from pathlib import Path
 from typing import TextIO, TypeVar
 
@@ -54,6 +56,43 @@ class Failed(Exception):
 def add_model_argument(parser: argparse.ArgumentParser) -> None:
     """The ``FILE`` argument of a verb that reads one model (``-`` for standard input)."""
     parser.add_argument("file", metavar="FILE", help="the model (- for stdin)")
+
+
+@contextmanager
+def stages(
+    name: str, quiet: bool, stream: TextIO | None = None
+) -> Iterator[Callable[[str], object]]:
+    r"""A callback that shows the step a long task on ``name`` is at, and the time it took.
+
+    On a terminal (standard error, unless ``quiet``) each step replaces the last on one
+    status line, cleared when the block ends; elsewhere nothing is written.
+
+    Examples:
+        >>> import io
+        >>> class Terminal(io.StringIO):
+        ...     def isatty(self): return True
+        >>> terminal = Terminal()
+        >>> with stages("big.xml", quiet=False, stream=terminal) as stage:
+        ...     stage("compiling")
+        >>> terminal.getvalue().startswith("\r\033[Kbig.xml: compiling (0 s in)")
+        True
+
+    """
+    out = sys.stderr if stream is None else stream
+    if quiet or not out.isatty():
+        yield lambda _: None
+        return
+    start = time.monotonic()
+
+    def show(step: str) -> None:
+        out.write(f"\r\033[K{name}: {step} ({time.monotonic() - start:.0f} s in)")
+        out.flush()
+
+    try:
+        yield show
+    finally:
+        out.write("\r\033[K")
+        out.flush()
 
 
 def progress(items: Sequence[_T], quiet: bool, stream: TextIO | None = None) -> Iterator[_T]:

@@ -26,12 +26,24 @@ def _render(arguments: argparse.Namespace) -> int:
     choose_backend()  # before MuJoCo is imported
 
     model = read_model(arguments.file)
-    pixels = render(model, camera=arguments.camera, width=arguments.width, height=arguments.height)
+    pixels = render(
+        model,
+        camera=arguments.camera,
+        width=arguments.width,
+        height=arguments.height,
+        key=arguments.key,
+    )
     data = png_bytes(pixels)
     if arguments.output == STDIO:
         sys.stdout.buffer.write(data)
     else:
         write_atomically(data, arguments.output)
+        seen = f"camera {arguments.camera!r}" if arguments.camera else "a free camera"
+        state = f"keyframe {arguments.key!r}" if arguments.key else "its initial state"
+        sys.stdout.write(
+            f"wrote {arguments.output} ({arguments.width} x {arguments.height}, "
+            f"from {seen}, in {state})\n"
+        )
     return 0
 
 
@@ -41,7 +53,8 @@ def add_parsers(commands: Any) -> None:
         "render",
         help="draw a model offscreen into a PNG picture",
         description=(
-            "Compile FILE, put it in its initial state and draw it with MuJoCo's renderer "
+            "Compile FILE, put it in its initial state (or a keyframe: --key) and draw it "
+            "with MuJoCo's renderer "
             "into a PNG: from the named camera, or from a free camera that sees the whole "
             "model. Headless machines draw through EGL or OSMesa (set MUJOCO_GL to choose)."
         ),
@@ -51,6 +64,9 @@ def add_parsers(commands: Any) -> None:
         "-o", "--output", required=True, metavar="OUT.png", help="the picture (- for stdout)"
     )
     render.add_argument("--camera", metavar="NAME", help="a camera of the model")
+    render.add_argument(
+        "--key", metavar="NAME", help="draw the model in this keyframe, not its initial state"
+    )
     render.add_argument("--width", type=int, default=640, help="width in pixels (640)")
     render.add_argument("--height", type=int, default=480, help="height in pixels (480)")
     render.set_defaults(run=guarded(_render))

@@ -78,11 +78,30 @@ def _model(node: AnyElement) -> Mujoco:
 
 def _checked(model: AnyElement) -> Mujoco:
     """``model``, once MuJoCo has compiled it (else :class:`Failed` with MuJoCo's reason)."""
+    _compiled_sizes(model)
+    return _model(model)
+
+
+def _compiled_sizes(model: AnyElement) -> str:
+    """What MuJoCo compiles ``model`` to, in words (else :class:`Failed` with its reason)."""
     try:
-        compiled(_model(model))
+        compiled_model = compiled(_model(model))
     except MjcfCompileError as error:
         raise Failed(f"{error.for_command_line()}; the result is not written") from None
-    return _model(model)
+    counts = (
+        (compiled_model.nbody - 1, "bodies"),
+        (compiled_model.njnt, "joints"),
+        (compiled_model.ngeom, "geoms"),
+        (compiled_model.nu, "actuators"),
+        (compiled_model.nkey, "keyframes"),
+    )
+    return ", ".join(f"{count} {what}" for count, what in counts)
+
+
+def _say_written(target: str, what: str) -> None:
+    """Tell the user what was written, unless the model itself went to standard output."""
+    if target != STDIO:
+        sys.stdout.write(f"wrote {target}: {what}\n")
 
 
 def _compose(arguments: argparse.Namespace) -> int:
@@ -116,7 +135,14 @@ def _compose(arguments: argparse.Namespace) -> int:
             euler=euler,
             keyframes=arguments.keyframes,
         )
-    write_model(_checked(scene), arguments.output)
+    sizes = _compiled_sizes(scene)
+    write_model(scene, arguments.output)
+    attached = sum(len(children) for _, _, children in runs)
+    _say_written(
+        arguments.output,
+        f"{attached} part{'s' if attached != 1 else ''} attached to {path}; "
+        f"MuJoCo compiles it: {sizes}",
+    )
     if arguments.export:
         _export(scene, arguments.export)
     return 0
@@ -124,7 +150,10 @@ def _compose(arguments: argparse.Namespace) -> int:
 
 def _prefix(arguments: argparse.Namespace) -> int:
 
-    write_model(_checked(prefixed(read_model(arguments.file), arguments.prefix)), arguments.output)
+    model = prefixed(read_model(arguments.file), arguments.prefix)
+    sizes = _compiled_sizes(model)
+    write_model(_model(model), arguments.output)
+    _say_written(arguments.output, f"{arguments.file} prefixed {arguments.prefix!r}: {sizes}")
     return 0
 
 
@@ -132,7 +161,9 @@ def _scale(arguments: argparse.Namespace) -> int:
 
     factor = arguments.factor[0] if len(arguments.factor) == 1 else arguments.factor
     model = scaled(read_model(arguments.file), factor, mass=arguments.mass)
-    write_model(_checked(model), arguments.output)
+    sizes = _compiled_sizes(model)
+    write_model(_model(model), arguments.output)
+    _say_written(arguments.output, f"{arguments.file} scaled by {factor}: {sizes}")
     return 0
 
 

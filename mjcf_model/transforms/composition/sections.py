@@ -21,7 +21,7 @@ import warnings
 from collections.abc import Collection, Mapping, Sequence
 from pathlib import Path
 
-from mjcf_model.errors import MjcfDroppedSettingWarning, MjcfValueError
+from mjcf_model.errors import Advice, MjcfDroppedSettingWarning, MjcfValueError
 from mjcf_model.nodes.base import AnyElement, Element, Node, attribute_items
 from mjcf_model.nodes.keyframe import Keyframe
 from mjcf_model.nodes.registry import CLASS_BY_KEY
@@ -83,10 +83,15 @@ def check_collisions(declared: dict[str, set[str]], theirs: Mapping[str, Collect
         listed = "; ".join(
             f"{namespace}: {', '.join(names)}" for namespace, names in clashes.items()
         )
-        merge = " (or keys of one name with keyframes='merged')" if "key" in clashes else ""
+        merged = "key" in clashes
         raise MjcfValueError(
-            f"the child declares names the parent already has ({listed}); "
-            f"attach it with a prefix{merge}"
+            f"the child declares names the parent already has ({listed})",
+            advice=Advice(
+                "attach it with a prefix"
+                + (" (or keys of one name with keyframes='merged')" if merged else ""),
+                "give the part a prefix (FILE:PREFIX)"
+                + (" (or keys of one name with --keyframes merged)" if merged else ""),
+            ),
         )
 
 

@@ -9,6 +9,7 @@ cannot map falls back to a full compile and says so.
 from __future__ import annotations
 
 import copy
+import re
 import warnings
 from pathlib import Path
 from typing import Any
@@ -28,7 +29,7 @@ from mjcf_model import (
 )
 from mjcf_model.bridge.compare import model_differences
 from mjcf_model.bridge.patching import FIELDS
-from mjcf_model.nodes.base import AnyElement, attribute_items, get_attribute
+from mjcf_model.nodes.base import AnyElement, attribute_items, attribute_text, get_attribute
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.serializers import load, loads
 from mjcf_model.strategies import models
@@ -202,15 +203,20 @@ def test_a_model_with_a_replicated_geom_patches_colors_elsewhere() -> None:
 
 def test_a_change_without_an_array_compiles_again_and_says_which() -> None:
     """A geom size has no one-for-one array: a full compile, with a warning naming it."""
-    before = loads('<mujoco><worldbody><geom name="g" size="0.1"/></worldbody></mujoco>')
+    before = loads(
+        '<mujoco><worldbody><!-- floor --><geom size="1"/><geom name="g" size="0.1"/>'
+        "</worldbody></mujoco>"
+    )
 
     def bigger(element: AnyElement, key: str | None, ancestors: Any) -> AnyElement:
-        return with_attributes(element, {"size": (0.2,)}) if key == "body/geom" else element
+        named = key == "body/geom" and attribute_text(element, "name") == "g"
+        return with_attributes(element, {"size": (0.2,)}) if named else element
 
     after = map_elements(bigger, before)
-    with pytest.warns(MjcfRecompiledWarning, match=r"<geom> size at \(0, 0\): "):
+    where = re.escape("<geom> size at /mujoco/worldbody/geom[@name='g']: ")
+    with pytest.warns(MjcfRecompiledWarning, match=where):
         result = patched(compiled(before), before, after)
-    assert result.geom_size[0][0] == pytest.approx(0.2)
+    assert result.geom_size[1][0] == pytest.approx(0.2)
 
 
 def test_unchanged_models_and_the_input_model_are_left_alone() -> None:

@@ -22,3 +22,19 @@ def test_info_summary_and_element(tmp_path: Path) -> None:
     assert element.stdout.splitlines()[-1] == "rgba = 1 0 0 1 (class red)"
     assert run("info", str(arm), "--element", "upper").returncode == 2
     assert run("info", "-", stdin=UNTIDY).stdout == run("info", str(arm)).stdout
+
+
+def test_an_unknown_element_lists_the_names_there_are(tmp_path: Path) -> None:
+    """``--element KIND:NAME`` for a name the model lacks lists its names of that kind."""
+    many = "".join(f'<geom name="g{i}" size="0.1"/>' for i in range(15))
+    model = tmp_path / "many.xml"
+    model.write_text(f"<mujoco><worldbody>{many}</worldbody></mujoco>")
+    done = run("info", str(model), "--element", "geom:nosuch")
+    listed = ", ".join(f"g{i}" for i in range(12))
+    assert done.returncode == 2
+    assert done.stderr == (
+        f"mjcf-model info: no geom named 'nosuch' in the model; its geom names: {listed} and "
+        "3 more\n"
+    )
+    sites = run("info", str(model), "--element", "site:s")
+    assert sites.stderr.endswith("no site named 's' in the model; it has no named site\n")

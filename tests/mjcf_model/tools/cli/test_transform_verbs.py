@@ -197,6 +197,54 @@ def test_compose_failure_writes_nothing(tmp_path: Path) -> None:
     assert unknown.returncode == 2 and "nowhere" in unknown.stderr and not scene.exists()
 
 
+def test_what_is_written_is_reported_in_command_line_words(tmp_path: Path) -> None:
+    """compose, prefix and scale say what they wrote and what MuJoCo compiles it to.
+
+    The counts are MuJoCo's; a name clash is advised in options (FILE:PREFIX,
+    --keyframes), not Python arguments; nothing is said when the model itself goes to
+    standard output.
+    """
+    files = _files(tmp_path)
+    scene_path = tmp_path / "scene.xml"
+    arm = files["arm"]
+    words = [f"{arm}:left_", "pos=-0.5,0,0", f"{arm}:right_", "pos=0.5,0,0"]
+    done = run("compose", str(scene_path), str(files["base"]), *words)
+    assert done.returncode == 0, done.stderr
+    scene = mujoco.MjModel.from_xml_path(str(scene_path))
+    counts = (
+        f"{scene.nbody - 1} bodies, {scene.njnt} joints, {scene.ngeom} geoms, "
+        f"{scene.nu} actuators, {scene.nkey} keyframes"
+    )
+    assert done.stdout == (
+        f"wrote {scene_path}: 2 parts attached to {files['base']}; MuJoCo compiles it: {counts}\n"
+    )
+    renamed = tmp_path / "renamed.xml"
+    prefixed = run("prefix", str(arm), "l_", "-o", str(renamed))
+    assert prefixed.returncode == 0 and prefixed.stdout.startswith(
+        f"wrote {renamed}: {arm} prefixed 'l_': "
+    )
+    assert run("prefix", str(arm), "l_").stdout.startswith("<mujoco")  # the model alone
+    big = tmp_path / "big.xml"
+    scaled = run("scale", str(arm), "--factor", "2", "-o", str(big))
+    assert scaled.stdout.startswith(f"wrote {big}: {arm} scaled by 2.0: ")
+    clash = run("compose", str(tmp_path / "clash.xml"), str(arm), str(arm))
+    assert clash.returncode == 2
+    assert "give the part a prefix (FILE:PREFIX)" in clash.stderr
+    assert "(or keys of one name with --keyframes merged)" in clash.stderr
+    assert "keyframes='merged'" not in clash.stderr and "attach it with" not in clash.stderr
+
+
+def test_version_names_this_package_and_mujoco() -> None:
+    """--version prints the installed versions of mjcf-model and MuJoCo."""
+    import importlib.metadata
+
+    done = run("--version")
+    assert done.returncode == 0
+    assert done.stdout == (
+        f"mjcf-model {importlib.metadata.version('mjcf-model')} (MuJoCo {mujoco.__version__})\n"
+    )
+
+
 def test_prefix_and_scale_to_stdout(tmp_path: Path) -> None:
     """Prefix renames what the model declares; scale doubles lengths, as MuJoCo compiles."""
     arm = tmp_path / "arm.xml"

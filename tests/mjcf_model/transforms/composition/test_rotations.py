@@ -99,3 +99,29 @@ def test_degrees_read_back_as_exactly_the_radians_when_rounding_down_is_needed()
         f'range="0 {degrees!r}"/><geom size="1"/></body></worldbody></mujoco>'
     )
     assert model.jnt_range[0, 1] == radians
+
+
+@pytest.mark.parametrize("radians", [2.0, -1.0472, 0.5236, 2.8973, 1.57])
+def test_degrees_are_written_with_the_fewest_digits_that_compile_to_the_radians(
+    radians: float,
+) -> None:
+    """The degrees written are as short as the identical model allows.
+
+    The text written (Python's shortest ``repr`` of the double found) compiles to exactly
+    the radians, and every text with fewer significant digits compiles to other radians:
+    MuJoCo keeps joint ranges as doubles, so ``-60.0001403060998`` stands for ``-1.0472``.
+    """
+    degrees = in_unit(radians, True, joint_radians)
+    written = repr(degrees)
+    digits = len(written.lstrip("-").replace(".", "").lstrip("0"))
+
+    def compiled_range(text: str) -> float:
+        model = mujoco.MjModel.from_xml_string(
+            '<mujoco><compiler angle="degree"/><worldbody><body><joint limited="true" '
+            f'range="{text} 1000"/><geom size="1"/></body></worldbody></mujoco>'
+        )
+        return float(model.jnt_range[0, 0])
+
+    assert compiled_range(written) == radians
+    shorter = {f"{degrees:.{count}g}" for count in range(1, digits)}
+    assert shorter and all(compiled_range(text) != radians for text in shorter)
