@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import mujoco
@@ -13,12 +14,14 @@ from mjcf_model import (
     Geom,
     Include,
     Joint,
+    MjcfAssetError,
     MjcfIncludeCycleError,
     MjcfIncludeError,
     Site,
     Worldbody,
+    compiled,
 )
-from mjcf_model.bridge.compare import model_differences
+from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.serializers import dumps, load, loads
 from tests.conftest import FIXTURES
 from tests.support.fixture_checks import comments, compile_round_trip, names, section, walk
@@ -206,3 +209,66 @@ def test_include_name_too_long_is_an_include_error(tmp_path: Path) -> None:
     with pytest.raises(MjcfIncludeError) as caught:
         load(main, inline_includes=True)
     assert caught.value.line == 1 and caught.value.path == "/mujoco/include"
+
+
+#: A tetrahedron of edge ``{size}`` in OBJ text.
+_TETRAHEDRON = (
+    "v 0 0 0\nv {size} 0 0\nv 0 {size} 0\nv 0 0 {size}\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
+)
+
+
+@pytest.mark.parametrize("strippath", ["false", "true"])
+def test_an_included_part_from_another_folder_reads_its_mesh_from_the_main_meshdir(
+    tmp_path: Path, strippath: str
+) -> None:
+    """An included part's mesh is read from the main file's meshdir, not from beside it.
+
+    The part (another folder, a mesh of its name beside it) names a mesh the main
+    file's meshdir also holds: MuJoCo reads the meshdir's, and so do ``compiled``,
+    ``inline_includes`` and the inlined text written beside the main file. Without it,
+    MuJoCo looks beside the part, as mjcf-model does (with ``strippath``, neither finds it).
+    """
+    main, parts = tmp_path / "main", tmp_path / "parts"
+    (main / "meshes").mkdir(parents=True)
+    parts.mkdir()
+    (parts / "tet.obj").write_text(_TETRAHEDRON.format(size=1))
+    (main / "meshes" / "tet.obj").write_text(_TETRAHEDRON.format(size=2))
+    (parts / "arm.xml").write_text(
+        '<mujoco><asset><mesh name="m" file="tet.obj"/></asset><worldbody><body><freejoint/>'
+        '<geom type="mesh" mesh="m"/></body></worldbody></mujoco>'
+    )
+    scene = main / "scene.xml"
+    scene.write_text(
+        f'<mujoco><compiler meshdir="meshes" strippath="{strippath}"/>'
+        '<include file="../parts/arm.xml"/></mujoco>'
+    )
+    theirs = mujoco.MjModel.from_xml_path(str(scene))
+    big = mujoco.MjModel.from_xml_string(
+        '<mujoco><asset><mesh name="m" file="tet.obj"/></asset><worldbody><body><freejoint/>'
+        '<geom type="mesh" mesh="m"/></body></worldbody></mujoco>',
+        {"tet.obj": _TETRAHEDRON.format(size=2).encode()},
+    )
+    assert theirs.mesh_vert.tolist() == big.mesh_vert.tolist()  # the meshdir's, twice as big
+    inlined = load(scene, inline_includes=True)
+    (main / "inlined.xml").write_text(dumps(inlined))
+    for ours in (
+        compiled(load(scene)),
+        compiled(inlined),
+        mujoco.MjModel.from_xml_path(str(main / "inlined.xml")),
+    ):
+        assert model_differences(theirs, ours, ignore=path_fields()) == []
+    # Without the meshdir's file MuJoCo, given the main file's absolute path, looks beside
+    # the part (unless strippath drops the folders); compiled(load()) does the same.
+    (main / "meshes" / "tet.obj").unlink()
+    mujoco.mj_clearCache(mujoco.mj_getCache())  # else MuJoCo serves the decoded mesh again
+    if strippath == "false":
+        theirs = mujoco.MjModel.from_xml_path(str(scene.resolve()))
+        assert theirs.mesh_vert.tolist() != big.mesh_vert.tolist()  # the part's own mesh
+        for ours in (compiled(load(scene)), compiled(load(scene, inline_includes=True))):
+            assert model_differences(theirs, ours, ignore=path_fields()) == []
+    else:
+        with pytest.raises(ValueError, match=re.escape("meshes/tet.obj")):
+            mujoco.MjModel.from_xml_path(str(scene.resolve()))
+        missing = re.escape(f"cannot read {str(main / 'meshes' / 'tet.obj')!r}")
+        with pytest.raises(MjcfAssetError, match=missing):
+            compiled(load(scene))

@@ -19,7 +19,8 @@ and :func:`scene_problems` reports, stage by stage, what keeps it from being rig
 4. ``files``: the scene dumped into a fresh folder, and exported then moved, compile to
    the same model;
 5. ``merged``: built with ``keyframes="merged"``, a key name the copies share is one key
-   that sets every copy from its own key (the box at its placed initial pose).
+   that sets every copy from its own key (the box at its placed initial pose), and the
+   copies' unnamed keys are one key per place among them.
 
 MuJoCo on the parts alone is the referee: the placements come from the floor compiled
 with probe bodies (``MjSpec``), the poses from each part compiled on its own. Run it
@@ -384,7 +385,7 @@ def _count_problems(parts: list[_Placed], scene: Any, *, separate: bool) -> list
     expected = {count: sum(getattr(p.alone, count) for p in parts) for count in COUNTS}
     expected["nbody"] = 1 + sum(p.alone.nbody - 1 for p in parts)
     names = [name for p in parts for name in p.key_names()]
-    unnamed = names.count("")
+    unnamed = max((p.key_names().count("") for p in parts), default=0)  # merged by place
     expected["nkey"] = len(names) if separate else len({n for n in names if n}) + unnamed
     for count, value in expected.items():
         if getattr(scene, count) != value:
@@ -544,7 +545,11 @@ def _merged_problems(
     parts: list[_Placed],
     attach: Attach,
 ) -> list[str]:
-    """With ``keyframes="merged"``, a key name sets every part from its own key of that name."""
+    """With ``keyframes="merged"``, a key name sets every part from its own key of that name.
+
+    Unnamed keys go by place: the scene's n-th unnamed key sets each part from the
+    part's n-th unnamed key, or its placed initial state where it has fewer.
+    """
     try:
         together = compiled(_build(robot.model(), places, thing, attach, keyframes="merged"))
     except Exception as error:  # the check reports every failure, whatever its kind
@@ -560,6 +565,13 @@ def _merged_problems(
             part.key_names().index(name) if name in part.key_names() else None for part in parts
         ]
         problems += _state_problems(parts, together, key, chosen, f"merged key {name!r}")
+    unnamed = [k for k in range(together.nkey) if together.key(k).name == ""]
+    for place, key in enumerate(unnamed):  # each part's unnamed keys, by their place
+        chosen = [
+            ([i for i, n in enumerate(part.key_names()) if not n][place:] or [None])[0]
+            for part in parts
+        ]
+        problems += _state_problems(parts, together, key, chosen, f"merged unnamed key {place}")
     return problems
 
 

@@ -104,7 +104,9 @@ def attach(
         keyframes: ``"separate"`` keeps the child's keys as keys of their own
             (under their prefixed names); ``"merged"`` makes a child key whose name
             (before prefixing) a parent key has part of that key, so one ``home``
-            sets every part.
+            sets every part; unnamed keys merge by their place among the unnamed
+            keys (the child's first with the parent's first), and a merged key keeps
+            the parent's ``time`` unless that is zero.
 
     At a frame or a site the child's world is appended to the body holding it
     (or the world), inside unnamed ``<frame>`` elements that copy the pose of

@@ -20,7 +20,10 @@ written whole, part by part:
 With ``keyframes="separate"`` (the default) each part's keys keep their
 (prefixed) names; with ``keyframes="merged"`` a child's key whose name (before
 prefixing) a key of the parent has becomes part of that key, so one ``home``
-can set a whole fleet; unnamed keys are never merged.
+can set a whole fleet, and unnamed keys (no name, or an empty one) merge by their
+place among the unnamed keys: the child's first unnamed key joins the parent's first,
+and so on (MuJoCo names keys by name or index). A merged key's ``time`` is the
+parent's, unless the parent's is zero: then the child's.
 
 >>> from mjcf_model import loads
 >>> world = loads('<mujoco><worldbody><body><joint type="slide" ref="0.2"/>'
@@ -187,10 +190,14 @@ class SceneKeys:
         names, nodes = _padded(names, len(part.keys)), _padded(nodes, len(part.keys))
         own = [_name(key) for key in names]
         taken: set[int] = set()
+        unnamed = iter([i for i, n in enumerate(own) if n is None])
         for keyed in self.keys:
             match = None
-            if policy == "merged" and keyed.name is not None and keyed.name in own:
+            if policy == "merged" and keyed.name is None:  # by place among the unnamed
+                match = next(unnamed, None)
+            elif policy == "merged" and keyed.name in own:
                 match = next(i for i, n in enumerate(own) if n == keyed.name and i not in taken)
+            if match is not None:
                 taken.add(match)
             theirs = part.initial if match is None else part.keys[match]
             keyed.state = self._spliced(keyed.state, theirs)

@@ -160,7 +160,7 @@ def test_free_joint_and_mocap_move_with_the_placement() -> None:
     assert np.allclose(scene.qpos0[:3], placed_pos) and np.allclose(scene.qpos0[3:7], placed_quat)
 
 
-def test_merged_keys_set_every_part_and_unnamed_keys_stay_apart() -> None:
+def test_merged_keys_set_every_part() -> None:
     """``keyframes="merged"``: one ``home`` for parent and two arms; the unnamed key stays."""
     parent, arm = loads(PARENT_KEYFRAMES), loads(ARM_KEYFRAMES)
     scene_model = attach(parent, arm, prefix="a_", keyframes="merged")
@@ -275,7 +275,7 @@ def test_merged_keys_match_by_name_and_new_names_stay_unprefixed() -> None:
     """Two arms in one call: ``home`` joins the parent's, ``solo``/``extra`` join each other."""
     scene, parent, alone = _two_arms_merged()
     names = [scene.key(k).name for k in range(scene.nkey)]
-    assert sorted(names) == ["", "", "", "extra", "home", "solo"]
+    assert sorted(names) == ["", "extra", "home", "solo"]
     for name in ("home", "solo", "extra"):
         own = alone.key(name).id
         theirs = parent.key(name).id if name == "home" else None
@@ -290,21 +290,57 @@ def test_merged_keys_match_by_name_and_new_names_stay_unprefixed() -> None:
         )
 
 
-def test_keys_named_empty_are_never_merged() -> None:
-    """``name=""`` keys of parent and arms stay three keys, each setting only its own part."""
+def test_unnamed_keys_merge_by_their_place_among_the_unnamed() -> None:
+    """The ``name=""`` keys of parent and arms become one key.
+
+    It sets every part by the part's own unnamed key (MuJoCo names keys by name or index).
+    """
     scene, parent, alone = _two_arms_merged()
     unnamed = [k for k in range(scene.nkey) if scene.key(k).name == ""]
-    assert len(unnamed) == 3
-    parts = {"": (parent, "yaw"), "a_": (alone, "shoulder"), "b_": (alone, "shoulder")}
-    for row, owner in zip(unnamed, parts, strict=True):
-        _check(
-            scene,
-            row,
-            {
-                prefix: (model, joint, _unnamed(model) if prefix == owner else None)
-                for prefix, (model, joint) in parts.items()
-            },
-        )
+    assert len(unnamed) == 1
+    _check(
+        scene,
+        unnamed[0],
+        {
+            "": (parent, "yaw", _unnamed(parent)),
+            "a_": (alone, "shoulder", _unnamed(alone)),
+            "b_": (alone, "shoulder", _unnamed(alone)),
+        },
+    )
+
+
+def test_a_fleet_of_a_robot_whose_only_key_has_no_name_gets_one_key() -> None:
+    """Two copies of an arm whose one key is unnamed, merged into an empty world: one key.
+
+    It sets both copies as the arm's key sets the arm (a held-out Menagerie arm's case);
+    separate keys give one key per copy, each leaving the other copy at ``qpos0``.
+    """
+    arm_text = ARM_KEYFRAMES.replace('<key name="home"', "<key")
+    arm, world = loads(arm_text), loads("<mujoco/>")
+    alone = mujoco.MjModel.from_xml_string(arm_text)
+    pair = [(arm, "a_"), (arm, "b_")]
+    merged = compiled(attach_all(world, pair, keyframes="merged"))
+    assert merged.nkey == 1
+    for prefix in ("a_", "b_"):
+        assert _joint_values(merged, merged.key(0).qpos, prefix + "a0")[0] == alone.key(0).qpos[0]
+    assert merged.key(0).ctrl.tolist() == [0.9, 0.9] and merged.key(0).time[0] == 2.0
+    separate = compiled(attach_all(world, pair))
+    assert separate.nkey == 2
+    assert _joint_values(separate, separate.key(0).qpos, "b_a0")[0] == alone.qpos0[0]
+
+
+@pytest.mark.parametrize(("parent_time", "expected"), [("1.5", 1.5), ("0", 2.0)])
+def test_a_merged_key_keeps_the_parents_time_unless_it_is_zero(
+    parent_time: str, expected: float
+) -> None:
+    """Parent and child both set ``time`` on ``home``: the parent's wins; a zero gives way."""
+    parent_text = PARENT_KEYFRAMES.replace(
+        '<key name="home" qpos', f'<key name="home" time="{parent_time}" qpos'
+    )
+    scene = compiled(
+        attach(loads(parent_text), loads(ARM_KEYFRAMES), prefix="a_", keyframes="merged")
+    )
+    assert scene.key("home").time[0] == expected
 
 
 def _unnamed(model: mujoco.MjModel) -> int:
