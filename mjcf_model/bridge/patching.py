@@ -28,7 +28,6 @@ from __future__ import annotations
 
 import copy
 import math
-import re
 import warnings
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
@@ -181,12 +180,10 @@ def patched(
     return outcome
 
 
-#: An element named by its index path among element children, as the comparison walks.
-_INDEX_PATH = re.compile(r"\bat \((\d+(?:, \d+)*),?\)")
-
-
 def _readable(message: str, root: AnyElement) -> str:
-    """``message`` with each element it names by index path named by its element path.
+    """``message`` with each element it names by index path (``at (0, 2)``) named by path.
+
+    The index path counts element children only, as the comparison walks them.
 
     Examples:
         >>> from mjcf_model import loads
@@ -195,21 +192,33 @@ def _readable(message: str, root: AnyElement) -> str:
         "<geom> size at /mujoco/worldbody/geom[@name='g']: '1' -> '2'"
 
     """
+    pieces, rest = [], message
+    while (start := rest.find("at (")) >= 0:
+        end = rest.find(")", start)
+        inside = rest[start + 4 : end].rstrip(",").split(", ") if end > start else []
+        where = _element_path(root, inside) if all(p.isdigit() for p in inside) else None
+        if where is None:
+            pieces.append(rest[: start + 4])
+            rest = rest[start + 4 :]
+            continue
+        pieces.append(rest[:start] + f"at {where}")
+        rest = rest[end + 1 :]
+    return "".join(pieces) + rest
 
-    def named(match: re.Match[str]) -> str:
-        current, children_path = root, []
-        for index in (int(part) for part in match.group(1).split(", ")):
-            positions = [i for i, c in enumerate(current.children) if isinstance(c, Element)]
-            if index >= len(positions):
-                return match.group(0)
-            children_path.append(positions[index])
-            child = current.children[positions[index]]
-            assert isinstance(child, Element)
-            current = child
-        found = element_at(root, tuple(children_path))
-        return f"at {found[1]}" if found is not None else match.group(0)
 
-    return _INDEX_PATH.sub(named, message)
+def _element_path(root: AnyElement, indices: list[str]) -> str | None:
+    """The element path of the element at ``indices`` among element children; ``None``: none."""
+    current, children_path = root, []
+    for index in map(int, indices):
+        positions = [i for i, c in enumerate(current.children) if isinstance(c, Element)]
+        if index >= len(positions):
+            return None
+        children_path.append(positions[index])
+        child = current.children[positions[index]]
+        assert isinstance(child, Element)
+        current = child
+    found = element_at(root, tuple(children_path))
+    return found[1] if found is not None and indices else None
 
 
 def _scaled_variant(

@@ -16,6 +16,7 @@ import argparse
 import os
 import sys
 from collections.abc import Sequence
+from importlib.metadata import PackageNotFoundError, version
 
 from mjcf_model.tools.cli import check as check
 from mjcf_model.tools.cli import diff as diff
@@ -53,7 +54,6 @@ def version_line() -> str:
         True
 
     """
-    from importlib.metadata import PackageNotFoundError, version
 
     def installed(name: str) -> str:
         try:

@@ -11,8 +11,11 @@ Example:
     ...     '<mujoco><worldbody><body name="cup"><geom size="0.1"/></body></worldbody></mujoco>')
     >>> scene = str(folder / "scene.xml")
     >>> cup = str(folder / "cup.xml")
-    >>> main(["compose", scene, cup, f"{cup}:b_", "pos=0,-0.5,0"])  # b_cup half a metre to -y
-    0
+    >>> import contextlib, io
+    >>> with contextlib.redirect_stdout(io.StringIO()) as said:  # b_cup half a metre to -y
+    ...     status = main(["compose", scene, cup, f"{cup}:b_", "pos=0,-0.5,0"])
+    >>> status, said.getvalue().split(": ", 2)[1] == f"1 part attached to {cup}; MuJoCo compiles it"
+    (0, True)
     >>> from mjcf_model import load
     >>> world = load(scene).worldbody
     >>> [body.name for body in world.bodies], [body.name for body in world.frames[-1].bodies]

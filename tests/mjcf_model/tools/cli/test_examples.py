@@ -55,5 +55,7 @@ def test_readme_main_job_command_runs_as_written(tmp_path: Path) -> None:
         ["bash", "-c", command], cwd=tmp_path, capture_output=True, text=True, check=False, env=env
     )
     assert done.returncode == 0, done.stderr
-    assert done.stdout.startswith("model: workcell\n")
+    written, info = done.stdout.split("\n", 1)
+    assert written.startswith("wrote demo/scene.xml: 2 parts attached to demo/workcell/")
+    assert info.startswith("model: workcell\n")
     assert (tmp_path / "demo" / "scene.png").read_bytes().startswith(b"\x89PNG")
