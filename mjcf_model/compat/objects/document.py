@@ -82,6 +82,8 @@ def robosuite_face(cls: type) -> type:
 
 #: robosuite's own class by (module, class name), once found.
 _ORIGINALS: dict[tuple[str, str], type] = {}
+#: How many modules were imported when robosuite's own class was last looked for in vain.
+_SEARCHED: dict[tuple[str, str], int] = {}
 
 
 def robosuite_original(home: tuple[str, str]) -> type | None:
@@ -107,7 +109,10 @@ def robosuite_original(home: tuple[str, str]) -> type | None:
         _ORIGINALS.setdefault(home, named)
         return named
     found = _ORIGINALS.get(home)
-    if found is None:
+    # Another class under that name (a swap): look for robosuite's own, once per set of
+    # imported modules (a class robosuite lacks is not looked for at every isinstance).
+    if found is None and named is not None and _SEARCHED.get(home) != len(sys.modules):
+        _SEARCHED[home] = len(sys.modules)
         found = _defined_original(home)
         if found is not None:
             _ORIGINALS[home] = found
@@ -137,7 +142,8 @@ def _defined_original(home: tuple[str, str]) -> type | None:
     seen: set[type] = set()
     while pending:  # every module binding replaced: the class is still alive, below object
         klass = pending.pop()
-        for subclass in type.__subclasses__(klass) if klass is type else klass.__subclasses__():
+        subclasses: list[type] = type.__subclasses__(klass)  # metaclasses' too
+        for subclass in subclasses:
             if subclass not in seen:
                 seen.add(subclass)
                 if _original(subclass, home):

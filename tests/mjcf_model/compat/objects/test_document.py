@@ -6,6 +6,7 @@ import copy
 import pickle
 import subprocess
 import sys
+import types
 import xml.etree.ElementTree as ET
 from typing import Any
 
@@ -167,3 +168,29 @@ def test_object_merge_assets_matches() -> None:
         mine.merge_assets(other)
     assert_same_tree(mine.asset, theirs.asset)
     assert_view_matches_model(mine)
+
+
+def test_robosuites_own_class_is_found_after_a_swap_and_looked_for_once_in_vain(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A module name bound to another class: the original is found where it is defined.
+
+    A class the package lacks is looked for once per set of imported modules.
+    """
+    from mjcf_model.compat.objects import document
+
+    swapped = types.ModuleType("xml.swapped_home")
+    swapped.TreeBuilder = type("TreeBuilder", (document.RobosuiteCompatible,), {})
+    swapped.Missing = type("Missing", (document.RobosuiteCompatible,), {})
+    monkeypatch.setitem(sys.modules, "xml.swapped_home", swapped)
+    assert document.robosuite_original(("xml.swapped_home", "TreeBuilder")) is ET.TreeBuilder
+    searches: list[tuple[str, str]] = []
+    real = document._defined_original
+    monkeypatch.setattr(
+        document, "_defined_original", lambda home: searches.append(home) or real(home)
+    )
+    for _ in range(3):
+        assert document.robosuite_original(("xml.swapped_home", "Missing")) is None
+    assert searches == [("xml.swapped_home", "Missing")]
+    assert document.robosuite_original(("xml.swapped_home", "Absent")) is None
+    assert searches == [("xml.swapped_home", "Missing")]  # no such name: nothing to look for
