@@ -1,14 +1,26 @@
-"""Tests of the documentation site's hooks (``docs/hooks.py``): the node fields page."""
+"""Tests of the documentation: the site's hooks (``docs/hooks.py``) and every example.
+
+The ``>>>`` examples of the guide run as doctests (``--doctest-glob``); the ``python``
+blocks of the README and of each guide page run here, as a reader runs them.
+"""
 
 from __future__ import annotations
 
 import importlib.util
+import shutil
+import subprocess
+import sys
+from pathlib import Path
 from types import ModuleType
 
 import attrs
+import mujoco
+import pytest
 
 from mjcf_model.nodes.node_info import BASE_FIELDS, xml_name
 from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.tools.cli.examples import examples_folder
+from tests.conftest import MUJOCO_VERSION
 from tests.test_packaging import source_tree
 
 
@@ -54,3 +66,77 @@ def test_sphinx_roles_in_rendered_docstrings_become_plain_code() -> None:
     html = "Use :func:<code>attrs.evolve</code>, :py:class:<code>Geom</code>; ratio 1:2."
     plain = "Use <code>attrs.evolve</code>, <code>Geom</code>; ratio 1:2."
     assert hooks.on_page_content(html) == plain
+
+
+#: What the script of a page runs after its blocks: each test function they define, as
+#: pytest would (the property-testing example defines one).
+_RUN_DEFINED_TESTS = """
+for _name, _function in list(globals().items()):
+    if _name.startswith("test_") and callable(_function):
+        _function()
+"""
+
+
+def python_blocks(text: str) -> list[str]:
+    r"""The page's fenced ``python`` blocks that start a line, in order.
+
+    Examples:
+        >>> python_blocks("a\n```python\nx = 1\n```\n```sh\nls\n```\n")
+        ['x = 1\n']
+
+    """
+    blocks, current = [], None
+    for line in text.splitlines(keepends=True):
+        if current is None:
+            if line.rstrip() == "```python":
+                current = []
+        elif line.rstrip() == "```":
+            blocks.append("".join(current))
+            current = None
+        else:
+            current.append(line)
+    return blocks
+
+
+def _pages() -> list[Path]:
+    tree = source_tree()
+    pages = [tree / "README.md", *sorted((tree / "docs").rglob("*.md"))]
+    return [page for page in pages if python_blocks(page.read_text())]
+
+
+def test_the_readme_and_four_guide_pages_have_examples_to_run() -> None:
+    """The pages whose ``python`` blocks the next test runs (a lost fence would drop one)."""
+    names = {page.name for page in _pages()}
+    assert names == {
+        "README.md",
+        "composition.md",
+        "load-and-dump.md",
+        "robosuite.md",
+        "transforms.md",
+        "variants.md",
+    }
+
+
+@pytest.mark.skipif(
+    MUJOCO_VERSION < (4, 0),
+    reason=f"the examples are written for the newest MuJoCo (the variants guide steps "
+    f"mujoco.batch, new in 4.0); this is {mujoco.__version__}",
+)
+@pytest.mark.parametrize("page", _pages(), ids=lambda page: page.name)
+def test_every_python_example_on_the_page_runs_beside_the_bundled_models(
+    page: Path, tmp_path: Path
+) -> None:
+    """The page's blocks, one script in order, run in a copy of ``mjcf-model examples``.
+
+    The pages tell the reader to run them there (``arm.xml``, ``workcell/``); a block
+    that loads a file that does not exist, uses a name no block defines or raises
+    fails here.
+    """
+    folder = tmp_path / "demo"
+    shutil.copytree(examples_folder(), folder, ignore=shutil.ignore_patterns("__pycache__"))
+    script = tmp_path / f"example_{page.stem.replace('-', '_')}.py"
+    script.write_text("\n\n".join(python_blocks(page.read_text())) + _RUN_DEFINED_TESTS)
+    run = subprocess.run(
+        [sys.executable, str(script)], cwd=folder, capture_output=True, text=True, timeout=600
+    )
+    assert run.returncode == 0, f"{page.name}:\n{run.stdout}\n{run.stderr}"

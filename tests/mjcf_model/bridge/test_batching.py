@@ -12,6 +12,7 @@ from functools import reduce
 from pathlib import Path
 from typing import Any
 
+import mujoco
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -30,7 +31,7 @@ from mjcf_model.nodes.base import AnyElement
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.serializers import load, loads
 from mjcf_model.strategies import models
-from tests.conftest import PER_CLASS, compiling_corpus, corpus_id
+from tests.conftest import MUJOCO_VERSION, PER_CLASS, compiling_corpus, corpus_id
 from tests.mjcf_model.bridge.test_patching import variant
 
 
@@ -113,3 +114,43 @@ def test_option_values_batch_under_their_struct_names() -> None:
         warnings.simplefilter("ignore", MjcfRecompiledWarning)
         arrays = batched(base, [base, slower])
     assert arrays["opt.timestep"].tolist() == [0.002, 0.004]
+
+
+@pytest.mark.skipif(
+    MUJOCO_VERSION < (4, 0), reason=f"MuJoCo {mujoco.__version__} has no mujoco.batch (4.0 on)"
+)
+@pytest.mark.parametrize("path", compiling_corpus()[3::17], ids=corpus_id)
+def test_worlds_given_the_batched_rows_step_as_each_compiled_variant_alone(path: Path) -> None:
+    """The variants guide's loop: MuJoCo's ``Batch`` of the base, each batched field expanded.
+
+    After ``set_const`` and 20 steps, every world's state is the state its variant,
+    compiled in full and stepped alone, reaches: bit for bit. Every batched field is a
+    field ``Batch`` expands, but the compiler's statistics (``stat.*``, ``vis.*``), which
+    the worlds of a ``Batch`` share: the variant stepped alone is given the base's.
+    """
+    from mujoco.batch import MODEL_FIELDS, Batch
+
+    base = load(path, inline_includes=True)
+    variants = [variant(base, seed)[0] for seed in range(3)]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", MjcfRecompiledWarning)
+        arrays = batched(base, variants)
+    shared = {name for name in arrays if name not in MODEL_FIELDS}
+    assert all(name.startswith(("stat.", "vis.")) for name in shared), shared
+    base_model = compiled(base)
+    worlds = Batch(base_model, nsim=len(variants), nthread=1)
+    for name, rows in arrays.items():
+        if name not in shared:
+            worlds.expand(name)[:] = rows
+    worlds.set_const()
+    qpos, qvel = worlds.bind("qpos"), worlds.bind("qvel")
+    worlds.step(nstep=20)
+    for index, after in enumerate(variants):
+        alone = compiled(after)
+        for name in shared:
+            struct, field = name.split(".")
+            setattr(getattr(alone, struct), field, _field(base_model, name))
+        data = mujoco.MjData(alone)
+        mujoco.mj_step(alone, data, nstep=20)
+        assert np.array_equal(qpos[index], data.qpos), (path.name, index)
+        assert np.array_equal(qvel[index], data.qvel), (path.name, index)
