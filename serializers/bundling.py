@@ -26,6 +26,7 @@ from mjcf_model.nodes.root import Mujoco
 from mjcf_model.serializers.dumping import dumps, inlined_includes
 from mjcf_model.serializers.loading import loads
 from mjcf_model.serializers.locations import located_in, read_from
+from mjcf_model.values.encoding import encoded
 
 __all__ = ["Bundle", "bundled", "bundled_on_disk"]
 
@@ -196,4 +197,4 @@ def _submodel_text(
         _read(reference, assets), base_dir=reference.path.parent, filename=str(reference.path)
     )
     bundled_sub = _bundle(sub, {}, "", names, (*chain, reference.path), on_disk)
-    return dumps(bundled_sub).encode()
+    return encoded(dumps(bundled_sub))

@@ -36,6 +36,7 @@ from mjcf_model.serializers.kept_format import write_kept
 from mjcf_model.serializers.loading import loads
 from mjcf_model.tree.queries import find_all
 from mjcf_model.tree.traversal import keyed_walk
+from mjcf_model.values.encoding import encoded
 
 __all__ = [
     "attribute_texts",
@@ -169,7 +170,7 @@ def write_atomically(data: str | bytes, target: str | os.PathLike[str]) -> None:
         ) from None
     try:
         with os.fdopen(handle, "wb") as stream:
-            stream.write(data.encode("utf-8") if isinstance(data, str) else data)
+            stream.write(encoded(data) if isinstance(data, str) else data)
             stream.flush()
             os.fsync(stream.fileno())
         with contextlib.suppress(OSError):  # an old file's mode, else the umask's

@@ -21,6 +21,7 @@ from mjcf_model.errors import MjcfAssetError, MjcfValueError
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.serializers.bundling import bundled
 from mjcf_model.serializers.dumping import dumps
+from mjcf_model.values.encoding import encoded
 
 __all__ = ["ASSET_FOLDER", "export"]
 
@@ -86,7 +87,7 @@ def export(
     bundle = bundled(model, assets=assets, folder=f"{ASSET_FOLDER}/")
     xml_name = _xml_name(model)
     try:
-        _write_folder(target, xml_name, dumps(bundle.model).encode(), bundle.files)
+        _write_folder(target, xml_name, encoded(dumps(bundle.model)), bundle.files)
     except OSError as error:
         raise MjcfAssetError(
             f"cannot write {str(target)!r}: {error.strerror or error}; nothing was written"

@@ -26,6 +26,8 @@ from collections.abc import Callable, Sequence, Set
 from typing import Any, NamedTuple
 from xml.parsers import expat
 
+from mjcf_model.values.encoding import without_placeholders
+
 __all__ = [
     "DocumentText",
     "Layout",
@@ -55,6 +57,7 @@ class SourceText:
         "__weakref__",
         "details",
         "document",
+        "escaped",
         "filename",
         "first_line",
         "pieces",
@@ -80,6 +83,9 @@ class SourceText:
         self.raw = b"" if raw.isascii() else raw
         #: The text, when the bytes are ASCII (byte offsets are then text offsets).
         self.text = raw.decode("ascii") if not self.raw else ""
+        #: Whether ``raw`` holds placeholders for bytes that are not UTF-8, which the text
+        #: handed out escapes (:mod:`mjcf_model.values.encoding`).
+        self.escaped = False
         #: The text of the file around its root element, and where the root begins.
         self.document: DocumentText | None = None
         self.root_begin = -1
@@ -114,6 +120,7 @@ class SourceText:
     def __setstate__(self, state: dict[str, Any]) -> None:
         self.filename, self.first_line = None, 0  # pickled before they were recorded
         self.pieces, self.read_attributes, self.reducer = [], None, None
+        self.escaped = False
         for name, value in state.items():
             setattr(self, name, value)
 
@@ -145,6 +152,7 @@ class SourceText:
             raw = self.raw[begin:after] if self.raw else self.text[begin:after].encode("ascii")
             lines = self.line(begin) - 1
             cut = SourceText(raw, self.filename, lines, self.reducer)
+        cut.escaped = self.escaped
         self.pieces.append((weakref.ref(cut), begin, after if after >= 0 else 1 << 62))
         return cut, begin
 
@@ -165,6 +173,8 @@ class SourceText:
             parser.ordered_attributes = True
 
             def start(name: str, attributes: list[str]) -> None:
+                if self.escaped:
+                    attributes = [without_placeholders(part) for part in attributes]
                 found[parser.CurrentByteIndex + begin] = attributes
 
             parser.StartElementHandler = start
@@ -178,7 +188,8 @@ class SourceText:
     def slice(self, begin: int, after: int) -> str:
         """The text between two byte offsets."""
         if self.raw:
-            return self.raw[begin:after].decode("utf-8", "surrogatepass")
+            text = self.raw[begin:after].decode("utf-8", "surrogatepass")
+            return without_placeholders(text) if self.escaped else text
         return self.text[begin:after]
 
     def line(self, offset: int) -> int:

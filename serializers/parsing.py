@@ -57,6 +57,7 @@ from mjcf_model.serializers.repairs import (
 from mjcf_model.serializers.scanning import BREAK, may_hold_text, start_tag_end
 from mjcf_model.tree.indexes import NotedOrder, TagIndex
 from mjcf_model.values import Unparsed
+from mjcf_model.values.encoding import encoded, with_placeholders, without_placeholders
 
 __all__ = ["Reader"]
 
@@ -89,6 +90,9 @@ class Reader:
         #: are then text offsets), else ``None``.
         self.raw = b""
         self.ascii: str | None = None
+        #: Whether the bytes held bytes that are not UTF-8, given to expat as placeholders
+        #: (:mod:`mjcf_model.values.encoding`): what expat reports is escaped again.
+        self.escaped = False
         #: The same, shared by the layouts of the elements read.
         self.origin: SourceText | None = None
         #: Each attribute text's converted value, per field converter: converted once.
@@ -168,7 +172,8 @@ class Reader:
         """The source text between two byte offsets."""
         if self.ascii is not None:
             return self.ascii[begin:end]
-        return self.raw[begin:end].decode("utf-8", "surrogatepass")
+        text = self.raw[begin:end].decode("utf-8", "surrogatepass")
+        return without_placeholders(text) if self.escaped else text
 
     def start(self, tag: str, flat: list[str]) -> None:
         """Open an element at its start tag (expat's handler)."""
@@ -186,6 +191,8 @@ class Reader:
             # it. Only a tag written over lines or with tabs can hold one.
             if " " in joined and self.breaks and BREAK.search(raw, begin, stop) is not None:
                 flat = self.exact_attributes(tag, context, flat, begin)
+        if self.escaped:
+            tag, flat = without_placeholders(tag), [without_placeholders(part) for part in flat]
         if parent is None:
             self.root_begin = begin
         step = STEPS.get((context, tag))
@@ -298,7 +305,7 @@ class Reader:
 
     def comment(self, text: str) -> None:
         """Keep a comment as a child; its exact text stays in the file's (expat's handler)."""
-        node = Comment(text=text)
+        node = Comment(text=without_placeholders(text) if self.escaped else text)
         if not self.stack:
             self.top.append(node)  # its text is kept in the root's document text
             return
@@ -312,6 +319,8 @@ class Reader:
 
     def characters(self, data: str) -> None:
         """Note character data of the innermost open element (expat's handler)."""
+        if self.escaped:
+            data = without_placeholders(data)
         if self.stack:
             item = self.stack[-1]
             if item.text is None:
@@ -349,7 +358,7 @@ class Reader:
 
     def read(self, data: str | bytes) -> list[Node]:
         """:meth:`parse`, but for the long attributes :meth:`convert_deferred` converts."""
-        raw = data.encode("utf-8", "surrogatepass") if isinstance(data, str) else data
+        raw = data if isinstance(data, bytes) else self.encoded(data)
         if raw[:4] in _UTF32_BOMS:
             raise MjcfSyntaxError(
                 "a UTF-32 file; save it as UTF-8, which MuJoCo reads", file=self.filename
@@ -371,9 +380,14 @@ class Reader:
                 file=self.filename,
                 line=1,
             )
+        given = raw
+        placeheld = with_placeholders(raw)
+        if placeheld is not None:  # bytes that are not UTF-8, which MuJoCo reads
+            raw, self.escaped = placeheld, True
         try:
             self.raw = raw
             self.origin = SourceText(raw, self.filename, reducer=reduced_from_text)
+            self.origin.escaped = self.escaped
             self.origin.values = self.known
             if not self.origin.raw:
                 self.ascii = self.origin.text
@@ -391,6 +405,8 @@ class Reader:
             repaired = escape_stray_markup(blanked or raw) or blanked
             if repaired is not None:
                 retry = Reader(self.filename, self.session, self.include_context)
+                if self.escaped:  # the bytes as they were: the retry escapes them again
+                    repaired = encoded(without_placeholders(repaired.decode()))
                 try:
                     top = retry.parse(repaired)
                 except MjcfSyntaxError:
@@ -399,10 +415,23 @@ class Reader:
                     self.includes = retry.includes
                     self.noted = retry.noted
                     return top
-            raise self.syntax_error(error, raw) from None
+            raise self.syntax_error(error, raw, given) from None
         finally:
             self.release()
         return self.top
+
+    def encoded(self, text: str) -> bytes:
+        """``text`` as the bytes of a file: each escaped byte the byte it was read from."""
+        try:
+            return encoded(text)
+        except UnicodeEncodeError as error:
+            character = text[error.start]
+            raise MjcfSyntaxError(
+                f"the text holds U+{ord(character):04X}, a lone surrogate that no file "
+                "holds and XML cannot carry; remove it",
+                file=self.filename,
+                line=text.count("\n", 0, error.start) + 1,
+            ) from None
 
     def index(self) -> TagIndex:
         """The lookup index of the root read: every element below it, noted as it was read.
@@ -450,9 +479,12 @@ class Reader:
         start = index if raw[index : index + 1] == b"<" else index - 1
         return raw[start : start + 1] == b"<" and start + 1 < len(raw)
 
-    def syntax_error(self, error: expat.ExpatError, raw: bytes) -> MjcfSyntaxError:
-        """The error to raise for what expat refused, located and explained."""
-        kind = not_xml(raw)
+    def syntax_error(self, error: expat.ExpatError, raw: bytes, given: bytes) -> MjcfSyntaxError:
+        """The error to raise for what expat refused in ``raw``, located and explained.
+
+        ``given`` is the text as given (``raw`` may hold placeholders for its bytes).
+        """
+        kind = not_xml(given)
         if kind is not None:
             return MjcfSyntaxError(
                 f"not an MJCF model: {kind}, not XML; give the model's XML file "

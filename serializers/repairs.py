@@ -56,12 +56,13 @@ def epilog_end(raw: bytes, index: int, limit: int) -> int:
             return index
 
 
-#: What to say of a byte that is not UTF-8. MuJoCo's parser passes such bytes
-#: through (a Latin-1 comment compiles), but a node holds text as Unicode: mjcf-model
-#: refuses the file rather than change bytes it would write back.
+#: What to say of a byte that is not UTF-8 the reader could not read: MuJoCo's parser
+#: passes such bytes through, and so does the reader (:mod:`mjcf_model.values.encoding`),
+#: but for a file that also holds one of the characters standing in for them.
 NOT_UTF8_ADVICE = (
-    "MuJoCo passes such bytes through, but mjcf-model reads files as UTF-8 (as XML does) "
-    "and would not write them back as they were; save the file as UTF-8 "
+    "MuJoCo passes such bytes through, and mjcf-model reads them too, but not in a file "
+    "that also holds one of the private-use characters U+10FE80 to U+10FEFF, which stand "
+    "in for them while it reads; save the file as UTF-8 "
     "(for a Latin-1 file: iconv -f latin1 -t utf-8)"
 )
 

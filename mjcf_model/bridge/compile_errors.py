@@ -33,6 +33,7 @@ from mjcf_model.serializers import dumps, loads
 from mjcf_model.serializers.layout import Layout, SourceText, layout_of
 from mjcf_model.serializers.locations import element_at
 from mjcf_model.tree.traversal import Path, keyed_walk, walk
+from mjcf_model.values.encoding import encoded, for_mujoco
 
 if TYPE_CHECKING:
     from mjcf_model.serializers.bundling import Bundle
@@ -154,7 +155,7 @@ def _main_file(model: Mujoco) -> str | None:
 
 def _standing_on(text: str, complaint: Complaint) -> list[tuple[Path, AnyElement]]:
     """The elements of ``text`` starting on the line MuJoCo names, and named as it names them."""
-    data = text.encode("utf-8", "surrogatepass")
+    data = encoded(text)
     if complaint.line is None or complaint.line < 1:  # an included file's line is 0
         return []
     begin = 0
@@ -187,7 +188,7 @@ def _standing_on_canonical(bundle: Bundle, complaint: Complaint) -> list[tuple[P
 
     canonical = dumps(bundle.model, canonical=True)
     try:
-        mujoco.MjModel.from_xml_string(canonical, bundle.files)
+        mujoco.MjModel.from_xml_string(for_mujoco(canonical), bundle.files)
     except ValueError as error:
         again = Complaint.parse(str(error))
         if again.what == complaint.what and again.line is not None:
@@ -221,9 +222,7 @@ def _includes(model: Mujoco) -> bool:
 
 def _read_from_written(origin: SourceText, model: Mujoco) -> bool:
 
-    return (origin.raw or origin.text.encode("ascii")) == dumps(model).encode(
-        "utf-8", "surrogatepass"
-    )
+    return origin.slice(0, 1 << 62) == dumps(model)
 
 
 def _user_layout(layout: Layout, model: Mujoco) -> Layout | None:

@@ -27,6 +27,7 @@ from mjcf_model.serializers.bundling import Bundle, bundled_on_disk
 from mjcf_model.serializers.dumping import dumps
 from mjcf_model.serializers.skins import skin_file_bytes
 from mjcf_model.tree.traversal import with_children
+from mjcf_model.values.encoding import for_mujoco
 
 if TYPE_CHECKING:
     import mujoco
@@ -118,7 +119,7 @@ def compiled(model: Mujoco, *, assets: Mapping[str, bytes] | None = None) -> muj
         if files:  # file contents were read: read them again next time
             _WRITTEN.pop((id(model), os.getcwd()), None)
     try:
-        return mujoco.MjModel.from_xml_string(text, files)
+        return mujoco.MjModel.from_xml_string(for_mujoco(text), files)
     except ValueError as error:
         raise compile_error(str(error), model, bundle, text) from None
 

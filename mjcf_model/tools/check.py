@@ -30,6 +30,7 @@ from mjcf_model.errors import (
 )
 from mjcf_model.serializers import dumps, load, loads
 from mjcf_model.tools.diff import changes_between
+from mjcf_model.values.encoding import escaped_bytes, for_mujoco
 
 if TYPE_CHECKING:
     from mjcf_model.nodes.root import Mujoco
@@ -65,6 +66,8 @@ class CheckResult:
     differences: tuple[str, ...] = ()
     #: The error message (for ``error`` and ``not-compiled``).
     message: str = ""
+    #: What the user should know of a file that round-trips: bytes that are not UTF-8.
+    warnings: tuple[str, ...] = ()
 
     @property
     def ok(self) -> bool:
@@ -236,7 +239,7 @@ def check_text(text: str, *, filename: str = "<stdin>") -> CheckResult:
 
     return _checked(
         filename,
-        lambda: mujoco.MjModel.from_xml_string(text),
+        lambda: mujoco.MjModel.from_xml_string(for_mujoco(text)),
         lambda: loads(text, base_dir=text_folder(filename), filename=filename),
         beside=standing_path(filename),
     )
@@ -283,7 +286,28 @@ def _checked(
     except MjcfError as error:
         return CheckResult(path=name, status="error", message=str(error))
     status: Status = "different" if differences else "identical"
-    return CheckResult(path=name, status=status, differences=differences)
+    warnings = (_not_utf8(written),) if escaped_bytes(written) else ()
+    return CheckResult(path=name, status=status, differences=differences, warnings=warnings)
+
+
+def _not_utf8(text: str) -> str:
+    r"""The warning for ``text`` read from bytes that are not UTF-8 (Latin-1, say).
+
+    Examples:
+        >>> print(_not_utf8('<mujoco>\n<!-- caf\udce9 \udce8 -->\n</mujoco>'))  # doctest: +ELLIPSIS
+        line 2: 2 bytes that are not UTF-8 (0xE9 0xE8): MuJoCo reads them as they are, ...
+
+    """
+    found = escaped_bytes(text)
+    first = text.index(chr(0xDC00 + found[0]))
+    shown = " ".join(f"0x{byte:02X}" for byte in found[:8]) + (" ..." if len(found) > 8 else "")
+    count = f"{len(found)} bytes" if len(found) > 1 else "a byte"
+    return (
+        f"line {text.count(chr(10), 0, first) + 1}: {count} that are not UTF-8 ({shown}): "
+        "MuJoCo reads them as they are, and mjcf-model writes them back as they were, but "
+        "other XML tools refuse the file; save it as UTF-8 (a Latin-1 file: "
+        "iconv -f latin1 -t utf-8)"
+    )
 
 
 def _rejection(message: str, loaded: Callable[[], Mujoco]) -> str:

@@ -54,6 +54,7 @@ from mjcf_model.tools.check import (
     written_changes,
     written_differences,
 )
+from mjcf_model.values.encoding import for_mujoco
 
 __all__ = [
     "FormatOptions",
@@ -209,7 +210,7 @@ def format_text(
         (False, 'unchanged')
 
     """
-    decoded = text if isinstance(text, str) else text.decode("utf-8", errors="replace")
+    decoded = text if isinstance(text, str) else text.decode("utf-8", "surrogateescape")
     compile_original = functools.partial(_compiled_text, decoded, standing_path(filename))
     return _formatted(text, filename, compile_original, options or FormatOptions())
 
@@ -221,7 +222,7 @@ def _formatted(
     options: FormatOptions,
 ) -> Formatted:
     """The tidy form of ``data`` read as ``filename``, and its proof."""
-    text = data if isinstance(data, str) else data.decode("utf-8", errors="replace")
+    text = data if isinstance(data, str) else data.decode("utf-8", "surrogateescape")
     model = loads(data, base_dir=text_folder(filename), filename=filename)
     tidy = tidy_text(
         model,
@@ -255,4 +256,4 @@ def _compiled_text(text: str, beside: str) -> Any:
     try:
         return compile_text_beside(text, beside)
     except OSError:
-        return mujoco.MjModel.from_xml_string(text)
+        return mujoco.MjModel.from_xml_string(for_mujoco(text))

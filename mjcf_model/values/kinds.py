@@ -131,9 +131,13 @@ expected a number, found '0x10' (kept verbatim: MuJoCo may read what mjcf-model 
 Value = str | int | float | bool | Floats | Ints | Unparsed
 
 
-#: One character XML 1.0 cannot carry. Every pattern in the library is a single
-#: character class, which cannot backtrack (tests/mjcf_model/values/test_reading.py checks this).
-NOT_XML_CHARACTER = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+#: One character XML 1.0 cannot carry, but for the escapes of bytes that are not UTF-8
+#: (:mod:`mjcf_model.values.encoding`: MuJoCo reads those bytes, and they are written back
+#: as they were read). Every pattern in the library is a single character class, which
+#: cannot backtrack (tests/mjcf_model/values/test_reading.py checks this).
+NOT_XML_CHARACTER = re.compile(
+    "[^\t\n\r\x20-\ud7ff\udc80-\udcff\ue000-\ufffd\U00010000-\U0010ffff]"
+)
 
 
 _NOT_NAME_CHARACTER = re.compile(
@@ -149,7 +153,8 @@ _NOT_NAME_START = frozenset("-.0123456789\xb7\u203f\u2040") | {chr(c) for c in r
 def check_text(value: str, what: str = "text") -> str:
     r"""Return ``value``, or raise when it holds a character XML cannot carry.
 
-    Such text (NUL and other control characters, lone surrogates) could be
+    Such text (NUL and other control characters, lone surrogates but the escapes
+    of bytes that are not UTF-8) could be
     built but not written and read back, so no node accepts it.
 
     Examples:

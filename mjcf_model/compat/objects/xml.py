@@ -64,6 +64,7 @@ from mjcf_model.serializers.etree import to_etree
 from mjcf_model.tree.paths import appended_at, replaced_at, subtree_at
 from mjcf_model.tree.traversal import walk, with_children
 from mjcf_model.values import to_vec4
+from mjcf_model.values.encoding import for_mujoco
 
 __all__ = ["MujocoXML", "MujocoXMLModel", "MujocoXMLObject"]
 
@@ -173,7 +174,7 @@ class MujocoXML(ModelBacked, RobosuiteCompatible):
             raise MjcfValueError(f"Unkown model mode: {mode}. Available options are: mujoco")
         import mujoco
 
-        return mujoco.MjModel.from_xml_string(self.get_xml())
+        return mujoco.MjModel.from_xml_string(for_mujoco(self.get_xml()))
 
     def get_xml(self) -> str:
         """The XML of :attr:`root`, as ``ET.tostring`` writes it."""

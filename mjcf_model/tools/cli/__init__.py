@@ -13,6 +13,7 @@ Example:
 from __future__ import annotations
 
 import argparse
+import io
 import os
 import sys
 from collections.abc import Sequence
@@ -64,6 +65,17 @@ def version_line() -> str:
     return f"mjcf-model {installed('mjcf-model')} (MuJoCo {installed('mujoco')})"
 
 
+def _bytes_as_read() -> None:
+    """Print the bytes of a name or comment that are not UTF-8 as the file holds them.
+
+    The reader escapes them (:mod:`mjcf_model.values.encoding`); a strict stream
+    would refuse them.
+    """
+    for stream in (sys.stdout, sys.stderr):
+        if isinstance(stream, io.TextIOWrapper):
+            stream.reconfigure(errors="surrogateescape")
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; return the exit status.
 
@@ -73,6 +85,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
     """
     arguments = parser().parse_args(argv)
+    _bytes_as_read()
     try:
         status: int = arguments.run(arguments)
         sys.stdout.flush()

@@ -21,8 +21,6 @@ import sys
 from collections.abc import Iterable
 from typing import Any, TextIO
 
-from mjcf_model.errors import MjcfError
-from mjcf_model.serializers import loads
 from mjcf_model.tools.check import CheckResult, check_file, check_text
 from mjcf_model.tools.cli.common import STDIO, progress, read_stdin, stages
 from mjcf_model.tools.cli.examples import example_path
@@ -31,20 +29,17 @@ __all__ = ["add_parsers"]
 
 
 def _check_stdin() -> CheckResult:
-    data = read_stdin()
-    try:
-        return check_text(data.decode("utf-8"))
-    except UnicodeDecodeError as error:
-        try:
-            loads(data, filename="<stdin>")
-        except MjcfError as refused:  # the reader's words: the byte, line, column, what to do
-            message = refused.for_command_line()
-        else:
-            message = str(error)
-        return CheckResult(path="<stdin>", status="error", message=message)
+    # bytes that are not UTF-8 are escaped, and written back as they were
+    return check_text(read_stdin().decode("utf-8", "surrogateescape"))
 
 
 def _report(result: CheckResult, out: TextIO, verbose: bool) -> None:
+    _report_status(result, out, verbose)
+    for warning in result.warnings:
+        out.write(f"              warning: {warning}\n")
+
+
+def _report_status(result: CheckResult, out: TextIO, verbose: bool) -> None:
     if result.status == "identical":
         if verbose:
             out.write(f"identical     {result.path}\n")

@@ -22,6 +22,7 @@ from mjcf_model import serializers
 from mjcf_model.errors import MjcfError
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.serializers.dumping import relocated_for, write_atomically
+from mjcf_model.values.encoding import encoded
 
 __all__ = [
     "STDIO",
@@ -32,6 +33,7 @@ __all__ = [
     "read_model",
     "read_stdin",
     "said",
+    "to_stdout",
     "write_model",
     "write_text",
 ]
@@ -157,8 +159,7 @@ def write_model(model: Mujoco, target: str, *, canonical: bool = False) -> None:
     working folder for standard output).
     """
     if target == STDIO:
-        text = serializers.dumps(relocated_for(model, Path.cwd()), canonical=canonical)
-        sys.stdout.write(text)
+        to_stdout(serializers.dumps(relocated_for(model, Path.cwd()), canonical=canonical))
     else:
         serializers.dump(model, target, canonical=canonical)
 
@@ -166,10 +167,17 @@ def write_model(model: Mujoco, target: str, *, canonical: bool = False) -> None:
 def write_text(text: str, target: str) -> None:
     """Write ``text`` to ``target`` atomically (``-``: standard output)."""
     if target == STDIO:
-        sys.stdout.write(text)
+        to_stdout(text)
         return
 
     write_atomically(text, target)
+
+
+def to_stdout(text: str) -> None:
+    """Write MJCF text to standard output as a file holds it (escaped bytes as they were)."""
+    sys.stdout.flush()
+    sys.stdout.buffer.write(encoded(text))
+    sys.stdout.buffer.flush()
 
 
 def guarded(run: Callable[[argparse.Namespace], int]) -> Callable[[argparse.Namespace], int]:

@@ -194,19 +194,41 @@ def test_a_part_that_does_not_read_back_fails(tmp_path: Path, bad: str) -> None:
     assert _check("--part", str(part)).returncode == 1
 
 
-def test_stdin_that_is_not_utf8_names_the_byte_line_and_column() -> None:
-    """``check -`` on a Latin-1 comment: an error with the reader's location and advice."""
-    done = subprocess.run(
+def test_a_latin1_file_checks_identical_with_a_warning_and_formats_byte_for_byte(
+    tmp_path: Path,
+) -> None:
+    """MuJoCo compiles a Latin-1 comment and name: ``check`` proves the round trip and warns.
+
+    From a file and from standard input; ``fmt`` rewrites the layout and keeps the bytes.
+    """
+    data = (
+        b'<mujoco model="caf\xe9">\n  <!-- caf\xe9 -->\n'
+        b'<worldbody><geom size="1"/></worldbody>\n</mujoco>\n'
+    )
+    path = tmp_path / "old.xml"
+    path.write_bytes(data)
+    from_file = subprocess.run(
+        [sys.executable, "-m", "mjcf_model", "check", str(path)], capture_output=True, check=False
+    )
+    from_stdin = subprocess.run(
         [sys.executable, "-m", "mjcf_model", "check", "-"],
-        input=b"<mujoco>\n  <!-- caf\xe9 -->\n</mujoco>\n",
+        input=data,
         capture_output=True,
         check=False,
     )
-    assert done.returncode == 1
-    out = done.stdout.decode()
-    assert "ERROR         <stdin>" in out
-    assert "<stdin>:2:" in out and "(column 11)" in out and "byte 0xE9 is not UTF-8" in out
-    assert "iconv -f latin1 -t utf-8" in out
+    for done, name in ((from_file, str(path)), (from_stdin, "<stdin>")):
+        assert done.returncode == 0, done.stdout
+        out = done.stdout.decode()
+        assert f"identical     {name}" in out
+        assert "warning: line 1: 2 bytes that are not UTF-8 (0xE9 0xE9)" in out
+        assert "iconv -f latin1 -t utf-8" in out
+    formatted = subprocess.run(
+        [sys.executable, "-m", "mjcf_model", "fmt", str(path)], capture_output=True, check=False
+    )
+    assert formatted.returncode == 0, formatted.stderr
+    assert path.read_bytes() == data.replace(b"<worldbody>", b"  <worldbody>").replace(
+        b"<geom", b"\n    <geom"
+    ).replace(b"/></worldbody>", b"/>\n  </worldbody>")
 
 
 # -- The verbs of ``mjcf-model`` run as a user runs them: a process, real files, exit codes. ---
