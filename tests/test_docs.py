@@ -19,7 +19,9 @@ import pytest
 
 from mjcf_model.nodes.node_info import BASE_FIELDS, xml_name
 from mjcf_model.nodes.registry import CLASS_BY_KEY
+from mjcf_model.serializers import load
 from mjcf_model.tools.cli.examples import examples_folder
+from mjcf_model.tools.lint import RULES, lint
 from tests.conftest import MUJOCO_VERSION
 from tests.test_packaging import source_tree
 
@@ -104,12 +106,13 @@ def _pages() -> list[Path]:
     return [page for page in pages if python_blocks(page.read_text())]
 
 
-def test_the_readme_and_four_guide_pages_have_examples_to_run() -> None:
+def test_the_readme_and_the_guide_pages_with_examples_have_them_to_run() -> None:
     """The pages whose ``python`` blocks the next test runs (a lost fence would drop one)."""
     names = {page.name for page in _pages()}
     assert names == {
         "README.md",
         "composition.md",
+        "lint.md",
         "load-and-dump.md",
         "robosuite.md",
         "transforms.md",
@@ -140,3 +143,33 @@ def test_every_python_example_on_the_page_runs_beside_the_bundled_models(
         [sys.executable, str(script)], cwd=folder, capture_output=True, text=True, timeout=600
     )
     assert run.returncode == 0, f"{page.name}:\n{run.stdout}\n{run.stderr}"
+
+
+def _lint_examples() -> list[tuple[str, str]]:
+    """Each rule section of the linting guide: its code and its example model."""
+    page = (source_tree() / "docs" / "guide" / "lint.md").read_text()
+    found = []
+    for section in page.split("\n### ")[1:]:
+        code = section.split(" ", 1)[0]
+        example = section.split("```xml\n", 1)[1].split("```", 1)[0]
+        found.append((code, example))
+    return found
+
+
+def test_the_linting_guide_has_one_section_for_each_rule() -> None:
+    """A rule without its section on the page (or a section without its rule) fails."""
+    assert sorted(code for code, _ in _lint_examples()) == sorted(RULES)
+
+
+@pytest.mark.parametrize("code, example", _lint_examples(), ids=[c for c, _ in _lint_examples()])
+def test_each_rules_example_on_the_linting_guide_is_found(
+    code: str, example: str, tmp_path: Path
+) -> None:
+    """Linted as a file beside the bundled examples, the example gives its rule's finding."""
+    folder = tmp_path / "demo"
+    shutil.copytree(examples_folder(), folder, ignore=shutil.ignore_patterns("__pycache__"))
+    path = folder / "example.xml"
+    path.write_text(example)
+    findings = lint(load(path, inline_includes=True))
+    assert code in {finding.rule for finding in findings}, [str(f) for f in findings]
+    assert all(f.file == str(path) and f.line for f in findings if f.rule == code)

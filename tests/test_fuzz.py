@@ -16,8 +16,9 @@ robosuite and dm_control wheels) and the text of models drawn by
    when they succeed, give the model back.
 3. Whenever MuJoCo compiles the mutated text from a string, ``loads`` accepts it
    and MuJoCo compiles ``dumps`` of the loaded model to an identical ``MjModel``.
-   Left out are only the inputs the README says we refuse although MuJoCo reads
-   them: bytes that are not UTF-8, characters XML 1.0 cannot carry, a DTD.
+   Left out are only the inputs the behaviour guide says we refuse although MuJoCo
+   reads them: characters XML 1.0 cannot carry, a DTD. Bytes that are not UTF-8 are
+   in: MuJoCo is given the bytes, and the written text as bytes.
 
 Every case runs under Python's default recursion limit (hypothesis raises it)
 and a wall-clock limit (``SIGALRM``; 5 s, or ``MJCF_FUZZ_TIMEOUT`` seconds), so

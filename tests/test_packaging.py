@@ -218,7 +218,11 @@ def test_pre_commit_hooks_run_the_installed_command() -> None:
     """Each hook in .pre-commit-hooks.yaml runs a verb of the packaged ``mjcf-model`` script."""
     text = (source_tree() / ".pre-commit-hooks.yaml").read_text()
     hooks = [block for block in text.split("- id: ")[1:]]
-    assert [block.split()[0] for block in hooks] == ["mjcf-model-fmt", "mjcf-model-fmt-check"]
+    assert [block.split()[0] for block in hooks] == [
+        "mjcf-model-fmt",
+        "mjcf-model-fmt-check",
+        "mjcf-model-lint",
+    ]
     for block in hooks:
         fields = dict(
             line.strip().split(": ", 1) for line in block.splitlines()[1:] if ": " in line
@@ -232,6 +236,7 @@ def test_pre_commit_hooks_run_the_installed_command() -> None:
             text=True,
             check=False,
         )
-        assert done.returncode == 0 and "--check" in done.stdout, done.stderr
+        option = "--select" if arguments[0] == "lint" else "--check"
+        assert done.returncode == 0 and option in done.stdout, done.stderr
     scripts = tomllib.loads((source_tree() / "pyproject.toml").read_text())["project"]["scripts"]
     assert scripts["mjcf-model"] == "mjcf_model.tools.cli:main"

@@ -30,11 +30,12 @@ import copy
 import math
 import warnings
 from collections.abc import Iterator
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy
 
 from mjcf_model.bridge.compiling import compiled
+from mjcf_model.bridge.numbering import numbering
 from mjcf_model.bridge.scale_patching import (
     Scaling,
     restore_scaled,
@@ -50,13 +51,11 @@ from mjcf_model.nodes.base import (
     TypedElement,
     attribute_items,
     get_attribute,
-    with_attributes,
 )
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.schema.namespaces import child_key
 from mjcf_model.serializers.locations import element_at
 from mjcf_model.tree.defaults import ACTUATOR_DEFAULT_TAGS, DefaultClasses
-from mjcf_model.tree.traversal import with_children
 from mjcf_model.values import Value, numbers_of
 
 if TYPE_CHECKING:
@@ -810,75 +809,30 @@ class _Rows:
         return _numbering(self.before).get(path)
 
 
-#: The numbering of the last few models asked about, by ``id`` (each kept with its model,
-#: so an ``id`` is not reused while its entry stands).
-_NUMBERINGS: BoundedCache[int, tuple[Mujoco, dict[tuple[int, ...], int]]] = BoundedCache(8)
-
-
 def _numbering(before: Mujoco) -> dict[tuple[int, ...], int]:
-    """The compiled row of each geom, joint, inertial (its body) and actuator, by path.
+    """The compiled row of each geom, joint, inertial (its body's) and actuator, by path.
 
-    Every such element gets a unique name in a copy that MuJoCo compiles (names do
-    not change the numbering), so MuJoCo itself says which row is whose. The last
-    few models asked about are remembered: a variant loop asks about one.
+    The paths count element children only (comments left out), as :func:`_paired_walk`
+    numbers them; :func:`~mjcf_model.bridge.numbering.numbering` counts every child.
     """
-    known = _NUMBERINGS.get(id(before))
-    if known is not None and known[0] is before:
-        return known[1]
-    import mujoco
-
-    labels: dict[tuple[str, str], tuple[int, ...]] = {}
-    named = _labelled(before, None, (), labels)
-    compiled_model = compiled(named)
-    kinds = {
-        "geom": mujoco.mjtObj.mjOBJ_GEOM,
-        "joint": mujoco.mjtObj.mjOBJ_JOINT,
-        "body": mujoco.mjtObj.mjOBJ_BODY,
-        "actuator": mujoco.mjtObj.mjOBJ_ACTUATOR,
-    }
-    rows: dict[tuple[int, ...], int] = {}
-    for (kind, label), path in labels.items():
-        row = mujoco.mj_name2id(compiled_model, kinds[kind], label)
-        if row >= 0:
-            rows[path] = row
-    return _NUMBERINGS.remember(id(before), (before, rows))[1]
+    return _ELEMENT_ROWS.recall_for(before, lambda: _by_element_index(before))
 
 
-def _labelled(
-    element: AnyElement,
-    context: str | None,
-    path: tuple[int, ...],
-    labels: dict[tuple[str, str], tuple[int, ...]],
-) -> Any:
-    """``element`` with every geom, joint, body and actuator below it named ``mjcf_patch_*``.
+#: What :func:`_numbering` found for the last few models.
+_ELEMENT_ROWS: IdentityCache[dict[tuple[int, ...], int]] = IdentityCache(8)
 
-    ``labels`` gets the path of each (object type, name); a body's is its inertial's path.
-    """
-    key = (
-        child_key(context, element.tag) if context is not None or element.tag == "mujoco" else None
-    )
-    if key is None or key.startswith("default") or element.tag == "replicate":
-        return element  # a replicate's copies would share a label (and are compiled again)
-    elements = iter(_elements(element))
-    inertial = None
-    children: list[Any] = []
-    for index, child in enumerate(elements):
-        if child.tag == "inertial":
-            inertial = (*path, index)
-        children.append(_labelled(child, key, (*path, index), labels))
-    labelled = with_children(element, children)
-    if key == "body" and inertial is not None:
-        target, kind = inertial, "body"
-    elif key in ("body/geom", "body/joint"):
-        target, kind = path, key.removeprefix("body/")
-    elif key.startswith("actuator/"):
-        target, kind = path, "actuator"
-    else:
-        return labelled
-    name = get_attribute(element, "name")
-    if name:  # named already: MuJoCo finds it by that name (references to it stay right)
-        labels[(kind, str(name))] = target
-        return labelled
-    label = f"mjcf_patch_{kind}_{len(labels)}"
-    labels[(kind, label)] = target
-    return with_attributes(labelled, {"name": label})
+
+def _by_element_index(before: Mujoco) -> dict[tuple[int, ...], int]:
+    rows = numbering(before).rows
+    found: dict[tuple[int, ...], int] = {}
+    stack: list[tuple[AnyElement, tuple[int, ...], tuple[int, ...]]] = [(before, (), ())]
+    while stack:
+        element, path, counted = stack.pop()
+        if path in rows:
+            found[counted] = rows[path]
+        elements = 0
+        for index, child in enumerate(element.children):
+            if isinstance(child, Element):
+                stack.append((child, (*path, index), (*counted, elements)))
+                elements += 1
+    return found

@@ -37,7 +37,6 @@ from __future__ import annotations
 
 import functools
 import os
-import tomllib
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any, Literal
@@ -54,6 +53,7 @@ from mjcf_model.tools.check import (
     written_changes,
     written_differences,
 )
+from mjcf_model.tools.settings import project_settings
 from mjcf_model.values.encoding import for_mujoco
 
 __all__ = [
@@ -95,7 +95,8 @@ def options_from_pyproject(start: str | os.PathLike[str]) -> tuple[FormatOptions
     r"""The options ``[tool.mjcf-model]`` sets in the ``pyproject.toml`` nearest ``start``.
 
     Looked for in ``start`` (a folder or file) and each folder above it, as ruff and
-    black look; the defaults (and ``None``) when there is none.
+    black look (:func:`~mjcf_model.tools.settings.project_settings`); the defaults (and
+    ``None``) when there is none.
 
     Raises:
         MjcfValueError: The table sets a key it may not, or a value of the wrong type
@@ -109,34 +110,24 @@ def options_from_pyproject(start: str | os.PathLike[str]) -> tuple[FormatOptions
         120
 
     """
-    here = Path(start).resolve()
-    for folder in [here, *here.parents]:
-        candidate = folder / "pyproject.toml"
-        if not candidate.is_file():
+    table, candidate = project_settings(start)
+    settings: dict[str, Any] = {}
+    for key, value in table.items():
+        if key == "lint":  # the linter's table (mjcf_model.tools.lint)
             continue
-        try:
-            table = tomllib.loads(candidate.read_text("utf-8")).get("tool", {}).get("mjcf-model")
-        except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as error:
+        kind = _SETTINGS.get(key)
+        if kind is None or type(value) is not kind:
+            expected = ", ".join(f"{k} ({t.__name__})" for k, t in _SETTINGS.items())
             raise MjcfValueError(
-                f"cannot read the settings: {error}", file=str(candidate)
-            ) from None
-        if table is None:
-            continue
-        settings: dict[str, Any] = {}
-        for key, value in table.items():
-            kind = _SETTINGS.get(key)
-            if kind is None or type(value) is not kind:
-                expected = ", ".join(f"{k} ({t.__name__})" for k, t in _SETTINGS.items())
-                raise MjcfValueError(
-                    f"[tool.mjcf-model] {key} = {value!r}: the settings are {expected}",
-                    file=str(candidate),
-                )
-            settings[key.replace("-", "_")] = value
-        try:
-            return FormatOptions(**settings), candidate
-        except ValueError as error:
-            raise MjcfValueError(f"[tool.mjcf-model]: {error}", file=str(candidate)) from None
-    return FormatOptions(), None
+                f"[tool.mjcf-model] {key} = {value!r}: the settings are {expected} "
+                "(and the table [tool.mjcf-model.lint])",
+                file=str(candidate),
+            )
+        settings[key.replace("-", "_")] = value
+    try:
+        return FormatOptions(**settings), candidate
+    except ValueError as error:
+        raise MjcfValueError(f"[tool.mjcf-model]: {error}", file=str(candidate)) from None
 
 
 @attrs.frozen(kw_only=True)

@@ -35,6 +35,7 @@ from mjcf_model.errors import MjcfError
 from mjcf_model.nodes.root import Mujoco
 from mjcf_model.serializers import dumps, from_dict, from_etree, loads, to_dict, to_etree
 from mjcf_model.strategies import models
+from mjcf_model.values.encoding import encoded
 from tests.conftest import corpus_files, corpus_id
 
 Draw = Callable[[st.SearchStrategy[Any]], Any]
@@ -975,20 +976,17 @@ def mujoco_compiles(data: bytes) -> Any | None:
     """The model MuJoCo compiles from ``data`` as a string, or ``None`` if it does not.
 
     Only input that mjcf-model does not refuse by design goes to MuJoCo (see the
-    README): it must be UTF-8 (MuJoCo's binding fails on other bytes too), hold
-    no character XML 1.0 cannot carry (control characters, raw or as references:
-    no node can hold them), and declare no DTD (refused for safety). Everything
-    else MuJoCo's parser (tinyxml2) reads, a bare ``&`` or junk after the root
-    included, mjcf-model must read the same way.
+    behaviour guide): it must hold no character XML 1.0 cannot carry (control
+    characters, raw or as references: no node can hold them), and declare no DTD
+    (refused for safety). Everything else MuJoCo's parser (tinyxml2) reads, bytes
+    that are not UTF-8, a bare ``&`` or junk after the root included, mjcf-model
+    must read the same way. MuJoCo is given the bytes, as it reads a file.
     """
-    try:
-        text = data.decode("utf-8")
-    except UnicodeDecodeError:
-        return None
+    text = data.decode("utf-8", "replace")  # a byte that is not UTF-8 is carried
     if not _carries(text) or "<!DOCTYPE" in text:
         return None
     try:
-        return mujoco.MjModel.from_xml_string(text)
+        return mujoco.MjModel.from_xml_string(data)
     except ValueError:
         return None
 
@@ -1000,7 +998,7 @@ def check_referee(original: Any, outcome: Mujoco | MjcfError, written: str | Non
     assert isinstance(outcome, Mujoco), f"MuJoCo compiles the input but loads refused it: {outcome}"
     assert written is not None
     try:
-        again = mujoco.MjModel.from_xml_string(written)
+        again = mujoco.MjModel.from_xml_string(encoded(written))
     except ValueError as error:
         raise AssertionError(
             f"MuJoCo compiles the input but not dumps(loads(input)): {error}"

@@ -24,6 +24,7 @@ from mjcf_model.tools.cli import diff as diff
 from mjcf_model.tools.cli import examples as examples
 from mjcf_model.tools.cli import fmt as fmt
 from mjcf_model.tools.cli import info as info
+from mjcf_model.tools.cli import lint as lint
 from mjcf_model.tools.cli import render as render
 from mjcf_model.tools.cli import transform_verbs as transform_verbs
 from mjcf_model.tools.cli.examples import example_path
@@ -31,14 +32,14 @@ from mjcf_model.tools.cli.examples import example_path
 __all__ = ["example_path", "main"]
 
 #: The verbs, in the order ``--help`` lists them.
-_VERBS = (check, fmt, diff, transform_verbs, info, render, examples)
+_VERBS = (check, fmt, lint, diff, transform_verbs, info, render, examples)
 
 
 def parser() -> argparse.ArgumentParser:
     """The parser of the whole command line."""
     top = argparse.ArgumentParser(
         prog="mjcf-model",
-        description="MuJoCo MJCF files: check, format, diff, compose, inspect and render.",
+        description="MuJoCo MJCF files: check, format, lint, diff, compose, inspect and render.",
     )
     top.add_argument("--version", action="version", version=version_line())
     commands = top.add_subparsers(dest="command", required=True, metavar="VERB")

@@ -245,11 +245,11 @@ def test_readme_variant_example_runs_on_a_robot(monkeypatch: pytest.MonkeyPatch)
     section = readme.split("### Variants: domain randomisation", 1)[1]
     code = section.split("```python\n", 1)[1].split("```", 1)[0]
     panda = Path(robosuite.__file__).parent / "models/assets/robots/panda/robot.xml"
-    assert 'load("robot.xml")' in code
+    assert 'load("arm.xml")' in code
     namespace: dict[str, Any] = {}
     with warnings.catch_warnings():
         warnings.simplefilter("error", MjcfRecompiledWarning)
-        exec(code.replace('"robot.xml"', repr(str(panda))), namespace)
+        exec(code.replace('"arm.xml"', repr(str(panda))), namespace)
     colours, base = namespace["colours"], namespace["base"]
     assert len(colours) == 100
     assert not np.array_equal(colours[0], colours[1])
@@ -273,10 +273,8 @@ def test_readme_process_pool_sweep_runs_as_a_script(tmp_path: Path) -> None:
     code = section.split("```python\n")[2].split("```", 1)[0]
     panda = Path(robosuite.__file__).parent / "models/assets/robots/panda/robot.xml"
     script = tmp_path / "sweep.py"
-    assert "range(100)" in code
-    script.write_text(
-        code.replace('"robot.xml"', repr(str(panda))).replace("range(100)", "range(8)")
-    )
+    assert "range(100)" in code and 'load("arm.xml")' in code
+    script.write_text(code.replace('"arm.xml"', repr(str(panda))).replace("range(100)", "range(8)"))
     import os
 
     import mjcf_model

@@ -207,3 +207,14 @@ def test_drawn_models_format_to_a_fixed_point(model: object) -> None:
         narrow.safe
         and not format_text(narrow.text, options=FormatOptions(width=20, indent=0)).changed
     )
+
+
+def test_the_linters_table_beside_the_formatters_settings_is_left_to_the_linter(
+    tmp_path: Path,
+) -> None:
+    """``[tool.mjcf-model.lint]`` is no formatter setting, and no error for the formatter."""
+    (tmp_path / "pyproject.toml").write_text(
+        '[tool.mjcf-model]\nwidth = 90\n[tool.mjcf-model.lint]\nignore = ["A"]\n'
+    )
+    options, found = options_from_pyproject(tmp_path)
+    assert options.width == 90 and found == tmp_path / "pyproject.toml"
