@@ -92,6 +92,7 @@ GROUPS = (
     "variants",
     "sweep",
     "resets",
+    "sharing",
     "sizes",
 )
 
@@ -185,6 +186,10 @@ def _group_cases(group: str, tiny: bool, selection: Selection, repeat: int) -> l
         from benchmarks.cases_resets import reset_cases
 
         return reset_cases(tiny, repeat)
+    if group == "sharing":
+        from benchmarks.cases_sharing import COPIES, sharing_cases
+
+        return sharing_cases((1, 2) if tiny else COPIES)
     from benchmarks.cases_variants import compile_cases, sweep_cases, variant_cases
 
     if group == "compile":

@@ -105,6 +105,7 @@ def test_tiny_run_writes_every_case_with_every_contender(tiny_results: str) -> N
         "variant sweep: panda/robot.xml",
         "batched: panda/robot.xml",
         "compile: ",
+        "shared assets: 2 Pandas, compile",
     ):
         assert f"| {case}" in text, case
     assert "| batched: panda/robot.xml: variants per second (4 variants) |" in text

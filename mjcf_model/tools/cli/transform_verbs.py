@@ -45,6 +45,7 @@ from mjcf_model.tools.cli.common import (
 )
 from mjcf_model.tools.cli.parts import PLACEMENT_FORM, parts_of, split_part
 from mjcf_model.transforms.composition.attaching import attach_all
+from mjcf_model.transforms.composition.shared_assets import shared_assets
 from mjcf_model.transforms.naming.renaming import prefixed
 from mjcf_model.transforms.scaling.transform import scaled
 
@@ -138,6 +139,8 @@ def _compose(arguments: argparse.Namespace) -> int:
             euler=euler,
             keyframes=arguments.keyframes,
         )
+    if arguments.share_assets:
+        scene = shared_assets(scene)
     sizes = _compiled_sizes(scene)
     write_model(scene, arguments.output)
     attached = sum(len(children) for _, _, children in runs)
@@ -209,6 +212,12 @@ def add_parsers(commands: Any) -> None:
             "merged: keys of the same name in the parts become one key that sets every "
             "part (e.g. one home for two robots)"
         ),
+    )
+    compose.add_argument(
+        "--share-assets",
+        action="store_true",
+        help="keep once each mesh, texture, material, height field or skin the parts "
+        "repeat (the same file and settings under another name); every use follows it",
     )
     compose.add_argument(
         "--export", metavar="DIR", help="also export the scene with all its files into DIR"

@@ -64,6 +64,7 @@ from mjcf_model.transforms.composition.sections import (
     warn_dropped,
     with_keys,
 )
+from mjcf_model.transforms.composition.shared_assets import shared_assets
 from mjcf_model.transforms.naming.renaming import declarations, declared_names, prefixed_declared
 from mjcf_model.transforms.naming.repeated import RepeatedPrefixing
 from mjcf_model.tree.traversal import keyed_walk, refuse_opaque, with_children
@@ -82,6 +83,7 @@ def attach(
     quat: Iterable[float] | None = None,
     euler: Iterable[float] | None = None,
     keyframes: KeyframePolicy = "separate",
+    share_assets: bool = False,
 ) -> Mujoco:
     """The parent model with the child model merged into it.
 
@@ -107,6 +109,13 @@ def attach(
             sets every part; unnamed keys merge by their place among the unnamed
             keys (the child's first with the parent's first), and a merged key keeps
             the parent's ``time`` unless that is zero.
+        share_assets: Keep once each named asset (mesh, texture, height field, skin,
+            material) that repeats another but for its name, and point every
+            reference at the one kept
+            (:mod:`mjcf_model.transforms.composition.shared_assets`): a scene of N
+            copies of a robot then loads each mesh once. Off by default,
+            as ``MjSpec`` attaches: the repeats' names (``b_link0``) are gone from
+            the result, and code that looks them up by name would not find them.
 
     At a frame or a site the child's world is appended to the body holding it
     (or the world), inside unnamed ``<frame>`` elements that copy the pose of
@@ -190,6 +199,7 @@ def attach(
         quat=quat,
         euler=euler,
         keyframes=keyframes,
+        share_assets=share_assets,
     )
 
 
@@ -203,12 +213,13 @@ def attach_all(
     quat: Iterable[float] | None = None,
     euler: Iterable[float] | None = None,
     keyframes: KeyframePolicy = "separate",
+    share_assets: bool = False,
 ) -> Mujoco:
     """The parent with each ``(child, prefix)`` attached in turn, in one pass.
 
     The same as calling :func:`attach` for each child (with the same ``at``,
-    ``at_kind`` and placement), but the parent's names and sections are read
-    once, so attaching N children costs time linear in N.
+    ``at_kind``, placement and ``share_assets``), but the parent's names and sections
+    are read once, so attaching N children costs time linear in N.
 
     Examples:
         >>> from mjcf_model import loads
@@ -219,7 +230,8 @@ def attach_all(
 
     """
     where = Where(at, at_kind, placement_frame(pos, quat, euler))
-    return _composed(parent, children, where, check_policy(keyframes))
+    composed = _composed(parent, children, where, check_policy(keyframes))
+    return shared_assets(composed) if share_assets else composed
 
 
 def attach_in_frame(parent: Mujoco, child: Mujoco, *, frame: str, prefix: str = "") -> Mujoco:
