@@ -39,7 +39,7 @@ def selected_rules(select: Collection[str] = (), ignore: Collection[str] = ()) -
         MjcfValueError: An entry matches no rule (the message lists the codes).
 
     Examples:
-        >>> [r.code for r in selected_rules(select=["K10"], ignore=["K104"])]
+        >>> [r.code for r in selected_rules(select=["K10"], ignore=["K104", "K105"])]
         ['K101', 'K102', 'K103']
 
     """
