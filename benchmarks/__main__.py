@@ -189,7 +189,7 @@ def _group_cases(group: str, tiny: bool, selection: Selection, repeat: int) -> l
     if group == "sharing":
         from benchmarks.cases_sharing import COPIES, sharing_cases
 
-        return sharing_cases((1, 2) if tiny else COPIES)
+        return sharing_cases((2,) if tiny else COPIES)
     from benchmarks.cases_variants import compile_cases, sweep_cases, variant_cases
 
     if group == "compile":

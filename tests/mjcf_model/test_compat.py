@@ -41,7 +41,7 @@ pytestmark = pytest.mark.skipif(
 )
 
 #: How many random actions each run takes.
-STEPS = 40
+STEPS = 25
 
 
 def _record(task: str, seed: int, robots: str | None = None) -> dict[str, Any]:

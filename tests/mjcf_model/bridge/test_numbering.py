@@ -58,7 +58,7 @@ def _check(model: Mujoco) -> None:
                 assert not mujoco.mj_id2name(physics, kind_id, row), (kind, row)
 
 
-@pytest.mark.parametrize("path", compiling_corpus()[::5], ids=corpus_id)
+@pytest.mark.parametrize("path", compiling_corpus()[::10], ids=corpus_id)
 def test_every_row_of_a_corpus_model_is_its_element(path: Path) -> None:
     """Corpus files, their includes inlined (an included file's elements are in the tree)."""
     _check(load(path, inline_includes=True))
