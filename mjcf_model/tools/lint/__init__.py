@@ -2,8 +2,8 @@
 
 ``lint(model)`` returns :class:`Finding` objects, each naming the file, line and element
 path, a rule code, a severity and what to do; ``mjcf-model lint FILE...`` prints them.
-The rules (:data:`RULES`) come in families: ``K`` keyframes, ``R`` ranges, ``P``
-contacts, ``A`` assets and default classes.
+The rules (:data:`RULES`) come in families: ``K`` keyframes, ``R`` ranges, ``I``
+inertia, ``P`` contacts, ``A`` assets and default classes.
 """
 
 from __future__ import annotations

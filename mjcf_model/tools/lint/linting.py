@@ -18,7 +18,7 @@ from collections.abc import Collection
 
 from mjcf_model.errors import MjcfValueError
 from mjcf_model.nodes.root import Mujoco
-from mjcf_model.tools.lint import assets, contacts, keyframes, ranges
+from mjcf_model.tools.lint import assets, contacts, inertia, keyframes, ranges
 from mjcf_model.tools.lint.findings import RULES, Finding, Rule
 from mjcf_model.tools.lint.subject import Subject
 
@@ -26,7 +26,7 @@ __all__ = ["RULE_MODULES", "lint", "selected_rules"]
 
 #: The modules whose rules :data:`~mjcf_model.tools.lint.findings.RULES` holds (importing
 #: them registers them), one per family.
-RULE_MODULES = (keyframes, ranges, contacts, assets)
+RULE_MODULES = (keyframes, ranges, inertia, contacts, assets)
 
 
 def selected_rules(select: Collection[str] = (), ignore: Collection[str] = ()) -> list[Rule]:

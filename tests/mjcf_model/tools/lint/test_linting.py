@@ -62,6 +62,7 @@ REVIEWED: dict[tuple[str, str], tuple[int, str]] = {
     ("robosuite/models/assets/grippers/inspire_left_hand.xml", "A403"): (13, _SAME_FILE),
     ("robosuite/models/assets/grippers/inspire_right_hand.xml", "A403"): (13, _SAME_FILE),
     ("robosuite/models/assets/robots/tiago/robot.xml", "A403"): (14, _SAME_FILE),
+    ("robosuite/models/assets/bases/floating_legged_base.xml", "I101"): (1, "yaw velocity servo kv 1000 on the bare base's 0.013 kg m2 under Euler: kv/I*h 156; robosuite mounts a robot on it, whose inertia steadies it"),
     ("dm_control/locomotion/walkers/assets/build_fruitfly/assets/drosophila_fused.xml", "P101"): (9, "mouth parts and legs overlap their neighbours at rest"),
     ("dm_control/mjcf/test_assets/robot_arm.xml", "P101"): (11, "a test arm whose qpos0 puts links into its base"),
     ("dm_control/mujoco/testing/assets/arm.xml", "P101"): (7, "a test arm whose qpos0 puts links into the ground"),
