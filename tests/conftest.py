@@ -1,7 +1,8 @@
 """Shared test setup: hypothesis profiles and the real-world corpus.
 
 The profile comes from ``HYPOTHESIS_PROFILE``: ``ci`` (the default under
-``CI=true``; 45 examples per property), ``dev`` (50, for quick local runs) or
+``CI=true``; 100 examples per property), ``dev`` (50, for quick local runs),
+``compat`` (25: the MuJoCo 3.9 environment, which checks compatibility, not search) or
 ``mutation`` (30 fixed examples, no shrinking: the mutation tests run the suite
 once per mutant and need the same verdict each time, fast).
 """
@@ -20,9 +21,9 @@ from hypothesis import HealthCheck, Phase, settings
 
 from tests.support.plan_counting import plan_calls  # noqa: F401  (a fixture)
 
-settings.register_profile(  # 45: the two environments' runs fit in 15 minutes on 2 cores, with room
+settings.register_profile(
     "ci",
-    max_examples=45,
+    max_examples=100,
     deadline=None,
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
     print_blob=True,
@@ -44,22 +45,34 @@ settings.register_profile(
 )
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
 
-#: For a property run once per node class (about 140 runs): the classes share their value
-#: strategies, so each run draws a quarter of the profile's examples (at least 10).
+#: For a property run once per node class (about 140 runs, one property over every class):
+#: a quarter of the profile's examples each (at least 10), 3,500 in all under ``ci``.
 PER_CLASS = settings(max_examples=max(10, settings.default.max_examples // 4))
+
+
+#: MuJoCo's asset cache per test process: room for every mesh and texture of the corpus
+#: decoded (1.4 GB with MuJoCo 4.0), so a robot's meshes are decoded once per process,
+#: not once per test (a cold compile of robosuite's Panda takes 1.3 s, a warm one 0.12 s).
+ASSET_CACHE_BYTES = 2_000_000_000
+
+
+@pytest.fixture(autouse=True, scope="session")
+def _room_for_the_corpus_in_mujocos_asset_cache() -> None:
+    """Give MuJoCo's asset cache :data:`ASSET_CACHE_BYTES` for this test process."""
+    mujoco.mj_setCacheCapacity(mujoco.mj_getCache(), ASSET_CACHE_BYTES)
 
 
 @pytest.fixture(autouse=True)
 def _room_in_mujocos_asset_cache() -> None:
-    """Empty MuJoCo's asset cache before a test when it is more than half full.
+    """Empty MuJoCo's asset cache before a test when it is nine tenths full.
 
-    MuJoCo keeps the meshes and textures it decodes (500 MB by default) and, once the cache
-    is full, keeps no new ones: every later compile of a robot decodes its meshes again
-    (robosuite's environments ran three times slower late in a run than alone). What a
-    test checks never depends on the cache, only how long it takes.
+    Once the cache is full MuJoCo keeps no new asset: every later compile of a robot
+    decodes its meshes again (robosuite's environments ran three times slower late in a
+    run than alone). What a test checks never depends on the cache, only how long it
+    takes.
     """
     cache = mujoco.mj_getCache()
-    if mujoco.mj_getCacheSize(cache) > mujoco.mj_getCacheCapacity(cache) // 2:
+    if mujoco.mj_getCacheSize(cache) > mujoco.mj_getCacheCapacity(cache) * 9 // 10:
         mujoco.mj_clearCache(cache)
 
 
@@ -114,6 +127,32 @@ def loading_corpus() -> list[Path]:
             continue
         loading.append(path)
     return loading
+
+
+#: Which share of the corpus each corpus-wide test runs on: every Nth file (in path
+#: order) from ``MJCF_MODEL_CORPUS_SHARE`` (default 1, every file). ``run_installed.py``
+#: gives the oldest environment a third: its run checks that the library works on MuJoCo
+#: 3.9, on a third of the real files spread over both packages, while the newest
+#: environment runs every test on every file.
+CORPUS_SHARE = int(os.environ.get("MJCF_MODEL_CORPUS_SHARE", "1"))
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """Deselect the corpus-wide test cases outside this run's share of the corpus."""
+    if CORPUS_SHARE == 1:
+        return
+    place = {path: index for index, path in enumerate(corpus_files())}
+    kept: list[pytest.Item] = []
+    dropped: list[pytest.Item] = []
+    for item in items:
+        callspec = getattr(item, "callspec", None)
+        values = callspec.params.values() if callspec is not None else ()
+        files = [place[value] for value in values if isinstance(value, Path) and value in place]
+        outside = bool(files) and all(index % CORPUS_SHARE for index in files)
+        (dropped if outside else kept).append(item)
+    if dropped:
+        config.hook.pytest_deselected(items=dropped)
+        items[:] = kept
 
 
 def corpus_id(path: Path) -> str:

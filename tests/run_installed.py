@@ -48,9 +48,12 @@ SUITE_FOLDERS = ("tests", "benchmarks")
 PACKAGES = ("mjcf_model",)
 #: Hypothesis profiles by environment (``tests/conftest.py`` defines them); the others
 #: keep the caller's (``ci`` under ``CI=true``). The oldest runs every property at the
-#: ``compat`` profile's 25 examples: it checks that the library works on MuJoCo 3.9, the
-#: newest searches with 45; the two runs stay under 15 minutes on 2 cores.
+#: ``compat`` profile's 25 examples: it checks that the library works on MuJoCo 3.9; the
+#: newest searches with the ``ci`` profile's 100.
 HYPOTHESIS_PROFILES = {"oldest": "compat"}
+#: Which share of the corpus the corpus-wide tests run on, by environment (the others run
+#: on every file): the oldest checks MuJoCo 3.9 on every third file (``tests/conftest.py``).
+CORPUS_SHARES = {"oldest": 3}
 #: Test modules whose every test must run (none skipped) in an environment: robosuite's
 #: own environments run only up to MuJoCo 3.9, so only ``oldest`` can run them. Named as
 #: pytest's junit report names them: the dotted path of the file under ``tests/``.
@@ -155,6 +158,8 @@ def run_suite(
     environment = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     if name in HYPOTHESIS_PROFILES:
         environment["HYPOTHESIS_PROFILE"] = HYPOTHESIS_PROFILES[name]
+    if name in CORPUS_SHARES:
+        environment["MJCF_MODEL_CORPUS_SHARE"] = str(CORPUS_SHARES[name])
     environment.update(
         MJCF_MODEL_SOURCE_TREE=str(SOURCE_TREE),
         MJCF_MODEL_WHEEL=str(wheel),

@@ -27,11 +27,8 @@ a hang or a catastrophic backtrack fails the case instead of blocking CI.
 fuzzers have found, on every run.
 
 The number of examples per test is the hypothesis profile's count of
-``tests/conftest.py`` (``ci``: 100, ``dev``: 50; the
-generated-model test runs half of that and the deep-nesting test a quarter),
-which keeps the whole suite under CI's 15 minutes. A long campaign sets
-``MJCF_FUZZ_EXAMPLES`` (the same shares apply), runs the tests in parallel and
-varies the seed::
+``tests/conftest.py`` (``ci``: 100, ``dev``: 50). A long campaign sets
+``MJCF_FUZZ_EXAMPLES``, runs the tests in parallel and varies the seed::
 
     MJCF_FUZZ_EXAMPLES=100000 .venv/bin/python -m pytest tests/test_fuzz.py \
         -q -n 4 -p no:cacheprovider --hypothesis-seed=$RANDOM
@@ -68,15 +65,14 @@ from tests.support.fuzzing import (
 )
 
 
-def _examples(share: float = 1.0) -> int:
-    """``share`` of the examples a test runs: ``MJCF_FUZZ_EXAMPLES``, or the profile's."""
-    total = int(os.environ.get("MJCF_FUZZ_EXAMPLES", "0")) or settings().max_examples
-    return max(10, int(total * share))
+def _examples() -> int:
+    """The examples each test runs: ``MJCF_FUZZ_EXAMPLES``, or the profile's."""
+    return int(os.environ.get("MJCF_FUZZ_EXAMPLES", "0")) or settings().max_examples
 
 
-def _fuzz(share: float = 1.0) -> settings:
+def _fuzz() -> settings:
     return settings(
-        max_examples=_examples(share),
+        max_examples=_examples(),
         deadline=None,
         suppress_health_check=[
             HealthCheck.too_slow,
@@ -99,7 +95,7 @@ def test_mutated_corpus_files(mutant: Mutant) -> None:
     _run(mutant)
 
 
-@_fuzz(share=0.5)  # drawing a model takes about 0.1 s
+@_fuzz()
 @given(mutants(generated_seeds()))
 def test_mutated_generated_models(mutant: Mutant) -> None:
     """Mutated generated models: only MjcfError escapes, and what MuJoCo compiles round-trips."""
@@ -113,7 +109,7 @@ def test_number_garbage(mutant: Mutant) -> None:
     _run(mutant)
 
 
-@_fuzz(share=0.25)
+@_fuzz()
 @given(mutants(small_seeds(), mutations=(deep_bodies, deep_defaults), max_steps=2))
 def test_deep_nesting(mutant: Mutant) -> None:
     """Up to 600 nested bodies, frames, unknown elements or default classes."""

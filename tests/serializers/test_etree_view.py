@@ -89,7 +89,7 @@ def test_write_back_edits_an_element_built_elsewhere() -> None:
     assert element[0] is geom and (element.get("name"), geom.get("name")) == ("p_b", "p_g")
 
 
-@settings(max_examples=20, deadline=None)
+@settings(deadline=None)
 @given(models(max_trees=2), st.sampled_from(["prefix", "scale", "append"]))
 def test_after_any_update_the_view_is_the_tree_of_the_new_model(model: Mujoco, change: str) -> None:
     """Prefixed, scaled or grown: the live tree writes as the new model's own tree."""
@@ -110,7 +110,6 @@ def test_after_any_update_the_view_is_the_tree_of_the_new_model(model: Mujoco, c
 
 
 @given(models())
-@settings(max_examples=10)
 def test_paired_matches_every_node_with_the_element_it_came_from(model: Mujoco) -> None:
     """Each pair is an element and the node made from it: same tag, same attribute text."""
     element = to_etree(model)

@@ -8,7 +8,7 @@ from xml.sax.saxutils import quoteattr
 
 import attrs
 import pytest
-from hypothesis import given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 from mjcf_model import (
@@ -32,6 +32,7 @@ from mjcf_model.serializers.parsed_elements import (
 )
 from mjcf_model.strategies import element_values, models
 from mjcf_model.values import format_value
+from tests.conftest import PER_CLASS
 from tests.support.node_classes import TYPED_CLASSES
 
 # -- Hostile and broken input: no hang, no stray exception, and MuJoCo decides what loads. -----
@@ -82,7 +83,7 @@ def _texts(cls: type[TypedElement], values: dict[str, Any]) -> list[tuple[str, s
 
 
 @pytest.mark.parametrize("cls", TYPED_CLASSES, ids=lambda cls: cls.__name__)
-@settings(max_examples=10)
+@PER_CLASS
 @given(data=st.data())
 def test_fast_path_holds_what_the_field_converters_make(
     cls: type[TypedElement], data: st.DataObject
@@ -176,7 +177,6 @@ def test_written_text_is_what_dumps_writes_for_each_attribute(text: str) -> None
 
 
 @given(models())
-@settings(max_examples=15)
 def test_written_text_of_a_drawn_model_read_back_is_what_dumps_writes(model: Any) -> None:
     """Every attribute of a drawn model, dumped and read again, and of its prefixed copy."""
     loaded = loads(dumps(model))

@@ -29,7 +29,7 @@ def test_generated_trees_hold_what_the_functions_look_for() -> None:
     """The generated trees hold visual and collision geoms, slide joints, sites and actuators."""
     seen: set[str] = set()
 
-    @settings(max_examples=30, database=None)
+    @settings(database=None)
     @given(messy_trees())
     def collect(tree: tuple[ET.Element, tuple[int, ...]]) -> None:
         root, _ = tree

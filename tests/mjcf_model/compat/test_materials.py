@@ -12,7 +12,7 @@ from typing import Any
 import mujoco
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import given
 from PIL import Image
 from robosuite.utils import mjcf_utils
 
@@ -381,7 +381,6 @@ def test_robosuite_corpus_is_covered() -> None:
     assert len(ROBOSUITE_CORPUS) >= 50
 
 
-@settings(max_examples=30, deadline=None)
 @given(models())
 def test_recolored_drawn_models_compile_with_only_collision_colors_changed(
     model: Mujoco,

@@ -6,12 +6,13 @@ from typing import Any
 
 import attrs
 import pytest
-from hypothesis import given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 from mjcf_model import Geom, Joint
 from mjcf_model.nodes.base import TypedElement, build_node
 from mjcf_model.strategies import element_values, elements
+from tests.conftest import PER_CLASS
 from tests.support.node_classes import TYPED_CLASSES
 
 # -- The node core: one decorator, sparse storage, and the fast builder as an owned contract. --
@@ -38,7 +39,7 @@ def _expected(cls: type[TypedElement], values: dict[str, Any], base: Any = None)
 
 
 @pytest.mark.parametrize("cls", TYPED_CLASSES, ids=lambda cls: cls.__name__)
-@settings(max_examples=15)
+@PER_CLASS
 @given(data=st.data())
 def test_building_from_values_gives_what_attrs_converters_give(
     cls: type[TypedElement], data: st.DataObject
@@ -53,7 +54,7 @@ def test_building_from_values_gives_what_attrs_converters_give(
 
 
 @pytest.mark.parametrize("cls", TYPED_CLASSES, ids=lambda cls: cls.__name__)
-@settings(max_examples=15)
+@PER_CLASS
 @given(data=st.data())
 def test_building_on_a_base_gives_what_attrs_evolve_means(
     cls: type[TypedElement], data: st.DataObject

@@ -14,14 +14,14 @@ from mjcf_model.nodes.asset import Asset
 from mjcf_model.serializers import dumps, loads
 from mjcf_model.strategies.drawn_elements import elements, geoms, joints, materials, meshes, sites
 
-#: A few examples each: the whole-model strategy is searched in ``test_drawn_models``.
-FEW = settings(max_examples=10, deadline=None)
+#: The profile's examples, without a deadline (a drawn element can be slow to draw).
+NO_DEADLINE = settings(deadline=None)
 
 #: How many ``size`` values each primitive geom type reads.
 SIZE_COUNT = {"sphere": 1, "capsule": 2, "cylinder": 2, "box": 3, "ellipsoid": 3}
 
 
-@FEW
+@NO_DEADLINE
 @given(
     geoms(name="g", material="m"),
     joints(name="j"),
@@ -50,7 +50,7 @@ def test_drawn_elements_compile_to_the_values_drawn(
 IN_A_BODY = st.one_of([elements(cls) for cls in (Geom, Joint, Site)])
 
 
-@FEW
+@NO_DEADLINE
 @given(IN_A_BODY)
 def test_any_class_draws_instances_that_read_back_from_text(element: Any) -> None:
     """``elements(cls)`` gives instances of ``cls`` whose written text reads back equal."""

@@ -9,10 +9,10 @@ from mjcf_model import Comment
 from mjcf_model.serializers import dumps, loads
 from mjcf_model.strategies import comments, names
 
-FEW = settings(max_examples=20, deadline=None)
+NO_DEADLINE = settings(deadline=None)
 
 
-@FEW
+@NO_DEADLINE
 @given(names())
 def test_every_drawn_name_is_one_mujoco_finds_the_body_by(name: str) -> None:
     """A drawn name names a body MuJoCo compiles and looks up by that name."""
@@ -20,7 +20,7 @@ def test_every_drawn_name_is_one_mujoco_finds_the_body_by(name: str) -> None:
     assert mujoco.MjModel.from_xml_string(text).body(name).name == name
 
 
-@FEW
+@NO_DEADLINE
 @given(comments())
 def test_every_drawn_comment_is_written_where_mujoco_reads_past_it(comment: Comment) -> None:
     """A drawn comment's text comes back unchanged and MuJoCo compiles the file around it."""

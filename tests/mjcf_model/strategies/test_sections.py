@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import mujoco
-from hypothesis import given, settings
+from hypothesis import given
 
 from mjcf_model import Mujoco
 from mjcf_model.serializers import dumps, loads
@@ -27,7 +27,6 @@ def test_joint_types_come_in_mujocos_joint_order() -> None:
     assert [kinds[t] for t in _joint_types(loads(TREE).worldbody)] == compiled.jnt_type.tolist()
 
 
-@settings(max_examples=5, deadline=None)
 @given(models())
 def test_drawn_keys_have_the_sizes_mujoco_compiles(model: Mujoco) -> None:
     """Every key the sections draw writes full state vectors: MuJoCo's sizes, no padding."""

@@ -9,7 +9,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import given
 
 from mjcf_model.bridge.compare import model_differences, path_fields
 from mjcf_model.serializers import dumps
@@ -194,7 +194,6 @@ def test_indentation_and_width_come_from_pyproject(tmp_path: Path) -> None:
     assert "pyproject.toml" in refused.stderr and "widht = 120" in refused.stderr
 
 
-@settings(max_examples=25, deadline=None)
 @given(models())
 def test_drawn_models_format_to_a_fixed_point(model: object) -> None:
     """Any model the strategies draw formats to text MuJoCo compiles the same, once and for all."""
