@@ -56,10 +56,9 @@ PER_CLASS = settings(max_examples=max(10, settings.default.max_examples // 4))
 ASSET_CACHE_BYTES = 2_000_000_000
 
 
-@pytest.fixture(autouse=True, scope="session")
-def _room_for_the_corpus_in_mujocos_asset_cache() -> None:
-    """Give MuJoCo's asset cache :data:`ASSET_CACHE_BYTES` for this test process."""
-    mujoco.mj_setCacheCapacity(mujoco.mj_getCache(), ASSET_CACHE_BYTES)
+# Before collection, which compiles every corpus file (:func:`compiling_corpus`): what it
+# decodes is then in the cache for the tests.
+mujoco.mj_setCacheCapacity(mujoco.mj_getCache(), ASSET_CACHE_BYTES)
 
 
 @pytest.fixture(autouse=True)

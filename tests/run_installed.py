@@ -21,8 +21,9 @@ was skipped there or not collected: each such module counts as one failure. Usag
 
     python tests/run_installed.py [ENVIRONMENT ...] [-- PYTEST-ARGUMENTS]
 
-Without pytest arguments, ``-n 2`` is used. The folders live in
-``build/installed/`` and are made anew on every run.
+Without pytest arguments, ``-n 2 --dist worksteal`` is used (a worker that runs out of
+tests takes some of the other's, so the last long tests do not leave a core idle). The
+folders live in ``build/installed/`` and are made anew on every run.
 """
 
 from __future__ import annotations
@@ -247,7 +248,7 @@ def main(arguments: list[str]) -> int:
                 name,
                 future.result(),
                 wheel,
-                pytest_arguments or ["-n", "2"],
+                pytest_arguments or ["-n", "2", "--dist", "worksteal"],
                 whole_suite=not pytest_arguments,
             )
             for name, future in installing.items()
