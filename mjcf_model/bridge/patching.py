@@ -713,9 +713,10 @@ def _find_damp_ratios(before: Mujoco) -> tuple[list[tuple[int, float]], str | No
 def _position_servos(before: Mujoco) -> tuple[list[int], list[int]] | str:
     """The compiled rows of the ``<position>`` actuators of ``before`` on a joint.
 
-    Its controls and ``ctrlrange`` are lengths on a slide joint: every such row, and the
-    rows whose element writes its own ``ctrlrange`` (the ones ``scaled`` changes); or
-    what stops a patch, when such an actuator has no row this module can tell.
+    Its controls and ``ctrlrange`` (its own or its class's: ``scaled`` writes either,
+    scaled, on the actuator) are lengths on a slide joint: every such row, for the
+    controls and for the ranges; or what stops a patch, when such an actuator has no row
+    this module can tell.
     """
     return _SERVOS.recall_for(before, lambda: _find_position_servos(before))
 
@@ -723,7 +724,6 @@ def _position_servos(before: Mujoco) -> tuple[list[int], list[int]] | str:
 def _find_position_servos(before: Mujoco) -> tuple[list[int], list[int]] | str:
     """What :func:`_position_servos` answers, computed."""
     servos: list[int] = []
-    ranged: list[int] = []
     rows: dict[tuple[int, ...], int] | None = None
     for key, element, *_, path in _paired_walk(before, before):
         if key != "actuator/position" or get_attribute(element, "joint") is None:
@@ -733,9 +733,7 @@ def _find_position_servos(before: Mujoco) -> tuple[list[int], list[int]] | str:
         if row is None:
             return f"cannot tell which compiled actuator the <position> at {path} is"
         servos.append(row)
-        if get_attribute(element, "ctrlrange") is not None:
-            ranged.append(row)
-    return sorted(servos), sorted(ranged)
+    return sorted(servos), sorted(servos)
 
 
 #: What :func:`_position_servos` found for the last few models.

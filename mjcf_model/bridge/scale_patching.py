@@ -123,9 +123,9 @@ def scaled_model(
         factor: The one factor of every length.
         mass: The mass policy ``after`` was scaled under.
         into: A copy of ``model`` to write into (see :func:`mjcf_model.patched`).
-        servos: The rows of the source's ``<position>`` actuators on a joint, and of
-            those that write their own ``ctrlrange``: on a slide joint, ``scaled`` takes
-            their controls (and that range) for lengths.
+        servos: The rows of the source's ``<position>`` actuators on a joint whose
+            controls, and whose ``ctrlrange``, ``scaled`` takes for lengths on a slide
+            joint.
 
     Returns:
         The model, ``into`` when given; or why it cannot be written array by array.

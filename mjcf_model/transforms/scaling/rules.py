@@ -157,10 +157,19 @@ def _target_factor(element: AnyElement, key: str | None, context: ScaleContext) 
 def _position_ctrlrange(
     element: AnyElement, ancestors: Sequence[AnyElement], context: ScaleContext
 ) -> Changes:
-    """A position actuator on a slide joint takes targets in length units."""
+    """A position actuator on a slide joint takes targets in length units.
+
+    A range its class gives is not scaled in the class (the class's servos may turn
+    hinges): the scaled range is written on the actuator instead.
+    """
     factor = _target_factor(element, "actuator/position", context)
+    if factor == 1.0:
+        return {}
     value = get_attribute(element, "ctrlrange")
-    return {} if factor == 1.0 or value is None else {"ctrlrange": times(value, factor)}
+    if value is None:
+        found = context.classes.given_to(element, ancestors).get("ctrlrange")
+        value = found[0] if found is not None else None
+    return {} if value is None else {"ctrlrange": times(value, factor)}
 
 
 def _control_factors(context: ScaleContext) -> tuple[float, ...]:

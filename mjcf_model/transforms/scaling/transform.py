@@ -99,8 +99,9 @@ def scaled(node: AnyElement, factor: npt.ArrayLike, *, mass: MassPolicy = "keep"
     contact margins and gaps, the friction of geoms, flexes and contact pairs but for
     its sliding values (torsional and rolling coefficients are lengths in MuJoCo; values
     MuJoCo fills from its built-in defaults are written, scaled), position actuators'
-    ``ctrlrange`` on slide joints, crank lengths, and the same attributes in default
-    classes. A ``flexcomp``'s points scale once, through ``scale`` for the ``direct``,
+    ``ctrlrange`` on slide joints (a class's range is written on the actuator, scaled,
+    as the class may serve hinges too), crank lengths, and the same attributes in
+    default classes. A ``flexcomp``'s points scale once, through ``scale`` for the ``direct``,
     ``mesh`` and ``gmsh`` types and through ``spacing`` for the generated ones; a mesh
     made by an SDF plugin scales through the plugin's length settings
     (:mod:`mjcf_model.transforms.scaling.plugins`).

@@ -191,6 +191,22 @@ _SERVO = """<mujoco><worldbody><body name="arm" pos="0 0 0.5">
 <keyframe><key qpos="0.2 0.05" ctrl="0.1 0.02"/></keyframe></mujoco>"""
 
 
+@pytest.mark.parametrize("default", ["position", "general"])
+def test_a_class_given_slide_target_range_is_patched_as_scaled_compiles(default: str) -> None:
+    """The class's ctrlrange doubles on the slide servo, stays on the hinge servo, as compiled."""
+    before = loads(
+        f"""<mujoco><default><default class="servo"><{default} ctrlrange="-.5 .5"/>
+        </default></default>
+        <worldbody><body><joint name="rail" type="slide"/><joint name="pin" axis="0 1 0"/>
+          <geom size=".1"/></body></worldbody>
+        <actuator><position class="servo" joint="rail" kp="10"/>
+          <position class="servo" joint="pin" kp="10"/></actuator></mujoco>"""
+    )
+    ours, expected, _ = _scaled_and_expected(before, 2.0, "volume")
+    assert expected.actuator_ctrlrange.tolist() == [[-1.0, 1.0], [-0.5, 0.5]]
+    assert patched_problems(ours, expected) == []
+
+
 @pytest.mark.skipif(OLD, reason="before MuJoCo 4.0 masses are not patched")
 def test_position_servo_damping_ratios_follow_masses_and_scale() -> None:
     """A ``dampratio`` servo's damping follows the masses it moves, scaled or changed."""

@@ -112,6 +112,21 @@ def test_position_targets_on_a_slide_joint_scale_beside_a_replicate_of_geoms() -
     assert scaled_model_problems(original, changed, 2.0) == []
 
 
+@pytest.mark.parametrize("default", ["position", "general"])
+def test_a_class_given_position_target_range_scales_where_its_joint_slides(default: str) -> None:
+    """A class's ctrlrange is a length on the slide servo's, an angle on the hinge servo's."""
+    text = f"""<mujoco><default><default class="servo">
+      <{default} ctrlrange="-.5 .5"/></default></default>
+    <worldbody><body><joint name="rail" type="slide"/><joint name="pin" axis="0 1 0"/>
+      <geom size=".1"/></body></worldbody>
+    <actuator><position class="servo" joint="rail" kp="10"/>
+      <position class="servo" joint="pin" kp="10"/></actuator></mujoco>"""
+    original, changed = compiled_pair(text, 2.0)
+    assert np.array_equal(changed.actuator_ctrlrange[0], 2 * original.actuator_ctrlrange[0])
+    assert np.array_equal(changed.actuator_ctrlrange[1], original.actuator_ctrlrange[1])
+    assert scaled_model_problems(original, changed, 2.0) == []
+
+
 # -- Scaling: every length multiplied, checked by MuJoCo on the corpus and on drawn models. ----
 
 
