@@ -150,7 +150,7 @@ def test_installed_command_checks_the_example() -> None:
         [str(command), "check", "--example"], capture_output=True, text=True, check=False
     )
     assert done.returncode == 0, done.stderr
-    assert "1 files: 1 identical" in done.stdout
+    assert "1 file: 1 identical" in done.stdout
 
 
 def test_installed_command_checks_robosuites_files() -> None:

@@ -87,7 +87,8 @@ def _check(arguments: argparse.Namespace) -> int:
     counts = _summary(results)
     if not arguments.quiet:
         parts = ", ".join(f"{n} {status}" for status, n in counts.items() if n)
-        sys.stdout.write(f"{len(results)} files: {parts}\n")
+        noun = "file" if len(results) == 1 else "files"
+        sys.stdout.write(f"{len(results)} {noun}: {parts}\n")
     failed = counts["different"] + counts["error"] + counts["not-compiled"]
     return 1 if failed else 0
 

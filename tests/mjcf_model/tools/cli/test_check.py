@@ -21,7 +21,7 @@ def test_example_is_identical(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["check", "--example"]) == 0
     out = capsys.readouterr().out
     assert f"identical     {example_path()}" in out
-    assert "1 files: 1 identical" in out
+    assert "1 file: 1 identical" in out
 
 
 def test_errors_and_rejections(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
