@@ -64,22 +64,16 @@ from tests.support.fuzzing import (
     time_limit,
 )
 
-
-def _examples() -> int:
-    """The examples each test runs: ``MJCF_FUZZ_EXAMPLES``, or the profile's."""
-    return int(os.environ.get("MJCF_FUZZ_EXAMPLES", "0")) or settings().max_examples
-
-
-def _fuzz() -> settings:
-    return settings(
-        max_examples=_examples(),
-        deadline=None,
-        suppress_health_check=[
-            HealthCheck.too_slow,
-            HealthCheck.data_too_large,
-            HealthCheck.large_base_example,
-        ],
-    )
+#: Every fuzz test's settings: ``MJCF_FUZZ_EXAMPLES`` examples, or the profile's.
+FUZZ = settings(
+    max_examples=int(os.environ.get("MJCF_FUZZ_EXAMPLES", "0")) or settings().max_examples,
+    deadline=None,
+    suppress_health_check=[
+        HealthCheck.too_slow,
+        HealthCheck.data_too_large,
+        HealthCheck.large_base_example,
+    ],
+)
 
 
 def _run(mutant: Mutant) -> None:
@@ -88,28 +82,28 @@ def _run(mutant: Mutant) -> None:
     check_case(mutant)
 
 
-@_fuzz()
+@FUZZ
 @given(mutants(corpus_seeds()))
 def test_mutated_corpus_files(mutant: Mutant) -> None:
     """Mutated real files: only MjcfError escapes, and what MuJoCo compiles round-trips."""
     _run(mutant)
 
 
-@_fuzz()
+@FUZZ
 @given(mutants(generated_seeds()))
 def test_mutated_generated_models(mutant: Mutant) -> None:
     """Mutated generated models: only MjcfError escapes, and what MuJoCo compiles round-trips."""
     _run(mutant)
 
 
-@_fuzz()
+@FUZZ
 @given(mutants(small_seeds(), mutations=(garbage_value, garbage_token), max_steps=2))
 def test_number_garbage(mutant: Mutant) -> None:
     """Garbage in numeric attributes: refused cleanly, or read as MuJoCo reads it."""
     _run(mutant)
 
 
-@_fuzz()
+@FUZZ
 @given(mutants(small_seeds(), mutations=(deep_bodies, deep_defaults), max_steps=2))
 def test_deep_nesting(mutant: Mutant) -> None:
     """Up to 600 nested bodies, frames, unknown elements or default classes."""

@@ -710,18 +710,17 @@ def _find_damp_ratios(before: Mujoco) -> tuple[list[tuple[int, float]], str | No
     return sorted(found), None
 
 
-def _position_servos(before: Mujoco) -> tuple[list[int], list[int]] | str:
+def _position_servos(before: Mujoco) -> list[int] | str:
     """The compiled rows of the ``<position>`` actuators of ``before`` on a joint.
 
     Its controls and ``ctrlrange`` (its own or its class's: ``scaled`` writes either,
-    scaled, on the actuator) are lengths on a slide joint: every such row, for the
-    controls and for the ranges; or what stops a patch, when such an actuator has no row
-    this module can tell.
+    scaled, on the actuator) are lengths on a slide joint; or what stops a patch, when
+    such an actuator has no row this module can tell.
     """
     return _SERVOS.recall_for(before, lambda: _find_position_servos(before))
 
 
-def _find_position_servos(before: Mujoco) -> tuple[list[int], list[int]] | str:
+def _find_position_servos(before: Mujoco) -> list[int] | str:
     """What :func:`_position_servos` answers, computed."""
     servos: list[int] = []
     rows: dict[tuple[int, ...], int] | None = None
@@ -733,11 +732,11 @@ def _find_position_servos(before: Mujoco) -> tuple[list[int], list[int]] | str:
         if row is None:
             return f"cannot tell which compiled actuator the <position> at {path} is"
         servos.append(row)
-    return sorted(servos), sorted(servos)
+    return sorted(servos)
 
 
 #: What :func:`_position_servos` found for the last few models.
-_SERVOS: IdentityCache[tuple[list[int], list[int]] | str] = IdentityCache(8)
+_SERVOS: IdentityCache[list[int] | str] = IdentityCache(8)
 
 
 #: What :func:`_damp_ratios` found for the last few models.

@@ -113,7 +113,7 @@ def scaled_model(
     mass: str,
     into: mujoco.MjModel | None,
     *,
-    servos: tuple[Sequence[int], Sequence[int]] = ((), ()),
+    servos: Sequence[int] = (),
 ) -> mujoco.MjModel | str:
     """``model`` as ``after`` compiles, ``after`` being its source scaled by ``factor``.
 
@@ -123,9 +123,8 @@ def scaled_model(
         factor: The one factor of every length.
         mass: The mass policy ``after`` was scaled under.
         into: A copy of ``model`` to write into (see :func:`mjcf_model.patched`).
-        servos: The rows of the source's ``<position>`` actuators on a joint whose
-            controls, and whose ``ctrlrange``, ``scaled`` takes for lengths on a slide
-            joint.
+        servos: The rows of the source's ``<position>`` actuators on a joint: on a
+            slide joint, ``scaled`` takes their controls and ``ctrlrange`` for lengths.
 
     Returns:
         The model, ``into`` when given; or why it cannot be written array by array.
@@ -200,17 +199,14 @@ def restore_scaled(model: mujoco.MjModel, into: mujoco.MjModel) -> None:
         setattr(into.stat, name, getattr(model.stat, name))
 
 
-def _targets(
-    model: mujoco.MjModel, factor: float, servos: tuple[Sequence[int], Sequence[int]]
-) -> dict[str, Array]:
+def _targets(model: mujoco.MjModel, factor: float, servos: Sequence[int]) -> dict[str, Array]:
     """The factors of ``key_ctrl`` and ``actuator_ctrlrange``: position servos on slide joints."""
-    controls, ranges = numpy.ones(model.nu), numpy.ones(model.nu)
-    for rows, factors in ((servos[0], controls), (servos[1], ranges)):
-        for row in rows:
-            joint = int(model.actuator_trnid[row, 0])
-            if model.actuator_trntype[row] == 0 and model.jnt_type[joint] == 2:  # slide
-                factors[row] = factor
-    return {"key_ctrl": controls[None, :], "actuator_ctrlrange": ranges[:, None]}
+    factors = numpy.ones(model.nu)
+    for row in servos:
+        joint = int(model.actuator_trnid[row, 0])
+        if model.actuator_trntype[row] == 0 and model.jnt_type[joint] == 2:  # slide
+            factors[row] = factor
+    return {"key_ctrl": factors[None, :], "actuator_ctrlrange": factors[:, None]}
 
 
 def _problem(model: mujoco.MjModel, factor: float) -> str | None:

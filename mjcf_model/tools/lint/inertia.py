@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
@@ -31,7 +31,7 @@ from mjcf_model.tools.lint.subject import Subject
 if TYPE_CHECKING:
     import mujoco
 
-__all__ = ["GROWTH", "LIMIT", "STEPS", "divergence", "stiffest_term"]
+__all__ = ["GROWTH", "LIMIT", "STEPS", "Term", "divergence", "stiffest_term"]
 
 #: How many steps of the model's own timestep the nudged copy runs.
 STEPS = 60
@@ -85,16 +85,27 @@ def _inverse_inertia(
     return float(direction @ solved[0])
 
 
-def stiffest_term(m: mujoco.MjModel, joint: int) -> tuple[str, float, float] | None:
+class Term(NamedTuple):
+    """A servo, spring or damper on a joint, against the timestep."""
+
+    #: What it is, in words (``actuator 'a' (kp 100)``).
+    what: str
+    #: Its frequency (or, for a damper, its damping rate) times the timestep.
+    value: float
+    #: The inertia the joint needs for :attr:`value` to reach only :data:`LIMIT`.
+    needed: float
+    #: Whether it is a damper (the integrator could treat it implicitly).
+    damping: bool
+
+
+def stiffest_term(subject: Subject, joint: int) -> Term | None:
     """The servo, spring or explicit damper on ``joint`` nearest to diverging, if any.
 
-    As ``(what, value, needed)``: its words (``actuator 'a' (kp 100)``), its
-    frequency or damping rate times the timestep (at 2 and over it diverges), and the
-    inertia the joint would need at this timestep. ``None`` when nothing on the joint is
-    integrated explicitly.
+    ``None`` when nothing on the joint is integrated explicitly.
     """
     import mujoco
 
+    m = subject.physics
     data = mujoco.MjData(m)
     mujoco.mj_forward(m, data)
     h = float(m.opt.timestep)
@@ -112,34 +123,28 @@ def stiffest_term(m: mujoco.MjModel, joint: int) -> tuple[str, float, float] | N
             data.moment_rowadr,
             data.moment_colind,
         )
-    terms: list[tuple[str, float, float]] = []
+    terms: list[Term] = []
     unit = np.zeros(m.nv)
     unit[dof] = 1.0
     stiffness = float(m.jnt_stiffness[joint])
     if stiffness > 0:
         w = _inverse_inertia(m, data, unit)
-        terms.append(
-            (f"its stiffness {stiffness:.6g}", math.sqrt(stiffness * w) * h, stiffness * h * h / 4)
-        )
+        what = f"its stiffness {stiffness:.6g}"
+        terms.append(Term(what, math.sqrt(stiffness * w) * h, stiffness * h * h / 4, False))
     for actuator in range(m.nu):
         moment = moments[actuator]
         if not moment[dof] or int(m.actuator_biastype[actuator]) != 1:
             continue
         w = _inverse_inertia(m, data, moment)
-        name = _actuator_name(m, actuator)
+        name = f"actuator {subject.name('actuator', actuator)}"
         kp, kv = -float(m.actuator_biasprm[actuator, 1]), -float(m.actuator_biasprm[actuator, 2])
         if kp > 0:
-            terms.append((f"{name} (kp {kp:.6g})", math.sqrt(kp * w) * h, kp * h * h / 4))
+            terms.append(
+                Term(f"{name} (kp {kp:.6g})", math.sqrt(kp * w) * h, kp * h * h / 4, False)
+            )
         if kv > 0 and explicit_damping:
-            terms.append((f"{name} (kv {kv:.6g})", kv * w * h, kv * h / 2))
-    return max(terms, key=lambda term: term[1]) if terms else None
-
-
-def _actuator_name(m: mujoco.MjModel, actuator: int) -> str:
-    import mujoco
-
-    name = mujoco.mj_id2name(m, mujoco.mjtObj.mjOBJ_ACTUATOR, actuator)
-    return f"actuator {name!r}" if name else f"actuator {actuator}"
+            terms.append(Term(f"{name} (kv {kv:.6g})", kv * w * h, kv * h / 2, True))
+    return max(terms, key=lambda term: term.value) if terms else None
 
 
 @rule(
@@ -163,8 +168,8 @@ def light_body_diverges(subject: Subject) -> Iterator[Finding]:
     grown = {int(m.dof_jntid[dof]): float(growth[dof]) for dof in np.flatnonzero(growth > GROWTH)}
     if not grown:
         return
-    terms = {joint: stiffest_term(m, joint) for joint in grown}
-    causes = [joint for joint, term in terms.items() if term is not None and term[1] >= LIMIT]
+    terms = {joint: stiffest_term(subject, joint) for joint in grown}
+    causes = [joint for joint, term in terms.items() if term is not None and term.value >= LIMIT]
     for joint in causes or [max(grown, key=grown.__getitem__)]:
         body = int(m.jnt_bodyid[joint])
         how = "without bound" if math.isinf(grown[joint]) else f"{grown[joint]:.3g}-fold"
@@ -175,16 +180,15 @@ def light_body_diverges(subject: Subject) -> Iterator[Finding]:
             "off): the simulation diverges"
         )
         term = terms[joint]
-        if term is not None and term[1] >= LIMIT:
-            what, value, needed = term
-            rate = "damping rate" if "(kv" in what else "frequency"
+        if term is not None and term.value >= LIMIT:
+            rate = "damping rate" if term.damping else "frequency"
             message += (
-                f"; {what} gives it a {rate} times timestep of {value:.3g}, and MuJoCo's "
-                f"integration diverges from {LIMIT:g}: give the joint an inertia of at "
-                f"least {needed:.3g} (a heavier body, or armature), lower the gain, or "
-                "shorten the timestep"
+                f"; {term.what} gives it a {rate} times timestep of {term.value:.3g}, and "
+                f"MuJoCo's integration diverges from {LIMIT:g}: give the joint an inertia "
+                f"of at least {term.needed:.3g} (a heavier body, or armature), lower the "
+                "gain, or shorten the timestep"
             )
-            if rate == "damping rate":
+            if term.damping:
                 message += " (or integrate damping implicitly: integrator='implicitfast')"
         else:
             message += "; make its body heavier, its servos softer, or the timestep shorter"

@@ -18,6 +18,7 @@ import pytest
 from mjcf_model import loads
 from mjcf_model.tools.lint import lint
 from mjcf_model.tools.lint.inertia import GROWTH, divergence, stiffest_term
+from mjcf_model.tools.lint.subject import Subject
 
 #: A palm with one finger: the finger's mass, the servo and the integrator are filled in.
 FINGER = """
@@ -115,14 +116,13 @@ def test_divergence_is_a_ratio_and_leaves_the_options_as_they_were() -> None:
 
 def test_the_stiffest_term_is_the_servo_with_its_frequency_times_timestep() -> None:
     """``sqrt(kp / I) * h`` with the inertia MuJoCo's mass matrix gives the joint."""
-    m = mujoco.MjModel.from_xml_string(finger())
-    data = mujoco.MjData(m)
-    mujoco.mj_forward(m, data)
-    inertia = 1 / m.dof_invweight0[0]
-    term = stiffest_term(m, 0)
+    subject = Subject(loads(finger()))
+    inertia = 1 / subject.physics.dof_invweight0[0]
+    term = stiffest_term(subject, 0)
     assert term is not None
-    what, value, needed = term
-    assert what == "actuator 'servo' (kp 50)"
-    assert value == pytest.approx(math.sqrt(50 / inertia) * 0.002)
-    assert needed == pytest.approx(50 * 0.002**2 / 4)
-    assert stiffest_term(mujoco.MjModel.from_xml_string(finger(gains='kp="0"')), 0) is None
+    assert term.what == "actuator 'servo' (kp 50)" and not term.damping
+    assert term.value == pytest.approx(math.sqrt(50 / inertia) * 0.002)
+    assert term.needed == pytest.approx(50 * 0.002**2 / 4)
+    damper = stiffest_term(Subject(loads(finger(gains='kp="1" kv="1"'))), 0)
+    assert damper is not None and damper.what == "actuator 'servo' (kv 1)" and damper.damping
+    assert stiffest_term(Subject(loads(finger(gains='kp="0"'))), 0) is None
